@@ -1,0 +1,11 @@
+# Google Benchmark programs: one executable per bench/*.cpp (run them all with scripts/bench.sh).
+find_package(benchmark REQUIRED)
+file(GLOB K40T_BENCH_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/bench/*.cpp)
+foreach(source ${K40T_BENCH_SOURCES})
+  get_filename_component(name ${source} NAME_WE)
+  add_executable(${name} ${source})
+  target_link_libraries(${name} PRIVATE k40t_core benchmark::benchmark)
+  if(TARGET k40t_sim_model)
+    target_link_libraries(${name} PRIVATE k40t_sim_model)
+  endif()
+endforeach()

@@ -1,0 +1,1 @@
+# Nodelets, nodes and rostests (the ROS layer, ros/).

@@ -1,0 +1,16 @@
+# gtest unit tests of the ROS-free layers: one binary, one file per subject under test/unit/.
+find_package(GTest REQUIRED)
+enable_testing()
+file(GLOB_RECURSE K40T_UNIT_TEST_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/test/unit/*.cpp)
+add_executable(k40t_unit_tests ${K40T_UNIT_TEST_SOURCES})
+target_link_libraries(k40t_unit_tests PRIVATE k40t_core GTest::gtest GTest::gtest_main GTest::gmock)
+if(TARGET k40t_sim_model)
+  target_link_libraries(k40t_unit_tests PRIVATE k40t_sim_model)
+endif()
+if(TARGET k40t_psdk)
+  target_link_libraries(k40t_unit_tests PRIVATE k40t_psdk)
+endif()
+target_compile_definitions(k40t_unit_tests PRIVATE
+  K40T_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/test/data"
+  K40T_BINARY_DIR="${CMAKE_RUNTIME_OUTPUT_DIRECTORY}")
+add_test(NAME k40t_unit_tests COMMAND k40t_unit_tests)

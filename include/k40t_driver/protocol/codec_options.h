@@ -1,0 +1,37 @@
+// The decisions of ../shared/spec/NOTES.md that change bytes on the wire, as options with NOTES'
+// defaults. Every encoder and decoder takes them, so a pod that disagrees with a decision is a
+// parameter away.
+#pragma once
+
+#include <string>
+
+#include "k40t_driver/protocol/byte_io.h"
+#include "k40t_driver/protocol/message_id.h"
+#include "k40t_driver/protocol/result.h"
+
+namespace k40t::protocol {
+
+// NOTES A1: which bytes the checksum covers.
+enum class CrcCoverage {
+  kHeaderExcluded,  // bytes 1 .. end of payload (MAVLink convention; default)
+  kWholeFrame,      // bytes 0 .. end of payload (STX included)
+  kAuto,            // parser accepts both and locks onto what the device uses
+};
+
+const char* to_string(CrcCoverage coverage);
+Result<CrcCoverage> parse_crc_coverage(const std::string& text);  // "auto" | "header_excluded" | "whole_frame"
+Result<ByteOrder> parse_byte_order(const std::string& text);       // "big" | "little"
+const char* to_string(ByteOrder order);
+
+struct CodecOptions {
+  // NOTES A2: multi-byte fields of ACK payloads (response code included). Sections that say
+  // "low byte first" for their ACK (0x010320) ignore this.
+  ByteOrder ack_byte_order = ByteOrder::kBig;
+  // NOTES A4: the 16-bit angle magnitudes of 0x000012 are degrees x angle_command_scale.
+  int angle_command_scale = 100;
+  // NOTES A3: where requests are addressed.
+  Address gimbal_address = kGimbalAddress;
+  Address camera_address = kCameraAddress;
+};
+
+}  // namespace k40t::protocol

@@ -1,0 +1,134 @@
+// The contract every typed message struct follows, and the helpers they share.
+//
+// A message struct T (one per message id of NOTES.md's catalogue, including every ACK that
+// carries data) is a plain aggregate whose fields are in physical units (names end in _deg,
+// _deg_s, _degC, _m, _mm, _s, _ms, _x for ratios...) or enums for coded values, and has:
+//
+//   static constexpr MessageId kId;         // wire id; ACK structs use 0x01xxxx, status 0x02xxxx
+//   static constexpr const char* kName;     // unique snake_case name (CLI, JSON, ROS `send`)
+//   static constexpr const char* kSection;  // the document's section, e.g. "3.2.4.5"
+//   static constexpr Direction kDirection;  // who sends it
+//   static constexpr size_t kSize;          // payload bytes encode() writes
+//   static constexpr size_t kMinSize;       // fewest payload bytes decode() accepts (<= kSize)
+//   Status validate() const;                // every range the document gives; the message names
+//                                           // the field and its allowed range
+//   void encode(ByteWriter&, const CodecOptions&) const;  // only called after validate() passed
+//   Status decode(ByteReader&, const CodecOptions&);      // reads kSize bytes (kMinSize at least);
+//                                           // no range checks: what the pod says is reported
+//   template <class Self, class V> static void fields(Self& self, V&& v) {
+//     v("yaw_deg", self.yaw_deg); ...       // every field in wire order (reserved bytes excluded)
+//   }
+//
+// encode_payload()/decode_payload() below wrap these with the size and validation checks, and
+// field_visit.h turns fields() into JSON, CLI arguments and generic round-trip tests.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <type_traits>
+
+#include "k40t_driver/protocol/byte_io.h"
+#include "k40t_driver/protocol/codec_options.h"
+#include "k40t_driver/protocol/frame.h"
+#include "k40t_driver/protocol/message_id.h"
+#include "k40t_driver/protocol/response_code.h"
+#include "k40t_driver/protocol/result.h"
+
+namespace k40t::protocol {
+
+enum class Direction {
+  kPodToHost,  // periodic reports, status frames, ACKs of host requests, pod's own requests (0x000310)
+  kHostToPod,  // requests, and the host's ACKs of the pod's requests (0x010310)
+};
+const char* to_string(Direction direction);
+
+// A payload in a fixed buffer (no heap).
+struct Payload {
+  std::array<uint8_t, kMaxPayloadSize> bytes{};
+  size_t size = 0;
+  const uint8_t* data() const { return bytes.data(); }
+};
+
+// "field 'palette' must be 1..20, got 25"
+Status check_range(const char* field, int64_t value, int64_t lo, int64_t hi, const char* unit = "");
+Status check_range(const char* field, double value, double lo, double hi, const char* unit = "");
+// Text fields of fixed width: at most `max_bytes` bytes, no NUL.
+Status check_text(const char* field, const std::string& value, size_t max_bytes);
+
+// Enum check: the value must be one the enum's to_string() knows (found by ADL, returns nullptr
+// for codes the document does not define). The message lists the allowed codes.
+template <class E>
+Status check_enum(const char* field, E value);
+
+// Returns the first failure, or ok.
+template <class... S>
+Status first_failure(const S&... statuses) {
+  Status result = Status::ok();
+  ((result.is_ok() && !statuses.is_ok() ? (result = statuses, 0) : 0), ...);
+  return result;
+}
+
+// Physical value -> scaled integer on the wire (rounded to nearest). Validation must have checked
+// the range; out-of-range values saturate rather than wrap.
+template <class Int>
+Int to_wire(double value, double scale) {
+  const double scaled = std::round(value * scale);
+  if (scaled <= static_cast<double>(std::numeric_limits<Int>::min())) return std::numeric_limits<Int>::min();
+  if (scaled >= static_cast<double>(std::numeric_limits<Int>::max())) return std::numeric_limits<Int>::max();
+  return static_cast<Int>(scaled);
+}
+
+template <class T>
+Result<Payload> encode_payload(const T& message, const CodecOptions& options = {}) {
+  const Status valid = message.validate();
+  if (!valid) return Result<Payload>::fail(std::string(T::kName) + ": " + valid.message());
+  Payload payload;
+  ByteWriter writer(payload.bytes.data(), payload.bytes.size());
+  message.encode(writer, options);
+  if (!writer.ok()) return Result<Payload>::fail(std::string(T::kName) + ": payload overflow");
+  payload.size = writer.size();
+  return payload;
+}
+
+Status payload_size_error(const char* name, MessageId id, size_t got, size_t min_size);
+
+template <class T>
+Result<T> decode_payload(const uint8_t* data, size_t size, const CodecOptions& options = {}) {
+  if (size < T::kMinSize) return payload_size_error(T::kName, T::kId, size, T::kMinSize);
+  ByteReader reader(data, size);
+  T message{};
+  const Status decoded = message.decode(reader, options);
+  if (!decoded) return Result<T>::fail(std::string(T::kName) + ": " + decoded.message());
+  if (!reader.ok()) return payload_size_error(T::kName, T::kId, size, T::kMinSize);
+  return message;
+}
+
+template <class T>
+Result<T> decode_payload(const FrameView& frame, const CodecOptions& options = {}) {
+  return decode_payload<T>(frame.payload, frame.payload_size, options);
+}
+
+// --- implementation of check_enum -----------------------------------------------------------
+std::string describe_allowed_codes(const char* field, int64_t value, const std::string& allowed);
+
+template <class E>
+Status check_enum(const char* field, E value) {
+  static_assert(std::is_enum_v<E>, "check_enum needs an enum");
+  using U = std::underlying_type_t<E>;
+  if (to_string(value) != nullptr) return Status::ok();
+  std::string allowed;
+  const int64_t last = sizeof(U) == 1 ? 0xFF : 0xFFFF;
+  for (int64_t code = 0; code <= last; ++code) {
+    const char* name = to_string(static_cast<E>(code));
+    if (name == nullptr) continue;
+    if (!allowed.empty()) allowed += ", ";
+    allowed += std::to_string(code) + " (" + name + ")";
+  }
+  return Status::fail(describe_allowed_codes(field, static_cast<int64_t>(static_cast<U>(value)), allowed));
+}
+
+}  // namespace k40t::protocol

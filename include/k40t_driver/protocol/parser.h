@@ -1,0 +1,82 @@
+// Streaming frame parser: feed it arbitrary chunks, it calls back once per valid frame.
+//
+// It searches for STX, checks LEN and the checksum; when a candidate fails it drops only that STX
+// byte and rescans from the next byte, so a good frame hidden inside a bad one (a corrupted LEN
+// that swallowed it, a false STX in garbage) is never lost. Memory is a fixed buffer; steady
+// state allocates nothing.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+
+#include "k40t_driver/protocol/codec_options.h"
+#include "k40t_driver/protocol/frame.h"
+
+namespace k40t::protocol {
+
+struct ParserStats {
+  uint64_t bytes_received = 0;
+  uint64_t frames_good = 0;
+  uint64_t checksum_errors = 0;   // candidates with a plausible LEN whose checksum failed
+  uint64_t length_errors = 0;     // candidates with LEN > 243
+  uint64_t bytes_discarded = 0;   // bytes that ended up in no good frame
+  uint64_t unknown_ids = 0;       // good frames whose id the catalogue does not know
+  uint64_t sequence_gaps = 0;     // gap events, per source, with 8-bit wrap
+  uint64_t frames_lost = 0;       // frames missing according to those gaps
+};
+
+class FrameParser {
+ public:
+  using FrameCallback = std::function<void(const FrameView&)>;
+  // Decides what counts as an unknown id; by default the message catalogue.
+  using KnownIdPredicate = bool (*)(MessageId);
+
+  explicit FrameParser(CrcCoverage coverage = CrcCoverage::kAuto);
+
+  void set_known_id_predicate(KnownIdPredicate predicate) { known_id_ = predicate; }
+
+  // Parses `size` bytes; `on_frame` is called for each good frame, in order.
+  void feed(const uint8_t* data, size_t size, const FrameCallback& on_frame);
+
+  // Forget any partial frame (after a reconnect) and the per-source sequence history.
+  void reset();
+
+  const ParserStats& stats() const { return stats_; }
+  // What the checksum coverage is now: the configured one, or in auto mode the locked one
+  // (kAuto until kLockFrames consecutive frames agreed).
+  CrcCoverage coverage() const { return locked_; }
+  CrcCoverage configured_coverage() const { return configured_; }
+
+  static constexpr int kLockFrames = 3;
+
+ private:
+  void parse_buffer(const FrameCallback& on_frame);
+  bool checksum_matches(const uint8_t* frame, size_t size, CrcCoverage* matched);
+  void note_coverage(CrcCoverage matched);
+  void track_sequence(const FrameHeader& header);
+
+  static constexpr size_t kBufferSize = 4096;
+  std::array<uint8_t, kBufferSize> buffer_{};
+  size_t begin_ = 0;  // first unparsed byte
+  size_t end_ = 0;    // one past the last byte
+
+  CrcCoverage configured_;
+  CrcCoverage locked_;
+  CrcCoverage candidate_ = CrcCoverage::kAuto;
+  int candidate_count_ = 0;
+  KnownIdPredicate known_id_;
+
+  struct SourceSequence {
+    uint16_t source = 0;  // system << 8 | component
+    uint8_t last = 0;
+  };
+  static constexpr size_t kMaxSources = 16;
+  std::array<SourceSequence, kMaxSources> sources_{};
+  size_t source_count_ = 0;
+
+  ParserStats stats_;
+};
+
+}  // namespace k40t::protocol

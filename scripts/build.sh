@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Builds twice:
+#   build/core  plain CMake with K40T_WITH_ROS=OFF: the ROS-free layers, unit tests and benchmarks,
+#               compiled with no ROS include path (the proof that the core needs no ROS);
+#   build/ros   the catkin package (nodelets, messages, rostests) with a devel space.
+# Usage: scripts/build.sh [core|ros|all]   (default all)
+set -euo pipefail
+source "$(dirname "$0")/env.sh"
+what="${1:-all}"
+
+if [ "$what" = core ] || [ "$what" = all ]; then
+  cmake -S "$K40T_ROOT" -B "$K40T_BUILD/core" -DK40T_WITH_ROS=OFF -DK40T_BUILD_BENCH=ON > "$K40T_BUILD/core-configure.log" 2>&1 \
+    || { cat "$K40T_BUILD/core-configure.log"; exit 1; }
+  cmake --build "$K40T_BUILD/core" -j "$JOBS"
+fi
+if [ "$what" = ros ] || [ "$what" = all ]; then
+  mkdir -p "$K40T_BUILD"
+  cmake -S "$K40T_ROOT" -B "$K40T_BUILD/ros" -DK40T_WITH_ROS=ON -DPYTHON_EXECUTABLE=/usr/bin/python3 \
+    -DCATKIN_DEVEL_PREFIX="$K40T_BUILD/ros/devel" -DCATKIN_ENABLE_TESTING=ON > "$K40T_BUILD/ros-configure.log" 2>&1 \
+    || { cat "$K40T_BUILD/ros-configure.log"; exit 1; }
+  cmake --build "$K40T_BUILD/ros" -j "$JOBS"
+fi

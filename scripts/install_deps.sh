@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs what this package needs from Debian 12's own packages, and nothing if all is there.
+# Idempotent: `apt-get update` and `apt-get install` run only when a package is missing.
+set -euo pipefail
+
+packages=(
+  build-essential cmake g++ make pkg-config python3
+  libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
+  catkin ros-base-dev python3-rostest rosbash python3-rosbag python3-roslaunch
+  libnodeletlib-tools libnodelet-dev pluginlib-dev
+  libtf2-ros-dev libtf2-geometry-msgs-dev libimage-transport-dev libcamera-info-manager-dev
+  libdiagnostic-updater-dev libcv-bridge-dev libopencv-dev python3-dynamic-reconfigure
+  libdynamic-reconfigure-config-init-mutex-dev ros-robot-state-publisher
+  ros-std-srvs libstd-srvs-dev ros-sensor-msgs libsensor-msgs-dev
+  socat libssl-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install_deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "install_deps: installing ${missing[*]}"
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" < /dev/null
