@@ -1,15 +1,19 @@
 // One request/ACK session per link (NOTES A3, A5): frames requests with sequence numbers and the
 // right destination, matches ACKs by id (one outstanding request per id; a second request for
 // the same id waits its turn), retries on timeout, maps response codes to text, routes periodic
-// reports and status frames to typed handlers, and answers requests that come from the pod
-// (0x000310) through a handler. Thread-safe: requests may be issued from any thread; handlers run
-// on the transport's I/O thread.
+// reports and status frames to typed handlers (through its Dispatcher), and answers requests that
+// come from the other side (the pod's 0x000310) through handlers. The same class serves the pod
+// role in the simulator: there, handlers answer every request and send_frame() emits reports.
+//
+// Thread-safe: request() may be called from any thread (it blocks that thread only); handlers run
+// on the transport's I/O thread and must not block on request() themselves (use request_async()).
 #pragma once
 
 #include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +21,7 @@
 #include "k40t_driver/protocol/frame.h"
 #include "k40t_driver/protocol/message.h"
 #include "k40t_driver/protocol/parser.h"
+#include "k40t_driver/session/dispatcher.h"
 #include "k40t_driver/transport/transport.h"
 
 namespace k40t::session {
@@ -24,7 +29,11 @@ namespace k40t::session {
 struct SessionOptions {
   protocol::CodecOptions codec;
   protocol::CrcCoverage crc_coverage = protocol::CrcCoverage::kAuto;
+  // Source address of what we send: the host (0x01/0x01) for the driver, the camera (0x04/0x01)
+  // for the simulated pod.
   protocol::Address own_address = protocol::kHostAddress;
+  // The address we answer the pod's flight-controller requests (0x000310) from.
+  protocol::Address flight_controller_address = protocol::kFlightControllerAddress;
   std::chrono::milliseconds ack_timeout{300};
   int retries = 2;  // extra attempts after the first
 };
@@ -32,23 +41,71 @@ struct SessionOptions {
 struct SessionStats {
   protocol::ParserStats parser;
   transport::LinkStats link;
+  transport::LinkState link_state = transport::LinkState::kClosed;
   uint64_t requests = 0;
   uint64_t acks = 0;
   uint64_t nacks = 0;          // ACKs whose code is not OK
   uint64_t ack_timeouts = 0;   // requests that got no ACK after all retries
   uint64_t retries = 0;
-  uint64_t late_acks = 0;      // ACKs with no outstanding request
+  uint64_t late_acks = 0;      // ACKs with no outstanding request (after a timeout, duplicates)
   uint64_t frames_sent = 0;
+  uint64_t decode_errors = 0;
 };
 
-// The outcome of one request: transport/timeout failures and NACKs are all readable.
+// The outcome of one request. Nothing is thrown: validation errors, send failures, timeouts and
+// NACKs all come back here with a readable message.
 struct AckResult {
   bool ok() const { return received && code == protocol::ResponseCode::kOk; }
-  bool received = false;                      // false: timeout or send failure
+  bool sent = false;          // false: validation failed or the link could not send; no bytes left
+  bool received = false;      // false: timeout (after retries) or not sent
   protocol::ResponseCode code = protocol::ResponseCode::kTimeout;
-  std::string message;                        // response text, or why nothing came back
-  std::vector<uint8_t> payload;               // the whole ACK payload (code included)
+  std::string message;        // the pod's response text, or why nothing came back
+  std::vector<uint8_t> payload;  // the whole ACK payload, response code included
   int attempts = 0;
+};
+
+class Session {
+ public:
+  using FrameHandler = std::function<void(const protocol::FrameView&)>;
+  // Answers a request from the other side: return the ACK payload (response code first), or
+  // nullopt to send no ACK (the simulator's dropped-ACK fault uses this).
+  using RequestHandler = std::function<std::optional<protocol::Payload>(const protocol::FrameView&)>;
+  using LinkStateHandler = std::function<void(transport::LinkState, const std::string&)>;
+
+  Session(std::unique_ptr<transport::Transport> transport, SessionOptions options);
+  ~Session();  // stop()s
+
+  // Register handlers on dispatcher() and here before start().
+  Dispatcher& dispatcher();
+  void set_request_handler(protocol::MessageId request_id, RequestHandler handler);
+  void on_frame_sent(FrameHandler handler);  // every frame written (raw/tx)
+  void on_link_state(LinkStateHandler handler);
+
+  Status start();  // opens the transport (which connects and reconnects on its own)
+  void stop();
+
+  // Blocking request with timeout and retries. The destination follows the message family
+  // (gimbal ids 0x000001..0x0000FF -> codec.gimbal_address, others -> codec.camera_address).
+  AckResult request_raw(protocol::MessageId id, const uint8_t* payload, size_t size);
+  template <class Req>
+  AckResult request(const Req& request);  // validates first: invalid -> sent=false, nothing written
+  // The typed ACK (Req::Ack), or a failure carrying AckResult::message.
+  template <class Req>
+  Result<typename Req::Ack> request_typed(const Req& request, AckResult* raw = nullptr);
+  // Non-blocking; `done` runs on an internal thread.
+  void request_async(protocol::MessageId id, const protocol::Payload& payload,
+                     std::function<void(const AckResult&)> done);
+
+  // A frame that is not a request awaiting an ACK (reports and status frames in the simulator,
+  // ACKs written by hand). Sequence numbers are the session's.
+  Status send_frame(protocol::MessageId id, const uint8_t* payload, size_t size,
+                    protocol::Address destination);
+  template <class Msg>
+  Status send_message(const Msg& message, protocol::Address destination);
+
+  SessionStats stats() const;
+  transport::LinkState link_state() const;
+  const SessionOptions& options() const;
 };
 
 }  // namespace k40t::session
