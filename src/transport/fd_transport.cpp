@@ -13,9 +13,11 @@ namespace {
 
 // Large enough for any UDP datagram, so datagrams are never truncated.
 constexpr size_t kReadBufferSize = 65536;
-// A write that makes no progress for this long asks the driver to free room (pty without reader).
-constexpr std::chrono::milliseconds kWriteStall{200};
-// A write that cannot finish within this time fails.
+// A write that makes no progress for this long asks the driver to free room (a pty whose slave
+// nobody reads). A live reader on a pty drains within microseconds.
+constexpr std::chrono::milliseconds kWriteStall{50};
+// A write fails when it cannot finish within this time plus twice its own wire time (a 4 KiB
+// write at 9600 baud legitimately takes over 4 s).
 constexpr std::chrono::milliseconds kWriteTimeout{2000};
 
 }  // namespace
@@ -208,7 +210,10 @@ Status FdTransport::write_all(const uint8_t* data, size_t size) {
     return Status::fail(url_ + ": " + s.message());
   }
   const Waiter waiter(stop_);
-  const auto deadline = std::chrono::steady_clock::now() + kWriteTimeout;
+  const auto wire_time = std::chrono::duration_cast<std::chrono::milliseconds>(
+      std::chrono::duration<double>(2.0 * static_cast<double>(size) * link_->seconds_per_byte()));
+  const auto timeout = kWriteTimeout + wire_time;
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
   size_t done = 0;
   std::string failure;
   while (done < size && failure.empty()) {
@@ -231,7 +236,7 @@ Status FdTransport::write_all(const uint8_t* data, size_t size) {
         break;
       case Waiter::Outcome::kTimeout:
         if (std::chrono::steady_clock::now() >= deadline) {
-          failure = "write timed out after " + std::to_string(kWriteTimeout.count()) + " ms";
+          failure = "write timed out after " + std::to_string(timeout.count()) + " ms";
         } else {
           link_->relieve_stalled_write();
         }
