@@ -137,6 +137,7 @@ void FdTransport::run() {
     fd_ = -1;
   }
   set_state(LinkState::kClosed, "closed");
+  io_thread_id_.store(std::thread::id());  // ids get reused; no later thread may pass for this one
 }
 
 FdTransport::Loss FdTransport::pump(int fd) {

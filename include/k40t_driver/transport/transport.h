@@ -7,6 +7,9 @@
 //   pty:///tmp/k40t_pod                 creates a pseudo-terminal and a symlink to its slave at
 //                                       the path (simulator side; the driver opens it as serial)
 //
+// Servers: a tcp-server is kConnecting/kReconnecting while no client is attached and kConnected
+// with one; a udp-server is kConnected once bound, and send() fails until a peer has spoken.
+//
 // A transport owns one I/O thread. open() returns at once; the thread connects, delivers bytes to
 // the receive callback, and on loss (unplugged adapter, TCP reset, pty closed) reports
 // kReconnecting and retries with exponential back-off until close(). Callbacks run on the I/O
