@@ -5,6 +5,7 @@
 
 #include <set>
 #include <string>
+#include <vector>
 
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/messages/thermal.h"
@@ -22,34 +23,29 @@ bool in_families(MessageId id) {
 }
 
 TEST(ThermalVisibleGoldenFile, EveryFrameDecodesToItsExpectedLine) {
-  const test::GoldenFile golden = test::load_golden_file(kGolden);
-  ASSERT_EQ(golden.error, "");
-  ASSERT_GE(golden.frames.size(), 30u);
-  for (const test::GoldenFrame& frame : golden.frames) {
-    SCOPED_TRACE(frame.where());
-    const test::ParsedFrame parsed = test::parse_golden_frame(frame);
-    ASSERT_TRUE(parsed.ok) << parsed.error;
-    const MessageInfo* info = find_message(parsed.header.message_id);
+  const std::vector<testing::GoldenFrame> golden =
+      testing::load_golden(testing::golden_path(kGolden));
+  ASSERT_GE(golden.size(), 30u);
+  for (const testing::GoldenFrame& frame : golden) {
+    SCOPED_TRACE(std::string(kGolden) + ":" + std::to_string(frame.line) + " " + frame.name);
+    const testing::SplitFrame split = testing::split_frame(frame);
+    ASSERT_TRUE(split.ok) << "not exactly one frame with a good checksum";
+    const MessageInfo* info = find_message(split.header.message_id);
     ASSERT_NE(info, nullptr) << "id not in the catalogue";
     EXPECT_TRUE(in_families(info->id));
-    EXPECT_NE(frame.comment.find(std::string(" ") + info->name + ":"), std::string::npos)
-        << "the comment should name " << info->name;
-    EXPECT_NE(frame.comment.find(std::string("# ") + info->section), std::string::npos)
-        << "the comment should cite section " << info->section;
-    test::FieldCollector fields;
-    const Status described =
-        info->describe(parsed.payload.data(), parsed.payload.size(), {}, fields);
+    EXPECT_EQ(frame.name, info->name) << "the comment names another message";
+    EXPECT_EQ(frame.section, info->section) << "the comment cites another section";
+    testing::RecordedFields fields;
+    const Status described = info->describe(split.payload.data(), split.payload.size(), {}, fields);
     ASSERT_TRUE(described) << described.message();
-    EXPECT_EQ(test::compare_expected_line(frame, fields.values()), "");
+    EXPECT_TRUE(testing::fields_match(fields, frame.expected));
   }
 }
 
 TEST(ThermalVisibleGoldenFile, CoversEveryMessageIdOfBothFamilies) {
-  const test::GoldenFile golden = test::load_golden_file(kGolden);
-  ASSERT_EQ(golden.error, "");
   std::set<MessageId> covered;
-  for (const test::GoldenFrame& frame : golden.frames) {
-    covered.insert(test::parse_golden_frame(frame).header.message_id);
+  for (const testing::GoldenFrame& frame : testing::load_golden(testing::golden_path(kGolden))) {
+    covered.insert(testing::split_frame(frame).header.message_id);
   }
   size_t plain_acks = 0;
   size_t family_ids = 0;
@@ -84,7 +80,7 @@ using FamilyTypes =
 
 template <class T>
 void round_trip_golden_and_check_entry() {
-  test::expect_round_trip(test::golden_message<T>(kGolden));
+  testing::expect_round_trip(testing::golden_message<T>(kGolden));
   const MessageInfo* info = find_message(T::kId);
   ASSERT_NE(info, nullptr) << T::kName;
   EXPECT_STREQ(info->name, T::kName);

@@ -12,11 +12,11 @@
 namespace k40t::protocol {
 namespace {
 
-using test::defined_codes;
-using test::expect_decode_error;
-using test::expect_matches_golden;
-using test::expect_range_error;
-using test::golden_message;
+using testing::defined_codes;
+using testing::expect_decode_error;
+using testing::expect_matches_golden;
+using testing::expect_range_error;
+using testing::golden_message;
 
 const char kGolden[] = "thermal_visible.txt";
 
