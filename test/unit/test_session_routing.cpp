@@ -20,13 +20,9 @@ constexpr protocol::MessageId kGpsRequest = 0x000310;
 
 TEST(SessionRouting, PeriodicReportReachesItsTypedHandler) {
   SessionLink link;
-  Collector<protocol::GimbalAttitude> attitudes;
-  Collector<protocol::Address> sources;
+  Collector<std::pair<protocol::GimbalAttitude, protocol::Address>> received;
   link.host->dispatcher().on<protocol::GimbalAttitude>(
-      [&](const protocol::GimbalAttitude& a, const FrameView& f) {
-        attitudes.add(a);
-        sources.add(f.header.source);
-      });
+      [&](const protocol::GimbalAttitude& a, const FrameView& f) { received.add({a, f.header.source}); });
   link.start();
 
   protocol::GimbalAttitude sent;
@@ -34,11 +30,12 @@ TEST(SessionRouting, PeriodicReportReachesItsTypedHandler) {
   sent.pitch_deg = -45.5;
   sent.roll_rate_deg_s = 3.21;
   ASSERT_TRUE(link.pod->send_message(sent, protocol::kHostAddress));
-  ASSERT_TRUE(attitudes.wait_for_count(1));
-  EXPECT_DOUBLE_EQ(attitudes.items()[0].joint_yaw_deg, 12.34);
-  EXPECT_DOUBLE_EQ(attitudes.items()[0].pitch_deg, -45.5);
-  EXPECT_DOUBLE_EQ(attitudes.items()[0].roll_rate_deg_s, 3.21);
-  EXPECT_EQ(sources.items()[0], protocol::kCameraAddress);
+  ASSERT_TRUE(received.wait_for_count(1));
+  const protocol::GimbalAttitude got = received.items()[0].first;
+  EXPECT_DOUBLE_EQ(got.joint_yaw_deg, 12.34);
+  EXPECT_DOUBLE_EQ(got.pitch_deg, -45.5);
+  EXPECT_DOUBLE_EQ(got.roll_rate_deg_s, 3.21);
+  EXPECT_EQ(received.items()[0].second, protocol::kCameraAddress);
   EXPECT_EQ(link.host->stats().requests_unhandled, 0u);  // a report is not a request
 }
 
