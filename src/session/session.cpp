@@ -83,9 +83,11 @@ void Session::Impl::answer_request(const protocol::FrameView& frame) {
   }
   const std::optional<protocol::Payload> ack = found->second(frame);
   if (!ack) return;  // the handler chose not to answer
+  // Counted before the write, so that whoever receives the ACK finds it counted already.
+  requests_answered.fetch_add(1, std::memory_order_relaxed);
   const Status sent = sender.send(protocol::ack_id_of(frame.header.message_id), ack->data(),
                                   ack->size, reply_source(frame.header), frame.header.source);
-  if (sent) requests_answered.fetch_add(1, std::memory_order_relaxed);
+  if (!sent) requests_answered.fetch_sub(1, std::memory_order_relaxed);  // in send_errors instead
 }
 
 // The ACK comes from the address the request was sent to (the gimbal's 0x03 or the camera's 0x04
