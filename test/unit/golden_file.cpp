@@ -115,53 +115,31 @@ void DecodedFields::add(const char* name, Value v) {
 }
 
 void DecodedFields::integer(const char* name, int64_t value) {
-  Value v;
-  v.kind = Kind::kSigned;
-  v.i = value;
-  add(name, v);
+  add(name, {Kind::kSigned, value, 0, 0, ""});
 }
 
 void DecodedFields::unsigned_integer(const char* name, uint64_t value) {
-  Value v;
-  v.kind = Kind::kUnsigned;
-  v.u = value;
-  add(name, v);
+  add(name, {Kind::kUnsigned, 0, value, 0, ""});
 }
 
 void DecodedFields::real(const char* name, double value) {
-  Value v;
-  v.kind = Kind::kReal;
-  v.d = value;
-  add(name, v);
+  add(name, {Kind::kReal, 0, 0, value, ""});
 }
 
 void DecodedFields::boolean(const char* name, bool value) {
-  Value v;
-  v.kind = Kind::kBool;
-  v.i = value ? 1 : 0;
-  add(name, v);
+  add(name, {Kind::kBool, value ? 1 : 0, 0, 0, ""});
 }
 
 void DecodedFields::text(const char* name, const std::string& value) {
-  Value v;
-  v.kind = Kind::kText;
-  v.text = value;
-  add(name, v);
+  add(name, {Kind::kText, 0, 0, 0, value});
 }
 
 void DecodedFields::enumeration(const char* name, int64_t code, const char* label) {
-  Value v;
-  v.kind = Kind::kEnum;
-  v.i = code;
-  v.text = label ? label : "";
-  add(name, v);
+  add(name, {Kind::kEnum, code, 0, 0, label ? label : ""});
 }
 
 void DecodedFields::bytes(const char* name, const uint8_t* data, size_t size) {
-  Value v;
-  v.kind = Kind::kBytes;
-  v.text.assign(data, data + size);
-  add(name, v);
+  add(name, {Kind::kBytes, 0, 0, 0, std::string(data, data + size)});
 }
 
 Status DecodedFields::matches(const std::string& name, const std::string& expected) const {
