@@ -1,11 +1,8 @@
 // The session and the k40t tool over a real pseudo-terminal: the simulated pod's side opens
 // pty://PATH (a Session in the pod role), the driver's side serial://PATH, as in the demos.
 #include <gtest/gtest.h>
-#include <stdlib.h>
-#include <unistd.h>
 
 #include <atomic>
-#include <filesystem>
 #include <thread>
 
 #include "k40t_driver/protocol/messages/gimbal.h"
@@ -26,10 +23,7 @@ using transport::testing::eventually;
 class PtyLink : public ::testing::Test {
  protected:
   void SetUp() override {
-    char pattern[] = "/tmp/k40t_session_pty_XXXXXX";
-    ASSERT_NE(mkdtemp(pattern), nullptr);
-    dir_ = pattern;
-    path_ = dir_ + "/pod";
+    path_ = dir_.file("pod");
     Result<std::unique_ptr<transport::Transport>> pod_link =
         transport::make_transport("pty://" + path_);
     ASSERT_TRUE(pod_link) << pod_link.error();
@@ -38,7 +32,6 @@ class PtyLink : public ::testing::Test {
   void TearDown() override {
     if (host_) host_->stop();
     if (pod_) pod_->stop();
-    std::filesystem::remove_all(dir_);
   }
   // After the pod's handlers are registered: the pty, then (optionally) the driver's session,
   // with `before_start` registering its handlers.
@@ -62,7 +55,7 @@ class PtyLink : public ::testing::Test {
     });
   }
 
-  std::string dir_;
+  transport::testing::ScratchDir dir_;
   std::string path_;
   std::unique_ptr<session::Session> pod_;
   std::unique_ptr<session::Session> host_;
@@ -110,7 +103,7 @@ TEST_F(PtyLink, K40tSendPrintsTheAckAndExitsZero) {
   start(false);
   const ToolRun run = run_k40t("send serial://" + path_ + " laser_range enable=1");
   EXPECT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_EQ(run.out, "laser_range_ack code=OK, success(0) distance_m=12.3\n");
+  EXPECT_EQ(run.out, "laser_range_ack code=ok_success(0) distance_m=12.3\n");
 }
 
 TEST_F(PtyLink, K40tSendExitsOneOnANack) {

@@ -5,6 +5,7 @@
 #include "input.h"
 #include "json_sink.h"
 #include "k40t_driver/protocol/catalogue.h"
+#include "k40t_driver/protocol/field_assign.h"
 
 namespace k40t::tool {
 
@@ -97,8 +98,9 @@ class SummarySink : public protocol::FieldSink {
   }
   void boolean(const char* name, bool value) override { add(name, value ? "1" : "0"); }
   void text(const char* name, const std::string& value) override { add(name, "\"" + value + "\""); }
+  // One token per field: the label as `k40t send` accepts it ("busy_repeated_request(8)").
   void enumeration(const char* name, int64_t code, const char* label) override {
-    add(name, label ? std::string(label) + "(" + std::to_string(code) + ")"
+    add(name, label ? protocol::normalize_label(label) + "(" + std::to_string(code) + ")"
                     : std::to_string(code) + "(undefined)");
   }
   void bytes(const char* name, const uint8_t* data, size_t size) override {
