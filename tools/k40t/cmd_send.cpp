@@ -138,8 +138,10 @@ int run_send(const Command& self, const ParsedArgs& args) {
   options.crc_coverage = wire->crc_coverage;
   options.ack_timeout = std::chrono::milliseconds(timeout.value());
   options.retries = static_cast<int>(retries.value());
-  session::Session session(std::move(link.value()), options);
+  // Declared before the session: the session's last state callback (kClosed, on destruction)
+  // still reaches it.
   ConnectionWaiter waiter;
+  session::Session session(std::move(link.value()), options);
   session.on_link_state(
       [&](transport::LinkState state, const std::string& reason) { waiter.update(state, reason); });
   const Status started = session.start();
