@@ -7,6 +7,7 @@
 set -euo pipefail
 source "$(dirname "$0")/env.sh"
 what="${1:-all}"
+mkdir -p "$K40T_BUILD"
 
 if [ "$what" = core ] || [ "$what" = all ]; then
   cmake -S "$K40T_ROOT" -B "$K40T_BUILD/core" -DK40T_WITH_ROS=OFF -DK40T_BUILD_BENCH=ON > "$K40T_BUILD/core-configure.log" 2>&1 \
