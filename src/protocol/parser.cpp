@@ -12,6 +12,7 @@ FrameParser::FrameParser(CrcCoverage coverage)
     : configured_(coverage), locked_(coverage), known_id_(&is_known_id) {}
 
 void FrameParser::reset() {
+  stats_.bytes_discarded += end_ - begin_;
   begin_ = end_ = 0;
   source_count_ = 0;
 }
@@ -39,8 +40,8 @@ void FrameParser::parse_buffer(const FrameCallback& on_frame) {
   while (begin_ < end_) {
     // Hunt for STX; everything before it is discarded.
     if (buffer_[begin_] != kStx) {
-      const uint8_t* found = static_cast<const uint8_t*>(
-          std::memchr(buffer_.data() + begin_, kStx, end_ - begin_));
+      const uint8_t* found =
+          static_cast<const uint8_t*>(std::memchr(buffer_.data() + begin_, kStx, end_ - begin_));
       const size_t next = found ? static_cast<size_t>(found - buffer_.data()) : end_;
       stats_.bytes_discarded += next - begin_;
       begin_ = next;
@@ -118,7 +119,8 @@ void FrameParser::note_coverage(CrcCoverage matched) {
 }
 
 void FrameParser::track_sequence(const FrameHeader& header) {
-  const uint16_t source = static_cast<uint16_t>(header.source.system << 8 | header.source.component);
+  const uint16_t source =
+      static_cast<uint16_t>(header.source.system << 8 | header.source.component);
   for (size_t i = 0; i < source_count_; ++i) {
     SourceSequence& s = sources_[i];
     if (s.source != source) continue;

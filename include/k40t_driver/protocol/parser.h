@@ -19,12 +19,12 @@ namespace k40t::protocol {
 struct ParserStats {
   uint64_t bytes_received = 0;
   uint64_t frames_good = 0;
-  uint64_t checksum_errors = 0;   // candidates with a plausible LEN whose checksum failed
-  uint64_t length_errors = 0;     // candidates with LEN > 243
-  uint64_t bytes_discarded = 0;   // bytes that ended up in no good frame
-  uint64_t unknown_ids = 0;       // good frames whose id the catalogue does not know
-  uint64_t sequence_gaps = 0;     // gap events, per source, with 8-bit wrap
-  uint64_t frames_lost = 0;       // frames missing according to those gaps
+  uint64_t checksum_errors = 0;  // candidates with a plausible LEN whose checksum failed
+  uint64_t length_errors = 0;    // candidates with LEN > 243
+  uint64_t bytes_discarded = 0;  // bytes that ended up in no good frame
+  uint64_t unknown_ids = 0;      // good frames whose id the catalogue does not know
+  uint64_t sequence_gaps = 0;    // gap events, per source, with 8-bit wrap
+  uint64_t frames_lost = 0;      // frames missing according to those gaps
 };
 
 class FrameParser {
@@ -40,10 +40,14 @@ class FrameParser {
   // Parses `size` bytes; `on_frame` is called for each good frame, in order.
   void feed(const uint8_t* data, size_t size, const FrameCallback& on_frame);
 
-  // Forget any partial frame (after a reconnect) and the per-source sequence history.
+  // Forget any partial frame (after a reconnect; its bytes count as discarded) and the per-source
+  // sequence history.
   void reset();
 
   const ParserStats& stats() const { return stats_; }
+  // Bytes received but not yet part of a good frame or discarded: the start of a frame still
+  // arriving. bytes_received == good frame bytes + bytes_discarded + buffered_bytes().
+  size_t buffered_bytes() const { return end_ - begin_; }
   // What the checksum coverage is now: the configured one, or in auto mode the locked one
   // (kAuto until kLockFrames consecutive frames agreed).
   CrcCoverage coverage() const { return locked_; }
