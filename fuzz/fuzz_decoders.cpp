@@ -16,22 +16,12 @@
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/protocol/messages/laser.h"
 #include "k40t_driver/protocol/messages/sbus.h"
+#include "null_sink.h"
 
 namespace {
 
 using namespace k40t::protocol;  // NOLINT: a fuzz target names many message types
 using k40t::Result;
-
-class NullSink : public FieldSink {
- public:
-  void integer(const char*, int64_t) override {}
-  void unsigned_integer(const char*, uint64_t) override {}
-  void real(const char*, double) override {}
-  void boolean(const char*, bool) override {}
-  void text(const char*, const std::string&) override {}
-  void enumeration(const char*, int64_t, const char*) override {}
-  void bytes(const char*, const uint8_t*, size_t) override {}
-};
 
 // decode -> (validate) -> encode -> decode gives the same fields.
 template <class T>
@@ -108,7 +98,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   CodecOptions little;
   little.ack_byte_order = ByteOrder::kLittle;
   for (const CodecOptions& options : {big, little}) {
-    NullSink sink;
+    k40t::fuzz::NullSink sink;
     info->describe(payload, payload_size, options, sink);
     bool typed = false;
     for (const RoundTrip& r : kRoundTrips) {

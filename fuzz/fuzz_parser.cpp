@@ -16,25 +16,14 @@
 
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/parser.h"
+#include "null_sink.h"
 
 namespace {
 
 using k40t::protocol::CodecOptions;
 using k40t::protocol::CrcCoverage;
-using k40t::protocol::FieldSink;
 using k40t::protocol::FrameParser;
 using k40t::protocol::FrameView;
-
-class NullSink : public FieldSink {
- public:
-  void integer(const char*, int64_t) override {}
-  void unsigned_integer(const char*, uint64_t) override {}
-  void real(const char*, double) override {}
-  void boolean(const char*, bool) override {}
-  void text(const char*, const std::string&) override {}
-  void enumeration(const char*, int64_t, const char*) override {}
-  void bytes(const char*, const uint8_t*, size_t) override {}
-};
 
 void check(bool condition, const char* what) {
   if (!condition) {
@@ -58,7 +47,7 @@ void on_frame(const FrameView& f, Run& run) {
   run.frames.emplace_back(f.bytes, f.bytes + f.size);
   run.good_bytes += f.size;
   if (const auto* info = k40t::protocol::find_message(f.header.message_id)) {
-    NullSink sink;
+    k40t::fuzz::NullSink sink;
     info->describe(f.payload, f.payload_size, CodecOptions{}, sink);  // may refuse, must not crash
   }
 }
