@@ -13,6 +13,7 @@
 #include "../test/unit/field_recorder.h"
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/messages/ack.h"
+#include "k40t_driver/protocol/messages/camera.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/protocol/messages/laser.h"
 #include "k40t_driver/protocol/messages/sbus.h"
@@ -55,7 +56,8 @@ template <class T>
 constexpr RoundTrip entry() {
   return {T::kId, &round_trip<T>};
 }
-// Message structs with a typed round trip (ACKs without their own struct use PlainAck).
+// Message structs with a typed round trip (ACKs without their own struct use PlainAck). A new
+// message family adds its structs here.
 constexpr RoundTrip kRoundTrips[] = {
     entry<GimbalStatus>(),
     entry<GimbalAttitude>(),
@@ -80,6 +82,44 @@ constexpr RoundTrip kRoundTrips[] = {
     entry<SbusChannelsRequest>(),
     entry<SbusConfigRequest>(),
     entry<SbusConfigAck>(),
+    // camera family (camera_*.h, flight_controller.h)
+    entry<CameraSystemStatus>(),
+    entry<CameraUpgradeStatus>(),
+    entry<CaptureModeRequest>(),
+    entry<PhotoSettingsRequest>(),
+    entry<TakePhotoRequest>(),
+    entry<RecordRequest>(),
+    entry<ZoomRatioRequest>(),
+    entry<ContinuousZoomRequest>(),
+    entry<PreciseReshootRequest>(),
+    entry<StreamBitrateRequest>(),
+    entry<StreamResolutionRequest>(),
+    entry<StreamEncodingRequest>(),
+    entry<FocusRequest>(),
+    entry<OsdWatermarkRequest>(),
+    entry<ImageModeRequest>(),
+    entry<AiRecognitionRequest>(),
+    entry<BoxTrackingRequest>(),
+    entry<PhotoStatus>(),
+    entry<RecordStatus>(),
+    entry<ZoomStatus>(),
+    entry<PreciseReshootStatus>(),
+    entry<TfCardUpgradeStatus>(),
+    entry<SdFormatStatus>(),
+    entry<TfCardUpgradeRequest>(),
+    entry<FormatSdRequest>(),
+    entry<FactoryResetRequest>(),
+    entry<ShutdownRequest>(),
+    entry<GetIpRequest>(),
+    entry<GetIpAck>(),
+    entry<CameraVersionRequest>(),
+    entry<CameraVersionAck>(),
+    entry<TimeSyncRequest>(),
+    entry<SetIpRequest>(),
+    entry<CameraGpsRequest>(),
+    entry<CameraGpsAck>(),
+    entry<TargetGpsRequest>(),
+    entry<TargetGpsAck>(),
 };
 
 }  // namespace

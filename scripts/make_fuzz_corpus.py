@@ -17,12 +17,14 @@ coverage mode.
 import glob
 import os
 import random
+import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "test", "data"))
 from frame_crc import crc_calculate  # noqa: E402
 
 HEADER_EXCLUDED, WHOLE_FRAME, AUTO = 0, 1, 2
+TITLE = re.compile(r"^# (\d+(?:\.\d+)+) (\w+):")  # starts an entry; other '#' lines are comments
 
 
 def golden_frames(golden_dir):
@@ -31,8 +33,10 @@ def golden_frames(golden_dir):
         current = None
         for line in open(path, encoding="utf-8"):
             line = line.strip()
-            if line.startswith("#"):
+            if TITLE.match(line):
                 current = bytearray()
+            elif line.startswith("#"):
+                continue
             elif line.startswith("="):
                 if current:
                     frames.append(bytes(current))

@@ -1,14 +1,18 @@
 // Reader of the hand-written golden frame files test/data/golden/*.txt. Each entry is
 //   # <section> <name>: what the bytes mean, field by field
+//   # (more comment lines)
 //   FD 07 01 01 ...            (hex; may continue on following lines)
 //   = field=value field=value  (expected decoded fields, names as in fields(); enums and
 //                               booleans as numbers; a bare "=" for a message without fields)
-// The checksum bytes were computed with test/data/frame_crc.py, independently of the C++ code.
+// A '#' line that does not start "# <section> <name>:" (digits and dots, then a snake_case name)
+// is a comment, e.g. a file header. The checksum bytes were computed with test/data/frame_crc.py,
+// independently of the C++ code.
 #pragma once
 
 #include <cctype>
 #include <cstdint>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -39,6 +43,7 @@ inline std::vector<GoldenFrame> load_golden_file(const std::string& path, std::s
   std::string line;
   int number = 0;
   bool open = false;  // an entry whose '=' line has not been seen yet
+  const std::regex title(R"(^# (\d+(?:\.\d+)+) (\w+):)");
   auto fail = [&](const std::string& why) {
     *error = path + ":" + std::to_string(number) + ": " + why;
     return frames;
@@ -46,18 +51,19 @@ inline std::vector<GoldenFrame> load_golden_file(const std::string& path, std::s
   while (std::getline(in, line)) {
     ++number;
     if (line.empty()) continue;
-    if (line[0] == '#') {
+    std::smatch m;
+    if (std::regex_search(line, m, title)) {
       if (open) return fail("entry without '=' line before this one");
-      std::istringstream words(line.substr(1));
       GoldenFrame f;
       f.file = path;
       f.line = number;
-      words >> f.section >> f.name;
-      if (!f.name.empty() && f.name.back() == ':') f.name.pop_back();
-      std::getline(words, f.comment);
-      if (f.section.empty() || f.name.empty()) return fail("expected '# <section> <name>: ...'");
+      f.section = m[1];
+      f.name = m[2];
+      f.comment = line.substr(m.length(0));
       frames.push_back(f);
       open = true;
+    } else if (line[0] == '#') {
+      if (open && frames.back().bytes.empty()) frames.back().comment += "\n" + line.substr(1);
     } else if (line[0] == '=') {
       if (!open) return fail("'=' line without a '#' line");
       std::istringstream words(line.substr(1));
