@@ -1,1 +1,43 @@
-# Nodelets, nodes and rostests (the ROS layer, ros/).
+# The ROS layer (src/ros/): one library holding the driver and its ROS glue, the nodelet plugin
+# that wraps it, the standalone node, and the rostest programs under test/ros/.
+file(GLOB_RECURSE K40T_ROS_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/*.cpp)
+list(FILTER K40T_ROS_SOURCES EXCLUDE REGEX ".*/src/ros/nodes/.*")
+
+if(NOT K40T_ROS_SOURCES)
+  return()  # nothing in src/ros/ yet
+endif()
+add_library(k40t_ros SHARED ${K40T_ROS_SOURCES})
+target_include_directories(k40t_ros PUBLIC ${PROJECT_SOURCE_DIR}/include)
+target_include_directories(k40t_ros SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
+target_link_libraries(k40t_ros PUBLIC k40t_core ${catkin_LIBRARIES})
+# Generated message/service headers and the dynamic_reconfigure K40tConfig.h.
+add_dependencies(k40t_ros ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg)
+
+# One executable per src/ros/nodes/*.cpp (k40t_node, ...), each a thin main() over k40t_ros.
+file(GLOB K40T_ROS_NODES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/nodes/*.cpp)
+foreach(source ${K40T_ROS_NODES})
+  get_filename_component(name ${source} NAME_WE)
+  add_executable(${name} ${source})
+  target_link_libraries(${name} PRIVATE k40t_ros)
+  install(TARGETS ${name} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+endforeach()
+
+install(TARGETS k40t_ros
+  LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
+  ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
+install(DIRECTORY include/k40t_driver/ DESTINATION ${CATKIN_PACKAGE_INCLUDE_DESTINATION})
+install(FILES nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
+install(DIRECTORY launch config urdf rviz DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
+
+# rostest programs: test/ros/*.cpp are gtest nodes (one executable each), test/ros/*.py are
+# Python test nodes run by /usr/bin/python3; test/ros/*.test files are run by scripts/run_tests.sh.
+if(CATKIN_ENABLE_TESTING)
+  find_package(rostest REQUIRED)
+  find_package(GTest REQUIRED)
+  file(GLOB K40T_ROSTEST_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/test/ros/*.cpp)
+  foreach(source ${K40T_ROSTEST_SOURCES})
+    get_filename_component(name ${source} NAME_WE)
+    add_executable(${name} ${source})
+    target_link_libraries(${name} PRIVATE k40t_ros GTest::gtest)
+  endforeach()
+endif()
