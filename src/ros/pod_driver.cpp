@@ -69,6 +69,10 @@ Status PodDriver::start() {
     Result<std::unique_ptr<transport::Transport>> link = transport::make_transport(url);
     if (!link) return Status::fail("device '" + url + "': " + link.error());
     seconds_per_byte_ = link.value()->seconds_per_byte();
+    transport::ReconnectPolicy policy;
+    policy.initial_delay = std::chrono::milliseconds(50);
+    policy.max_delay = std::chrono::milliseconds(static_cast<int64_t>(options_.reconnect_max_delay_s * 1000));
+    link.value()->set_reconnect_policy(policy);
     session_ = std::make_unique<session::Session>(std::move(link.value()), options_.session);
   }
   // The first frame handler: it stamps the frame for everything that follows (typed handlers run

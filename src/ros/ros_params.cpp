@@ -55,6 +55,7 @@ Result<RosPodConfig> read_params(const ros::NodeHandle& private_nh) {
   d.device = p.get<std::string>("device", "serial:///dev/ttyUSB0");
   d.baud = static_cast<int>(p.number("baud", 115200, 1200, 4000000));
   d.replay = p.get("replay", false);
+  d.reconnect_max_delay_s = p.number("reconnect_max_delay", 1.0, 0.05, 60);
 
   session::SessionOptions& s = d.session;
   const std::string coverage = p.get<std::string>("crc_coverage", "auto");

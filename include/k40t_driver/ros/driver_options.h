@@ -15,6 +15,9 @@ struct DriverOptions {
   int baud = 115200;
   // Frames come from replay_frame() instead of a device; nothing is ever sent.
   bool replay = false;
+  // Longest wait between reconnection attempts (the first is after 50 ms, then doubling): bounds
+  // how long after the pod's return the topics resume.
+  double reconnect_max_delay_s = 1.0;
 
   // Codec decisions (NOTES A1-A5), ACK timeout and retries.
   session::SessionOptions session;
