@@ -48,3 +48,14 @@ if(CATKIN_ENABLE_TESTING)
     target_link_libraries(${name} PRIVATE k40t_ros GTest::gtest)
   endforeach()
 endif()
+
+# End-to-end benchmarks of the ROS layer (bench/ros/, run by bench/ros/run_ros_bench.sh): the
+# latency probe as a node and as a nodelet (library k40t_bench_nodelets, listed in
+# nodelet_plugins.xml), and the service round-trip client.
+add_library(k40t_bench_nodelets SHARED ${PROJECT_SOURCE_DIR}/bench/ros/latency_probe.cpp
+                                       ${PROJECT_SOURCE_DIR}/bench/ros/latency_probe_nodelet.cpp)
+target_link_libraries(k40t_bench_nodelets PUBLIC k40t_ros)
+add_executable(k40t_latency_probe ${PROJECT_SOURCE_DIR}/bench/ros/latency_probe_node.cpp)
+target_link_libraries(k40t_latency_probe PRIVATE k40t_bench_nodelets)
+add_executable(k40t_service_rtt ${PROJECT_SOURCE_DIR}/bench/ros/service_rtt.cpp)
+target_link_libraries(k40t_service_rtt PRIVATE k40t_ros)
