@@ -32,13 +32,34 @@ std::string device_url_with_baud(const std::string& url, int baud) {
   return url + (url.find('?') == std::string::npos ? "?" : "&") + "baud=" + std::to_string(baud);
 }
 
+Result<std::unique_ptr<PodDriver>> PodDriver::create(DriverOptions options, Clock clock) {
+  std::unique_ptr<PodDriver> driver(new PodDriver(std::move(options), std::move(clock)));
+  const DriverOptions& o = driver->options_;
+  if (o.replay) {
+    driver->replayer_ =
+        std::make_unique<session::Dispatcher>(o.session.crc_coverage, o.session.codec);
+  } else {
+    const std::string url = device_url_with_baud(o.device, o.baud);
+    Result<std::unique_ptr<transport::Transport>> link = transport::make_transport(url);
+    if (!link) return Result<std::unique_ptr<PodDriver>>::fail(link.error());
+    driver->seconds_per_byte_ = link.value()->seconds_per_byte();
+    transport::ReconnectPolicy policy;
+    policy.initial_delay = std::chrono::milliseconds(50);
+    policy.max_delay =
+        std::chrono::milliseconds(static_cast<int64_t>(o.reconnect_max_delay_s * 1000));
+    link.value()->set_reconnect_policy(policy);
+    driver->session_ = std::make_unique<session::Session>(std::move(link.value()), o.session);
+  }
+  // The first frame handler: it stamps the frame for everything that follows (typed handlers
+  // run after all frame handlers).
+  PodDriver* self = driver.get();
+  driver->dispatcher().on_frame([self](const FrameView& frame) { self->handle_rx_frame(frame); });
+  return driver;
+}
+
 PodDriver::PodDriver(DriverOptions options, Clock clock)
     : options_(std::move(options)), clock_(std::move(clock)) {
   rate_.set_timeout(std::chrono::duration<double>(options_.cmd_rate_timeout_s));
-  if (options_.replay) {
-    replayer_ = std::make_unique<session::Dispatcher>(options_.session.crc_coverage,
-                                                      options_.session.codec);
-  }
 }
 
 PodDriver::~PodDriver() {
@@ -64,20 +85,6 @@ void PodDriver::on_pod_online(std::function<void()> handler) {
 
 Status PodDriver::start() {
   if (started_) return Status::fail("the driver is already started");
-  if (!options_.replay) {
-    const std::string url = device_url_with_baud(options_.device, options_.baud);
-    Result<std::unique_ptr<transport::Transport>> link = transport::make_transport(url);
-    if (!link) return Status::fail("device '" + url + "': " + link.error());
-    seconds_per_byte_ = link.value()->seconds_per_byte();
-    transport::ReconnectPolicy policy;
-    policy.initial_delay = std::chrono::milliseconds(50);
-    policy.max_delay = std::chrono::milliseconds(static_cast<int64_t>(options_.reconnect_max_delay_s * 1000));
-    link.value()->set_reconnect_policy(policy);
-    session_ = std::make_unique<session::Session>(std::move(link.value()), options_.session);
-  }
-  // The first frame handler: it stamps the frame for everything that follows (typed handlers run
-  // after all frame handlers).
-  dispatcher().on_frame([this](const FrameView& frame) { handle_rx_frame(frame); });
   if (session_) {
     session_->on_frame_sent([this](const FrameView& frame) {
       const StampNs stamp = clock_();
@@ -93,12 +100,10 @@ Status PodDriver::start() {
     }
     const Status opened = session_->start();
     if (!opened) return opened;
-  }
-  started_ = true;
-  if (!options_.replay) {
     timer_thread_ = std::thread([this] { timer_loop(); });
     online_thread_ = std::thread([this] { online_loop(); });
   }
+  started_ = true;
   return Status::ok();
 }
 

@@ -7,16 +7,19 @@ namespace k40t::driver {
 Result<std::unique_ptr<RosPod>> RosPod::create(ros::NodeHandle nh, ros::NodeHandle private_nh) {
   Result<RosPodConfig> config = read_params(private_nh);
   if (!config) return Result<std::unique_ptr<RosPod>>::fail(config.error());
-  std::unique_ptr<RosPod> pod(new RosPod(nh, private_nh, config.value()));
+  Result<std::unique_ptr<PodDriver>> driver = PodDriver::create(
+      config->driver, [] { return static_cast<StampNs>(ros::Time::now().toNSec()); });
+  if (!driver) return Result<std::unique_ptr<RosPod>>::fail(driver.error());
+  std::unique_ptr<RosPod> pod(
+      new RosPod(nh, private_nh, config.value(), std::move(driver.value())));
   const Status started = pod->start();
   if (!started) return Result<std::unique_ptr<RosPod>>::fail(started.message());
   return pod;
 }
 
-RosPod::RosPod(ros::NodeHandle nh, ros::NodeHandle private_nh, const RosPodConfig& config)
-    : config_(config) {
-  driver_ = std::make_unique<PodDriver>(
-      config_.driver, [] { return static_cast<StampNs>(ros::Time::now().toNSec()); });
+RosPod::RosPod(ros::NodeHandle nh, ros::NodeHandle private_nh, const RosPodConfig& config,
+               std::unique_ptr<PodDriver> driver)
+    : config_(config), driver_(std::move(driver)) {
   // Every handler is registered before the link starts.
   topics_ = std::make_unique<TopicPublisher>(nh, *driver_, config_);
   if (config_.driver.replay) {

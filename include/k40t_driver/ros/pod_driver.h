@@ -57,8 +57,10 @@ class PodDriver {
   using FrameHandler = std::function<void(const protocol::FrameView&, StampNs)>;
   using LinkStateHandler = std::function<void(transport::LinkState, const std::string&)>;
 
-  // `clock` stamps received frames; pass the ROS clock so that sim time works.
-  PodDriver(DriverOptions options, Clock clock);
+  // Builds the link (live: the transport for options.device and its Session, not yet started;
+  // replay: a Dispatcher). Fails only for a bad URL. `clock` stamps received frames; pass the
+  // ROS clock so that sim time works.
+  static Result<std::unique_ptr<PodDriver>> create(DriverOptions options, Clock clock);
   ~PodDriver();  // stop()s
   PodDriver(const PodDriver&) = delete;
   PodDriver& operator=(const PodDriver&) = delete;
@@ -71,8 +73,8 @@ class PodDriver {
   void on_link_state(LinkStateHandler handler);
   void on_pod_online(std::function<void()> handler);
 
-  // Opens the link (live) and starts the background thread. Fails only for a bad URL or
-  // options; an absent device is retried in the background by the transport.
+  // Opens the link (live) and starts the background threads. An absent device is not an error:
+  // the transport retries in the background.
   Status start();
   void stop();
 
@@ -102,6 +104,7 @@ class PodDriver {
   const protocol::CodecOptions& codec() const { return options_.session.codec; }
 
  private:
+  PodDriver(DriverOptions options, Clock clock);
   session::Dispatcher& dispatcher();
   session::AckResult not_sent_in_replay() const;
   void handle_rx_frame(const protocol::FrameView& frame);

@@ -31,7 +31,8 @@ class RosPod {
   ~RosPod();
 
  private:
-  RosPod(ros::NodeHandle nh, ros::NodeHandle private_nh, const RosPodConfig& config);
+  RosPod(ros::NodeHandle nh, ros::NodeHandle private_nh, const RosPodConfig& config,
+         std::unique_ptr<PodDriver> driver);
   Status start();
   void on_pod_online();
 
