@@ -42,6 +42,16 @@ std::unique_ptr<PodDriver> make_driver(
   return std::move(driver.value());
 }
 
+// The driver opens the pty in the background (and may flush what came before): send reports
+// until one has been received.
+void wait_until_linked(FakePod& pod, PodDriver& driver) {
+  for (int i = 0; i < 150 && driver.stats().session.parser.frames_good == 0; ++i) {
+    pod.send(protocol::GimbalAttitude{});
+    std::this_thread::sleep_for(milliseconds(20));
+  }
+  ASSERT_GT(driver.stats().session.parser.frames_good, 0u) << "the driver never received a frame";
+}
+
 TEST(PodDriver, StampIsReceptionMinusWireTime) {
   const std::string pty = unique_pty("stamp");
   FakePod pod(pty);
@@ -66,6 +76,7 @@ TEST(PodDriver, GpsRequestIsAnsweredFromTheVehicleState) {
   FakePod pod(pty);
   std::unique_ptr<PodDriver> driver = make_driver(options_for(pty));
   ASSERT_TRUE(driver->start().is_ok());
+  wait_until_linked(pod, *driver);
   protocol::CameraGpsRequest request;
   request.hour = 13;
   request.minute = 14;
@@ -120,8 +131,7 @@ TEST(PodDriver, RateCommandsStopHalfASecondAfterTheLast) {
   FakePod pod(pty);
   std::unique_ptr<PodDriver> driver = make_driver(options_for(pty));
   ASSERT_TRUE(driver->start().is_ok());
-  pod.send(protocol::GimbalAttitude{});  // the driver's link is up once a frame went through
-  std::this_thread::sleep_for(milliseconds(200));
+  wait_until_linked(pod, *driver);
 
   const auto commanded = std::chrono::steady_clock::now();
   driver->command_rate(10.0, 0.0);
@@ -146,7 +156,7 @@ TEST(PodDriver, TimeSyncEveryPeriodWithTheWallClock) {
   o.time_sync_period_s = 0.25;
   std::unique_ptr<PodDriver> driver = make_driver(o);
   ASSERT_TRUE(driver->start().is_ok());
-  pod.send(protocol::GimbalAttitude{});
+  wait_until_linked(pod, *driver);
   pod.wait_for(FakePod::count_of(protocol::TimeSyncRequest::kId, 4), milliseconds(3000));
   const std::vector<SentFrame> syncs = pod.frames_with_id(protocol::TimeSyncRequest::kId);
   ASSERT_GE(syncs.size(), 4u);
@@ -170,7 +180,8 @@ TEST(PodDriver, PodOnlineOnFirstFrameAndAfterSilence) {
   std::atomic<int> online{0};
   driver->on_pod_online([&] { ++online; });
   ASSERT_TRUE(driver->start().is_ok());
-  for (int i = 0; i < 10; ++i) {  // 10 frames 50 ms apart: one event
+  wait_until_linked(pod, *driver);
+  for (int i = 0; i < 10; ++i) {  // 10 more frames 50 ms apart: still one event
     pod.send(protocol::GimbalAttitude{});
     std::this_thread::sleep_for(milliseconds(50));
   }
