@@ -11,6 +11,7 @@ import unittest
 import rospy
 import rostest
 import tf2_ros
+from diagnostic_msgs.msg import DiagnosticArray
 from dynamic_reconfigure.client import Client as ReconfigureClient
 from geometry_msgs.msg import QuaternionStamped
 from sensor_msgs.msg import Imu, JointState, NavSatFix, Range
@@ -200,6 +201,19 @@ class Telemetry(unittest.TestCase):
         self.assertTrue(wait_until(lambda: "gimbal hw" in self.diagnostics.status("link").hardware_id, 5.0),
                         "hardware id without versions: %s" % hardware_id)
         self.assertEqual(self.diagnostics.value("link", "checksum errors"), "0")
+
+    def test_diagnostic_aggregator_groups_the_driver(self):
+        # config/diagnostics.yaml, loaded into diagnostic_aggregator by telemetry.test.
+        aggregated = Recorder("/diagnostics_agg", DiagnosticArray)
+
+        def groups():
+            latest = aggregated.latest()
+            return {s.name: s for s in latest.status} if latest else {}
+
+        expected = ["/K40T pod/Link", "/K40T pod/Periodic reports", "/K40T pod/Sensors"]
+        self.assertTrue(wait_until(lambda: all(g in groups() and groups()[g].level == OK for g in expected), 10.0),
+                        "aggregated groups: %s" % {n: s.level for n, s in groups().items()})
+        aggregated.close()
 
 
 if __name__ == "__main__":
