@@ -11,6 +11,7 @@ import unittest
 
 import rospy
 import rostest
+from geometry_msgs.msg import Twist, Vector3Stamped
 from sensor_msgs.msg import JointState, NavSatFix
 from std_srvs.srv import Trigger
 
@@ -198,6 +199,32 @@ class Services(unittest.TestCase):
         restarted = self.gimbal.wait_for_match(lambda m: not m.gimbal_link_ok, 4.0, since=time.time() - 0.5)
         self.assertIsNotNone(restarted, "gimbal/status never showed the restart")
         self.assertTrue(wait_until(lambda: self.gimbal.latest().gimbal_link_ok, 15.0))
+
+    def test_cmd_angle_and_cmd_rate_dead_man(self):
+        angle_pub = rospy.Publisher(name("gimbal/cmd_angle"), Vector3Stamped, queue_size=1)
+        rate_pub = rospy.Publisher(name("gimbal/cmd_rate"), Twist, queue_size=1)
+        wait_until(lambda: angle_pub.get_num_connections() > 0 and rate_pub.get_num_connections() > 0, 5.0)
+        target = Vector3Stamped()
+        target.vector.y, target.vector.z = 0.4, -0.2  # down 0.4 rad, right 0.2 rad
+        angle_pub.publish(target)
+        self.assertTrue(self.wait_joint(2, 0.4) and self.wait_joint(0, -0.2), "cmd_angle not followed")
+
+        twist = Twist()
+        twist.angular.z = 0.2  # turn left at 0.2 rad/s
+        start_yaw = self.joints.latest().position[0]
+        for _ in range(15):  # 1.5 s of commands at 10 Hz
+            rate_pub.publish(twist)
+            time.sleep(0.1)
+        stopped_at = time.time()
+        time.sleep(1.5)
+        self.assertGreater(self.joints.latest().position[0], start_yaw + 0.1, "cmd_rate did not turn left")
+        # The dead-man: no command for 0.5 s stops the gimbal; allow one report period and the ACK.
+        moving = [(t, m.position[0]) for t, m in self.joints.items if t >= stopped_at]
+        last_move = max((t for (t, y), (_, y_prev) in zip(moving[1:], moving) if abs(y - y_prev) > 1e-4),
+                        default=stopped_at)
+        self.assertLess(last_move - stopped_at, 0.5 + 0.35, "the gimbal kept turning %.2f s after the last cmd_rate"
+                        % (last_move - stopped_at))
+        self.call_ok("gimbal/center", Trigger)
 
     # --- thermal and laser -----------------------------------------------------------------
     def test_set_palette_is_read_back(self):
