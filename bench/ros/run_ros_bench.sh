@@ -7,7 +7,7 @@
 #   3. CPU and RSS of the driver at full telemetry over BENCH_SECONDS (default 60; target <= 1 %
 #      of a core and <= 30 MB)
 # Runs on its own ROS master port. Expects a build (scripts/build.sh ros).
-set -uo pipefail
+set -o pipefail
 source "$(dirname "$0")/../../scripts/ros_env.sh"
 port="${BENCH_ROS_PORT:-11911}"
 export ROS_MASTER_URI="http://127.0.0.1:$port"
