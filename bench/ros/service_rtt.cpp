@@ -28,6 +28,8 @@ int main(int argc, char** argv) {
   auto call = [&](int i, double* elapsed_ms) {
     k40t_driver::SetPalette srv;
     srv.request.palette = static_cast<uint8_t>(1 + i % 20);
+    // A persistent connection (no per-call handshake) is dropped after a failure: make a new one.
+    if (!client.isValid()) client = nh.serviceClient<k40t_driver::SetPalette>("set_palette", true);
     const auto start = std::chrono::steady_clock::now();
     const bool called = client.call(srv);
     *elapsed_ms =
