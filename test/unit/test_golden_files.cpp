@@ -1,133 +1,123 @@
-// Every hand-written frame of test/data/golden/*.txt (see golden_file.h for the format): the
-// parser accepts it as one good frame with header_excluded coverage, the catalogue knows its id
-// under the name and section the entry gives, the addresses fit the message's direction, and the
-// catalogue's decoder reports exactly the fields of the '=' line.
+// Every golden frame in test/data/golden/*.txt (format: test/data/golden/README.md), written by
+// hand from the document, against the parser, the catalogue's decoders and encode_args().
 #include <gtest/gtest.h>
 
-#include <dirent.h>
-
 #include <algorithm>
-#include <set>
+#include <filesystem>
 #include <string>
 #include <vector>
 
-#include "field_recorder.h"
 #include "golden_file.h"
 #include "k40t_driver/protocol/catalogue.h"
-#include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/parser.h"
 
-namespace k40t::protocol {
+namespace k40t::test {
 namespace {
-
-using testing::FieldRecorder;
-using testing::GoldenFrame;
-
-const std::string kGoldenDir = std::string(K40T_TEST_DATA_DIR) + "/golden";
 
 std::vector<std::string> golden_files() {
   std::vector<std::string> files;
-  if (DIR* dir = opendir(kGoldenDir.c_str())) {
-    while (const dirent* e = readdir(dir)) {
-      const std::string name = e->d_name;
-      if (name.size() > 4 && name.compare(name.size() - 4, 4, ".txt") == 0)
-        files.push_back(kGoldenDir + "/" + name);
-    }
-    closedir(dir);
+  for (const auto& entry : std::filesystem::directory_iterator(K40T_TEST_DATA_DIR "/golden")) {
+    if (entry.path().extension() == ".txt") files.push_back(entry.path().string());
   }
   std::sort(files.begin(), files.end());
   return files;
 }
 
-std::vector<GoldenFrame> all_golden_frames() {
-  std::vector<GoldenFrame> all;
-  for (const std::string& file : golden_files()) {
-    std::string error;
-    std::vector<GoldenFrame> frames = testing::load_golden_file(file, &error);
-    EXPECT_EQ(error, "");
-    all.insert(all.end(), frames.begin(), frames.end());
-  }
-  return all;
-}
-
-// The one good frame `bytes` parse to (header_excluded coverage), or a failure.
-::testing::AssertionResult parses_as_one_frame(const std::vector<uint8_t>& bytes,
-                                               FrameHeader* header, std::vector<uint8_t>* payload) {
-  FrameParser parser(CrcCoverage::kHeaderExcluded);
-  int count = 0;
-  parser.feed(bytes.data(), bytes.size(), [&](const FrameView& f) {
-    ++count;
-    *header = f.header;
-    payload->assign(f.payload, f.payload + f.payload_size);
+// The checks of one frame; failures are reported with the frame's file and line.
+void check_frame(const GoldenFrame& golden) {
+  SCOPED_TRACE(golden.where);
+  const protocol::CodecOptions codec;
+  protocol::FrameParser parser(protocol::CrcCoverage::kHeaderExcluded);
+  std::vector<protocol::FrameHeader> headers;
+  std::vector<std::vector<uint8_t>> payloads;
+  parser.feed(golden.bytes.data(), golden.bytes.size(), [&](const protocol::FrameView& f) {
+    headers.push_back(f.header);
+    payloads.emplace_back(f.payload, f.payload + f.payload_size);
   });
-  if (count != 1 || parser.stats().bytes_discarded != 0 || parser.stats().checksum_errors != 0) {
-    return ::testing::AssertionFailure()
-           << count << " frames, " << parser.stats().checksum_errors << " checksum errors, "
-           << parser.stats().bytes_discarded << " bytes discarded";
+  ASSERT_EQ(headers.size(), 1u) << "the bytes must hold exactly one frame (checksum errors: "
+                                << parser.stats().checksum_errors << ")";
+  EXPECT_EQ(parser.stats().bytes_discarded, 0u);
+  EXPECT_EQ(protocol::kFrameOverhead + payloads[0].size(), golden.bytes.size())
+      << "bytes after the frame";
+
+  const protocol::MessageInfo* info = protocol::find_message(headers[0].message_id);
+  ASSERT_NE(info, nullptr) << "the catalogue does not know "
+                           << protocol::display_name(headers[0].message_id);
+  DecodedFields decoded;
+  const Status described = info->describe(payloads[0].data(), payloads[0].size(), codec, decoded);
+  ASSERT_TRUE(described) << described.message();
+  for (const auto& [name, value] : golden.expected) {
+    const Status match = decoded.matches(name, value);
+    EXPECT_TRUE(match) << info->name << ": " << match.message();
   }
-  return ::testing::AssertionSuccess();
-}
 
-TEST(GoldenFiles, EveryEntryDecodesToItsExpectedFields) {
-  const std::vector<GoldenFrame> frames = all_golden_frames();
-  ASSERT_FALSE(frames.empty()) << "no golden frames under " << kGoldenDir;
-  for (const GoldenFrame& g : frames) {
-    SCOPED_TRACE(g.where());
-    FrameHeader header;
-    std::vector<uint8_t> payload;
-    ASSERT_TRUE(parses_as_one_frame(g.bytes, &header, &payload));
-
-    const MessageInfo* info = find_message(header.message_id);
-    ASSERT_NE(info, nullptr) << "id 0x" << std::hex << header.message_id
-                             << " is not in the catalogue";
-    EXPECT_EQ(g.name, info->name);
-    EXPECT_EQ(g.section, info->section);
-    // The host's end of a message is the host itself, or the flight controller it stands in for
-    // (0x000310 / 0x000320, section 3.2.4.15 and 3.2.4.24).
-    const Address host_end =
-        info->direction == Direction::kHostToPod ? header.source : header.destination;
-    EXPECT_TRUE(host_end == kHostAddress || host_end == kFlightControllerAddress)
-        << "a " << to_string(info->direction) << " message has the host (or flight controller) at "
-        << (info->direction == Direction::kHostToPod ? "its source" : "its destination");
-
-    FieldRecorder recorder;
-    const Status described =
-        info->describe(payload.data(), payload.size(), CodecOptions{}, recorder);
-    ASSERT_TRUE(described) << described.message();
-    EXPECT_EQ(testing::field_differences(g.expected, recorder.fields()), "");
+  if (info->direction == protocol::Direction::kHostToPod) {
+    Result<protocol::Payload> encoded = info->encode_args(golden.expected, codec);
+    ASSERT_TRUE(encoded) << encoded.error();
+    EXPECT_EQ(std::vector<uint8_t>(encoded->data(), encoded->data() + encoded->size), payloads[0])
+        << info->name
+        << ": encode_args of the expected fields differs from the hand-written payload";
   }
 }
 
-// A family's golden file must hold a frame for each of its catalogue ids (the generated plain ACK
-// entries excepted: one of them per file is enough).
-void expect_file_covers(const std::string& file, bool (*in_family)(MessageId)) {
-  std::string error;
-  const std::vector<GoldenFrame> frames =
-      testing::load_golden_file(kGoldenDir + "/" + file, &error);
-  ASSERT_EQ(error, "");
-  std::set<std::string> names;
-  bool has_plain_ack = false;
-  for (const GoldenFrame& g : frames) {
-    names.insert(g.name);
-    const MessageInfo* info = find_message(g.name);
-    has_plain_ack |= info != nullptr && info->describe == &describe_payload<PlainAck>;
+TEST(GoldenFiles, EveryFrameParsesDecodesAndReencodes) {
+  const std::vector<std::string> files = golden_files();
+  ASSERT_FALSE(files.empty()) << "no golden files in " << K40T_TEST_DATA_DIR "/golden";
+  size_t frames = 0;
+  for (const std::string& path : files) {
+    Result<std::vector<GoldenFrame>> parsed = read_golden_file(path);
+    ASSERT_TRUE(parsed) << "malformed golden file: " << parsed.error();
+    for (const GoldenFrame& golden : parsed.value()) check_frame(golden);
+    frames += parsed->size();
   }
-  EXPECT_TRUE(has_plain_ack) << file << " has no plain ACK frame";
-  for (const MessageInfo& m : catalogue()) {
-    if (!in_family(m.id) || m.describe == &describe_payload<PlainAck>) continue;
-    EXPECT_EQ(names.count(m.name), 1u) << file << " has no frame for " << m.name;
+  RecordProperty("golden_frames", static_cast<int>(frames));
+}
+
+TEST(GoldenFileReader, ReadsFramesOverSeveralLines) {
+  Result<std::vector<GoldenFrame>> frames = parse_golden_text(
+      "# comment\n\nFD 02\n04 01\n= a=1 b=\"two words\"\n# next\nFD\n=\n", "t.txt");
+  ASSERT_TRUE(frames) << frames.error();
+  ASSERT_EQ(frames->size(), 2u);
+  EXPECT_EQ(frames->at(0).bytes, (std::vector<uint8_t>{0xFD, 0x02, 0x04, 0x01}));
+  EXPECT_EQ(frames->at(0).where, "t.txt:3");
+  EXPECT_EQ(frames->at(0).expected.at("b"), "two words");
+  EXPECT_TRUE(frames->at(1).expected.empty());
+}
+
+TEST(GoldenFileReader, MalformedFilesFailWithFileAndLine) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"FD 02\n", "t.txt:1: the frame starting at t.txt:1 has no '=' line"},
+      {"= a=1\n", "t.txt:1: '=' line without"},
+      {"FD 0G\n= a=1\n", "t.txt:1: '0G' is not a hex byte"},
+      {"FD 002\n= a=1\n", "'002' is not a hex byte"},
+      {"FD\n= a\n", "t.txt:2: expected name=value"},
+      {"FD\n= a=1 a=2\n", "given twice"},
+      {"FD\n= a=\"open\n", "unterminated quote"},
+      {"# only comments\n", "no frames"},
+  };
+  for (const auto& [text, expected] : cases) {
+    Result<std::vector<GoldenFrame>> frames = parse_golden_text(text, "t.txt");
+    ASSERT_FALSE(frames) << text;
+    EXPECT_NE(frames.error().find(expected), std::string::npos) << frames.error();
   }
 }
 
-TEST(GoldenFiles, GimbalLaserSbusFileCoversEveryMessageOfItsFamilies) {
-  expect_file_covers("gimbal_laser_sbus.txt", [](MessageId id) {
-    const MessageId request = request_id_of(id);
-    const bool gimbal_report = request == 0x000001 || request == 0x000002;  // 0x03..0x0F: camera's
-    const bool gimbal_request = request >= 0x000010 && request <= 0x0000FF;
-    const bool laser_or_sbus = request >= 0x000400 && request <= 0x0005FF;
-    return gimbal_report || gimbal_request || laser_or_sbus;
-  });
+TEST(GoldenFileReader, FieldComparisonNamesTheMismatch) {
+  DecodedFields fields;
+  fields.real("distance_m", 12.3);
+  fields.enumeration("code", 8, "busy (repeated request)");
+  fields.bytes("ip", std::vector<uint8_t>{192, 168, 144, 64}.data(), 4);
+  EXPECT_TRUE(fields.matches("distance_m", "12.3"));
+  EXPECT_TRUE(fields.matches("code", "8"));
+  EXPECT_TRUE(fields.matches("code", "Busy_Repeated_Request"));
+  EXPECT_TRUE(fields.matches("ip", "192.168.144.64"));
+  EXPECT_EQ(fields.matches("distance_m", "12.4").message(),
+            "field 'distance_m': expected 12.4, decoded 12.300000000000001");
+  EXPECT_FALSE(fields.matches("code", "0"));
+  EXPECT_FALSE(fields.matches("ip", "192.168.144.65"));
+  EXPECT_NE(fields.matches("range_m", "1").message().find("its fields: distance_m, code, ip"),
+            std::string::npos);
 }
 
 }  // namespace
-}  // namespace k40t::protocol
+}  // namespace k40t::test
