@@ -17,6 +17,8 @@
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/protocol/messages/laser.h"
 #include "k40t_driver/protocol/messages/sbus.h"
+#include "k40t_driver/protocol/messages/thermal.h"
+#include "k40t_driver/protocol/messages/visible.h"
 #include "null_sink.h"
 
 namespace {
@@ -120,6 +122,38 @@ constexpr RoundTrip kRoundTrips[] = {
     entry<CameraGpsAck>(),
     entry<TargetGpsRequest>(),
     entry<TargetGpsAck>(),
+    // thermal and visible families (thermal.h, visible.h)
+    entry<ThermalStatus>(),
+    entry<ThermalSettingsAck>(),
+    entry<ThermalReadSettingsRequest>(),
+    entry<ThermalZoomRequest>(),
+    entry<ThermalPaletteRequest>(),
+    entry<ThermalMeasurementRequest>(),
+    entry<ThermalSharpnessRequest>(),
+    entry<ThermalBrightnessRequest>(),
+    entry<ThermalContrastRequest>(),
+    entry<ThermalDenoiseRequest>(),
+    entry<ThermalEnhancementRequest>(),
+    entry<ThermalSpotRequest>(),
+    entry<ThermalAreaRequest>(),
+    entry<ThermalGainModeRequest>(),
+    entry<ThermalAlarmsRequest>(),
+    entry<ThermalOverlayRequest>(),
+    entry<ThermalThresholdAlarmRequest>(),
+    entry<VisibleStatus>(),
+    entry<VisibleSettingsAck>(),
+    entry<VisibleReadSettingsRequest>(),
+    entry<VisibleVideoResolutionRequest>(),
+    entry<VisiblePhotoResolutionRequest>(),
+    entry<VisibleIsoRequest>(),
+    entry<VisibleShutterRequest>(),
+    entry<VisibleEvRequest>(),
+    entry<VisibleWhiteBalanceRequest>(),
+    entry<VisibleAntiFlickerRequest>(),
+    entry<VisibleStrongLightRequest>(),
+    entry<VisibleBacklightRequest>(),
+    entry<VisibleAeLockRequest>(),
+    entry<VisibleMeteringRequest>(),
 };
 
 }  // namespace

@@ -3,7 +3,7 @@
 
     scripts/make_fuzz_corpus.py OUT_DIR [GOLDEN_DIR]
 
-Reads every test/data/golden/*.txt (format in test/unit/golden_file.h), keeps the frames whose
+Reads every test/data/golden/*.txt (format in test/data/golden/README.md), keeps the frames whose
 checksum is valid (checked with test/data/frame_crc.py's transcription of the document's
 routine) and writes:
   OUT_DIR/fuzz_parser/    each frame alone, the same frame re-checksummed with whole-frame
@@ -17,32 +17,33 @@ coverage mode.
 import glob
 import os
 import random
-import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "test", "data"))
 from frame_crc import crc_calculate  # noqa: E402
 
 HEADER_EXCLUDED, WHOLE_FRAME, AUTO = 0, 1, 2
-TITLE = re.compile(r"^# (\d+(?:\.\d+)+) (\w+):")  # starts an entry; other '#' lines are comments
 
 
 def golden_frames(golden_dir):
+    """The frames of every golden file: hex lines up to an '=' line; '#' lines are comments
+    (test/data/golden/README.md)."""
     frames = []
     for path in sorted(glob.glob(os.path.join(golden_dir, "*.txt"))):
-        current = None
+        current = bytearray()
         for line in open(path, encoding="utf-8"):
             line = line.strip()
-            if TITLE.match(line):
-                current = bytearray()
-            elif line.startswith("#"):
+            if not line or line.startswith("#"):
                 continue
-            elif line.startswith("="):
+            if line.startswith("="):
                 if current:
                     frames.append(bytes(current))
-                current = None
-            elif line and current is not None:
-                current += bytes.fromhex(line)
+                current = bytearray()
+            else:
+                try:
+                    current += bytes.fromhex(line)
+                except ValueError:
+                    current = bytearray()  # malformed: the golden-file test reports it
     return frames
 
 

@@ -10,35 +10,47 @@
 #include <vector>
 
 #include "field_recorder.h"
-#include "golden_entry_reader.h"
+#include "golden_frames.h"
+#include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/frame.h"
 #include "k40t_driver/protocol/message.h"
 #include "k40t_driver/protocol/messages/ack.h"
 
 namespace k40t::testing {
 
-inline std::vector<GoldenFrame> load_golden_or_fail(const std::string& file) {
-  std::string error;
-  auto loaded = load_golden_file(std::string(K40T_TEST_DATA_DIR) + "/golden/" + file, &error);
-  EXPECT_EQ(error, "");
-  return loaded;
-}
+using test::GoldenFrame;
 
-// The entries of test/data/golden/gimbal_laser_sbus.txt, read once.
+// The frames of test/data/golden/gimbal_laser_sbus.txt, read once with the shared reader.
 inline const std::vector<GoldenFrame>& gimbal_laser_sbus_golden() {
-  static const std::vector<GoldenFrame> frames = load_golden_or_fail("gimbal_laser_sbus.txt");
+  static const std::vector<GoldenFrame> frames = [] {
+    auto read =
+        test::read_golden_file(std::string(K40T_TEST_DATA_DIR) + "/golden/gimbal_laser_sbus.txt");
+    EXPECT_TRUE(read) << read.error();
+    return read ? read.value() : std::vector<GoldenFrame>{};
+  }();
   return frames;
 }
 
-// The `index`-th golden frame of this family called `name`; fails the test if there is none.
+inline protocol::MessageId id_of(const GoldenFrame& g) {
+  return g.bytes.size() < protocol::kHeaderSize ? 0
+                                                : g.bytes[7] | g.bytes[8] << 8 | g.bytes[9] << 16;
+}
+
+// The `index`-th golden frame (0-based) of the message the catalogue calls `name`; fails the test
+// if there is none.
 inline const GoldenFrame& golden(const std::string& name, size_t index = 0) {
-  const GoldenFrame* g = find_golden(gimbal_laser_sbus_golden(), name, index);
-  if (g == nullptr) {
-    ADD_FAILURE() << "no golden frame " << name << " #" << index;
-    static const GoldenFrame kEmpty;
+  static const GoldenFrame kEmpty;
+  const protocol::MessageInfo* info = protocol::find_message(name);
+  if (info == nullptr) {
+    ADD_FAILURE() << "the catalogue has no message " << name;
     return kEmpty;
   }
-  return *g;
+  size_t seen = 0;
+  for (const GoldenFrame& g : gimbal_laser_sbus_golden()) {
+    if (id_of(g) == info->id && seen++ == index) return g;
+  }
+  ADD_FAILURE() << "no golden frame " << name << " #" << index;
+  return kEmpty;
 }
 
 inline std::vector<uint8_t> payload_of(const GoldenFrame& g) {
@@ -55,16 +67,16 @@ Result<T> decode_bytes(const std::vector<uint8_t>& payload, const protocol::Code
 // Decodes the golden frame's payload as T (and checks the frame's id is T's).
 template <class T>
 T decode_golden(const GoldenFrame& g, const protocol::CodecOptions& o = {}) {
-  EXPECT_GE(g.bytes.size(), protocol::kFrameOverhead) << g.where();
+  EXPECT_GE(g.bytes.size(), protocol::kFrameOverhead) << g.where;
   if (g.bytes.size() < protocol::kFrameOverhead) return T{};
-  const protocol::MessageId id = g.bytes[7] | g.bytes[8] << 8 | g.bytes[9] << 16;
+  const protocol::MessageId id = id_of(g);
   if constexpr (std::is_same_v<T, protocol::PlainAck>) {
-    EXPECT_EQ(protocol::kind_of(id), protocol::MessageKind::kAck) << g.where();  // any 0x01xxxx
+    EXPECT_EQ(protocol::kind_of(id), protocol::MessageKind::kAck) << g.where;  // any 0x01xxxx
   } else {
-    EXPECT_EQ(id, T::kId) << g.where();
+    EXPECT_EQ(id, T::kId) << g.where;
   }
   Result<T> decoded = decode_bytes<T>(payload_of(g), o);
-  EXPECT_TRUE(decoded) << g.where() << ": " << decoded.error();
+  EXPECT_TRUE(decoded) << g.where << ": " << decoded.error();
   return decoded ? decoded.value() : T{};
 }
 
@@ -92,7 +104,7 @@ std::vector<uint8_t> encode_like(const T& message, const GoldenFrame& g,
 template <class T>
 void expect_encodes_to(const T& message, const GoldenFrame& g,
                        const protocol::CodecOptions& o = {}) {
-  EXPECT_EQ(encode_like(message, g, o), g.bytes) << g.where();
+  EXPECT_EQ(encode_like(message, g, o), g.bytes) << g.where;
 }
 
 // encode -> decode gives back every field.
