@@ -1,5 +1,7 @@
 #include "k40t_driver/sim/control_commands.h"
 
+#include "k40t_driver/sim/number_text.h"
+
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -23,19 +25,8 @@ std::string error(const std::string& why) {
   return "error: " + why;
 }
 
-// A number in [lo, hi], or an error naming the argument.
 Result<double> number(const std::string& text, const char* what, double lo, double hi) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || end == text.c_str() || *end != '\0' || !std::isfinite(v)) {
-    return Status::fail(std::string(what) + " must be a number, got '" + text + "'");
-  }
-  if (v < lo || v > hi) {
-    std::ostringstream range;
-    range << what << " must be " << lo << ".." << hi << ", got " << text;
-    return Status::fail(range.str());
-  }
-  return v;
+  return parse_number_in(text, what, lo, hi);
 }
 
 std::chrono::milliseconds millis(double seconds) {
