@@ -21,6 +21,7 @@ struct CameraSettings {
   uint8_t stream_bitrate = 5;         // 1..6: 1, 1.5, 2, 4, 8, 12 Mbit/s
   uint8_t image_mode = 5;             // 0 IR, 5/6 visible, 7 split screen
   bool watermark = false;
+  uint16_t precise_focal_length_raw = 0;  // last 0x000307's focal length, reported by 0x000005
 };
 
 // Visible camera (3.2.3).

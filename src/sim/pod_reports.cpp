@@ -1,0 +1,151 @@
+#include "k40t_driver/sim/pod_reports.h"
+
+#include <cmath>
+
+#include "code_mapping.h"
+#include "k40t_driver/protocol/messages/camera.h"
+#include "k40t_driver/protocol/messages/gimbal.h"
+
+namespace k40t::sim {
+
+namespace {
+
+using handlers::same_code;
+namespace p = protocol;
+
+bool always(const PodModel&) {
+  return true;
+}
+bool camera_up(const PodModel& pod) {
+  return pod.camera_available();
+}
+
+template <class Msg>
+Result<p::Payload> encode(const Msg& message, const p::CodecOptions& codec) {
+  return p::encode_payload(message, codec);
+}
+
+Result<p::Payload> gimbal_attitude(const PodModel& pod, const p::CodecOptions& codec) {
+  const GimbalPose pose = pod.gimbal().pose();
+  p::GimbalAttitude report;
+  report.joint_yaw_deg = pose.joint_yaw_deg;
+  report.joint_roll_deg = pose.joint_roll_deg;
+  report.joint_pitch_deg = pose.joint_pitch_deg;
+  report.yaw_deg = pod.attitude_yaw_deg();
+  report.roll_deg = pose.joint_roll_deg;
+  report.pitch_deg = pose.joint_pitch_deg;
+  report.yaw_rate_deg_s = pose.yaw_rate_deg_s;
+  report.pitch_rate_deg_s = pose.pitch_rate_deg_s;
+  report.roll_rate_deg_s = pose.roll_rate_deg_s;
+  return encode(report, codec);
+}
+
+Result<p::Payload> camera_system_status(const PodModel& pod, const p::CodecOptions& codec) {
+  const CameraSettings& s = pod.camera().settings();
+  const SdCard& sd = pod.camera().sd();
+  p::CameraSystemStatus report;
+  report.capture_mode = same_code<p::CaptureMode>(s.capture_mode);
+  report.stream_resolution = same_code<p::ReportedStreamResolution>(s.stream_resolution);
+  report.encoding = same_code<p::VideoEncoding>(s.stream_encoding);
+  report.image_mode = same_code<p::ImageMode>(s.image_mode);
+  report.bitrate = same_code<p::StreamBitrate>(s.stream_bitrate);
+  report.photo_mode = same_code<p::PhotoMode>(s.photo_mode);
+  report.time_lapse_interval_s = s.time_lapse_interval_s;
+  report.burst_count = s.burst_count;
+  report.sd_state = same_code<p::SdCardState>(sd.state());
+  // The wire counts 10 MB; round down so used + free never exceeds total.
+  const auto tens = [](double mb) {
+    return std::floor(mb / p::kSdCapacityUnitMb) * p::kSdCapacityUnitMb;
+  };
+  report.sd_total_mb = tens(sd.capacity_mb());
+  report.sd_free_mb = tens(sd.free_mb());
+  report.sd_used_mb = tens(sd.used_mb());
+  return encode(report, codec);
+}
+
+// One visitor per event kind: the status frame it becomes.
+struct EventEncoder {
+  const p::CodecOptions& codec;
+
+  std::optional<OutgoingMessage> wrap(p::MessageId id, const Result<p::Payload>& payload) const {
+    if (!payload) return std::nullopt;
+    return OutgoingMessage{id, *payload};
+  }
+  std::optional<OutgoingMessage> operator()(const ZoomStatusEvent& e) const {
+    p::ZoomStatus frame;
+    frame.progress = e.zooming ? p::ZoomProgress::kZooming : p::ZoomProgress::kDone;
+    return wrap(p::ZoomStatus::kId, encode(frame, codec));
+  }
+  std::optional<OutgoingMessage> operator()(const PhotoStatusEvent& e) const {
+    if (e.precise) {
+      p::PreciseReshootStatus frame;
+      frame.lens = same_code<p::PhotoLensMode>(e.lens_mode);
+      frame.state = same_code<p::ReshootState>(e.state);
+      return wrap(p::PreciseReshootStatus::kId, encode(frame, codec));
+    }
+    p::PhotoStatus frame;
+    frame.lens = same_code<p::PhotoLensMode>(e.lens_mode);
+    frame.state = same_code<p::PhotoState>(e.state);
+    frame.burst_count = e.count;
+    return wrap(p::PhotoStatus::kId, encode(frame, codec));
+  }
+  std::optional<OutgoingMessage> operator()(const RecordStatusEvent& e) const {
+    p::RecordStatus frame;
+    frame.lens = same_code<p::RecordLensMode>(e.lens_mode);
+    frame.state = same_code<p::RecordState>(e.state);
+    frame.recording_time_s = e.seconds;
+    return wrap(p::RecordStatus::kId, encode(frame, codec));
+  }
+  std::optional<OutgoingMessage> operator()(const FormatStatusEvent& e) const {
+    p::SdFormatStatus frame;
+    frame.state = same_code<p::SdFormatState>(e.state);
+    return wrap(p::SdFormatStatus::kId, encode(frame, codec));
+  }
+  std::optional<OutgoingMessage> operator()(const TfUpgradeStatusEvent& e) const {
+    p::TfCardUpgradeStatus frame;
+    frame.state = same_code<p::TfUpgradeState>(e.state);
+    return wrap(p::TfCardUpgradeStatus::kId, encode(frame, codec));
+  }
+  std::optional<OutgoingMessage> operator()(const MaintenanceEvent& e) const {
+    p::CameraUpgradeStatus report;
+    report.state = same_code<p::CameraUpgradeState>(e.state);
+    report.progress_percent = e.progress;
+    return wrap(p::CameraUpgradeStatus::kId, encode(report, codec));
+  }
+  std::optional<OutgoingMessage> operator()(const GpsRequestEvent&) const { return std::nullopt; }
+};
+
+}  // namespace
+
+const std::vector<PeriodicReport>& periodic_reports() {
+  static const std::vector<PeriodicReport> kReports = {
+      {p::GimbalAttitude::kId, 0.1, always, gimbal_attitude},
+      {p::CameraSystemStatus::kId, 1.0, camera_up, camera_system_status},
+  };
+  return kReports;
+}
+
+ReportScheduler::ReportScheduler() : next_due_s_(periodic_reports().size(), 0.0) {}
+
+std::vector<const PeriodicReport*> ReportScheduler::due(const PodModel& pod, double now_s) {
+  std::vector<const PeriodicReport*> out;
+  const auto& reports = periodic_reports();
+  for (size_t i = 0; i < reports.size(); ++i) {
+    if (!reports[i].active(pod)) {
+      next_due_s_[i] = now_s;  // first report as soon as it becomes active
+      continue;
+    }
+    if (now_s + 1e-9 < next_due_s_[i]) continue;
+    out.push_back(&reports[i]);
+    // Keep the cadence; after a stall, skip the missed slots rather than bursting.
+    next_due_s_[i] += reports[i].period_s;
+    if (next_due_s_[i] <= now_s) next_due_s_[i] = now_s + reports[i].period_s;
+  }
+  return out;
+}
+
+std::optional<OutgoingMessage> encode_event(const PodEvent& event, const p::CodecOptions& codec) {
+  return std::visit(EventEncoder{codec}, event);
+}
+
+}  // namespace k40t::sim
