@@ -10,6 +10,9 @@ namespace k40t::sim {
 namespace {
 constexpr double kImageWidthPx = 1920;   // 0x00002C coordinates: 1..1920, centre 960
 constexpr double kImageHeightPx = 1080;  // 1..1080, centre 540
+bool inside_image(double x_px, double y_px) {
+  return x_px >= 1 && x_px <= kImageWidthPx && y_px >= 1 && y_px <= kImageHeightPx;
+}
 }  // namespace
 
 void GimbalModel::Axis::aim(double where) {
@@ -50,7 +53,7 @@ GimbalModel::GimbalModel(const GimbalConfig& config) : config_(config) {
 }
 
 Outcome GimbalModel::ready_to_move() {
-  if (calibration_ || restarting()) return Outcome::kBusy;
+  if (calibration_ || restarting() || tracking_) return Outcome::kBusy;
   servo_on_ = true;
   return Outcome::kOk;
 }
@@ -103,8 +106,24 @@ Outcome GimbalModel::look_down() {
 }
 
 Outcome GimbalModel::point_at(Lens lens, double zoom, double x_px, double y_px) {
-  if (x_px < 1 || x_px > kImageWidthPx || y_px < 1 || y_px > kImageHeightPx)
-    return Outcome::kFailure;
+  if (!inside_image(x_px, y_px)) return Outcome::kFailure;
+  const Outcome ready = ready_to_move();
+  if (ready != Outcome::kOk) return ready;
+  return aim_at_pixel(lens, zoom, x_px, y_px);
+}
+
+Outcome GimbalModel::start_tracking(Lens lens, double zoom, double x_px, double y_px) {
+  if (calibration_ || restarting()) return Outcome::kBusy;
+  tracking_ = false;
+  const Outcome aimed = aim_at_pixel(lens, zoom, x_px, y_px);
+  if (aimed != Outcome::kOk) return aimed;
+  servo_on_ = true;
+  tracking_ = true;
+  return Outcome::kOk;
+}
+
+Outcome GimbalModel::aim_at_pixel(Lens lens, double zoom, double x_px, double y_px) {
+  if (!inside_image(x_px, y_px)) return Outcome::kFailure;
   const FieldOfView fov = field_of_view(lens, zoom);
   // The ray through the pixel, from where the camera looks now (targets, if still moving, would
   // be wrong: the user clicked on the image as it is).
@@ -115,8 +134,7 @@ Outcome GimbalModel::point_at(Lens lens, double zoom, double x_px, double y_px) 
                     std::tan(deg_to_rad(fov.vertical_deg / 2));
   const Vec3 ray = basis.forward + basis.right * nx + basis.up * ny;
   const double yaw = yaw_.angle + wrap_deg(yaw_of(ray) - yaw_.angle);
-  const Outcome ready = ready_to_move();
-  if (ready != Outcome::kOk) return ready;
+  servo_on_ = true;
   yaw_.aim(yaw);
   pitch_.aim(pitch_of(ray));
   return Outcome::kOk;

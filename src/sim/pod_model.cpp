@@ -90,7 +90,10 @@ Outcome PodModel::set_ai(bool on, uint8_t model, const std::array<uint8_t, 10>& 
   ai_.recognition_on = on;
   ai_.model = model;
   ai_.classes = classes;
-  if (!on) ai_.tracking = false;
+  if (!on) {
+    ai_.tracking = false;
+    gimbal_.stop_tracking();
+  }
   return Outcome::kOk;
 }
 
@@ -101,8 +104,17 @@ Outcome PodModel::set_tracking(bool on, const TrackingBox& box) {
              box.y + box.height > 1080)) {
     return Outcome::kFailure;
   }
-  ai_.tracking = on;
-  if (on) ai_.box = box;
+  if (!on) {
+    gimbal_.stop_tracking();
+    ai_.tracking = false;
+    return Outcome::kOk;
+  }
+  // The box is drawn on the telephoto picture as it is now.
+  const Outcome tracking = gimbal_.start_tracking(
+      Lens::kTele, zoom_.zoom(), box.x + box.width / 2.0, box.y + box.height / 2.0);
+  if (tracking != Outcome::kOk) return tracking;
+  ai_.tracking = true;
+  ai_.box = box;
   return Outcome::kOk;
 }
 

@@ -185,6 +185,20 @@ TEST(SimGimbal, SoftRestartGoesLimpThenReturnsToCentre) {
   EXPECT_DOUBLE_EQ(gimbal.pose().joint_yaw_deg, 0.0);
 }
 
+TEST(SimGimbal, TrackingHoldsTheBoxAndRefusesManualMotion) {
+  GimbalModel gimbal;
+  EventQueue events;
+  ASSERT_EQ(gimbal.set_dial_speed(30, 30), Outcome::kOk);
+  ASSERT_EQ(gimbal.start_tracking(Lens::kTele, 1.0, 1920, 540), Outcome::kOk);
+  EXPECT_TRUE(gimbal.tracking());
+  EXPECT_NEAR(gimbal.yaw_target_deg(), field_of_view(Lens::kTele, 1).horizontal_deg / 2, 1e-6);
+  EXPECT_EQ(gimbal.centre(), Outcome::kBusy);
+  EXPECT_EQ(gimbal.move(YawMotion::kLeft, PitchMotion::kStop), Outcome::kBusy);
+  advance(gimbal, 2.0, events);
+  gimbal.stop_tracking();
+  EXPECT_EQ(gimbal.centre(), Outcome::kOk);
+}
+
 TEST(SimGeometry, WrapAndDirectionsAreConsistent) {
   EXPECT_DOUBLE_EQ(wrap_deg(190), -170);
   EXPECT_DOUBLE_EQ(wrap_deg(-180), 180);

@@ -99,6 +99,12 @@ TEST(SimPod, SystemSettingsAreCheckedAndStored) {
   EXPECT_EQ(pod.set_tracking(true, TrackingBox{1900, 100, 50, 50}), Outcome::kFailure);
   EXPECT_EQ(pod.set_tracking(true, TrackingBox{100, 100, 50, 50}), Outcome::kOk);
   EXPECT_TRUE(pod.ai().tracking);
+  EXPECT_TRUE(pod.gimbal().tracking());
+  EXPECT_LT(pod.gimbal().yaw_target_deg(), 0);    // the box is left of centre
+  EXPECT_GT(pod.gimbal().pitch_target_deg(), 0);  // and above it
+  EXPECT_EQ(pod.gimbal().centre(), Outcome::kBusy);
+  ASSERT_EQ(pod.set_tracking(false, TrackingBox{}), Outcome::kOk);
+  EXPECT_EQ(pod.gimbal().centre(), Outcome::kOk);
   NetworkSettings network;
   network.address = {10, 0, 0, 7};
   ASSERT_EQ(pod.set_network(network), Outcome::kOk);

@@ -62,6 +62,11 @@ class GimbalModel {
   // 0x00002C: turn so that pixel (x, y) of a 1920x1080 image taken with `lens` at hybrid `zoom`
   // comes to the image centre.
   Outcome point_at(Lens lens, double zoom, double x_px, double y_px);
+  // 0x000324 box tracking: turns to the box centre (as point_at) and holds it; manual motion is
+  // refused (kBusy) until tracking stops ("send the off command to return to normal mode").
+  Outcome start_tracking(Lens lens, double zoom, double x_px, double y_px);
+  void stop_tracking() { tracking_ = false; }
+  bool tracking() const { return tracking_; }
   Outcome servo_off();                 // 0x00002D: motors off; any motion command turns them on
   Outcome set_stabilisation(bool on);  // 0x000033
   Outcome start_calibration(CalibrationKind kind);  // 0x000013, 0x00002E, 0x000031
@@ -103,7 +108,8 @@ class GimbalModel {
     double next_report_s = 0;
   };
 
-  Outcome ready_to_move();  // refuses while calibrating/restarting; turns the servo on
+  Outcome ready_to_move();  // refuses while calibrating/restarting/tracking; turns the servo on
+  Outcome aim_at_pixel(Lens lens, double zoom, double x_px, double y_px);
   static void set_motion(Axis& axis, bool negative, bool positive);
 
   GimbalConfig config_;
@@ -113,6 +119,7 @@ class GimbalModel {
   bool servo_on_ = true;
   bool stabilisation_enabled_ = true;
   bool use_fc_attitude_ = false;
+  bool tracking_ = false;
   double restart_left_s_ = 0;
   std::optional<Calibration> calibration_;
 };
