@@ -31,7 +31,9 @@ PodModel::PodModel(const PodConfig& config)
       gimbal_(config.gimbal),
       zoom_(config.zoom),
       laser_(config.laser),
-      camera_(config.camera) {}
+      camera_(config.camera) {
+  update_auto_exposure();
+}
 
 double PodModel::boresight_yaw_deg() const {
   return vehicle_.yaw_deg + gimbal_.pose().joint_yaw_deg;
@@ -157,12 +159,14 @@ void PodModel::step(double dt_s) {
   gimbal_.step(dt_s, events_);
   zoom_.step(dt_s, events_);
   camera_.step(dt_s, zoom_.zooming() || zoom_.focusing(), events_);
-  if (!camera_.visible().ae_lock) {
-    // Auto exposure: the sky is brighter than the ground; EV shifts the choice by whole stops.
-    const bool sky = world_.trace(direction(boresight_yaw_deg(), boresight_pitch_deg())).surface ==
-                     Surface::kSky;
-    locked_shutter_us_ = (sky ? 500.0 : 2000.0) * std::pow(2.0, ev_stops(camera_.visible().ev));
-  }
+  if (!camera_.visible().ae_lock) update_auto_exposure();
+}
+
+void PodModel::update_auto_exposure() {
+  // The sky is brighter than the ground; EV shifts the choice by whole stops.
+  const bool sky =
+      world_.trace(direction(boresight_yaw_deg(), boresight_pitch_deg())).surface == Surface::kSky;
+  locked_shutter_us_ = (sky ? 500.0 : 2000.0) * std::pow(2.0, ev_stops(camera_.visible().ev));
 }
 
 EventQueue PodModel::take_events() {

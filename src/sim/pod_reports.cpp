@@ -5,6 +5,8 @@
 #include "code_mapping.h"
 #include "k40t_driver/protocol/messages/camera.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
+#include "k40t_driver/protocol/messages/thermal.h"
+#include "k40t_driver/protocol/messages/visible.h"
 
 namespace k40t::sim {
 
@@ -18,6 +20,9 @@ bool always(const PodModel&) {
 }
 bool camera_up(const PodModel& pod) {
   return pod.camera_available();
+}
+bool measuring(const PodModel& pod) {
+  return pod.camera_available() && pod.thermal().settings().measurement_on;
 }
 
 template <class Msg>
@@ -60,6 +65,45 @@ Result<p::Payload> camera_system_status(const PodModel& pod, const p::CodecOptio
   report.sd_total_mb = tens(sd.capacity_mb());
   report.sd_free_mb = tens(sd.free_mb());
   report.sd_used_mb = tens(sd.used_mb());
+  return encode(report, codec);
+}
+
+Result<p::Payload> thermal_status(const PodModel& pod, const p::CodecOptions& codec) {
+  const ThermalStats stats = pod.thermal_stats();
+  p::ThermalStatus report;
+  report.max_degC = stats.max_degC;
+  report.min_degC = stats.min_degC;
+  report.center_degC = stats.centre_degC;
+  report.point_degC = stats.spot_degC;
+  report.average_degC = stats.average_degC;
+  report.max_x_px = static_cast<uint16_t>(stats.max_at.x);
+  report.max_y_px = static_cast<uint16_t>(stats.max_at.y);
+  report.min_x_px = static_cast<uint16_t>(stats.min_at.x);
+  report.min_y_px = static_cast<uint16_t>(stats.min_at.y);
+  report.center_x_px = static_cast<uint16_t>(stats.centre_at.x);
+  report.center_y_px = static_cast<uint16_t>(stats.centre_at.y);
+  report.point_x_px = static_cast<uint16_t>(stats.spot_at.x);
+  report.point_y_px = static_cast<uint16_t>(stats.spot_at.y);
+  report.high_alarm = stats.high_alarm;
+  report.low_alarm = stats.low_alarm;
+  report.difference_alarm = stats.difference_alarm;
+  report.threshold_alarm = stats.threshold_alarm;
+  return encode(report, codec);
+}
+
+Result<p::Payload> visible_status(const PodModel& pod, const p::CodecOptions& codec) {
+  const Exposure exposure = pod.exposure();
+  p::VisibleStatus report;
+  report.zooming = pod.zoom().zooming();
+  report.focal_length_mm = pod.zoom().focal_length_mm();
+  report.zoom_x = pod.zoom().zoom();
+  report.ev = same_code<p::ExposureValue>(exposure.ev_code);
+  report.iso_db = exposure.iso_db;
+  report.shutter_us = static_cast<uint16_t>(std::lround(exposure.shutter_us));
+  report.ae_lock_on = pod.camera().visible().ae_lock;
+  report.focusing = pod.zoom().focusing();
+  // The document gives this field no unit; read as 0.01 mm like the focal length.
+  report.precise_shot_focal_length_mm = pod.camera().settings().precise_focal_length_raw / 100.0;
   return encode(report, codec);
 }
 
@@ -121,6 +165,8 @@ const std::vector<PeriodicReport>& periodic_reports() {
   static const std::vector<PeriodicReport> kReports = {
       {p::GimbalAttitude::kId, 0.1, always, gimbal_attitude},
       {p::CameraSystemStatus::kId, 1.0, camera_up, camera_system_status},
+      {p::ThermalStatus::kId, 0.2, measuring, thermal_status},
+      {p::VisibleStatus::kId, 0.2, camera_up, visible_status},
   };
   return kReports;
 }

@@ -5,6 +5,8 @@
 
 #include "k40t_driver/protocol/messages/camera.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
+#include "k40t_driver/protocol/messages/thermal.h"
+#include "k40t_driver/protocol/messages/visible.h"
 #include "sim_pod_harness.h"
 
 namespace k40t::sim {
@@ -30,6 +32,8 @@ TEST(SimReports, RatesAreTheDocuments) {
   const std::map<p::MessageId, int> expected_per_10s = {
       {p::GimbalAttitude::kId, 100},     // 10 Hz
       {p::CameraSystemStatus::kId, 10},  // 1 Hz
+      {p::ThermalStatus::kId, 50},       // 5 Hz
+      {p::VisibleStatus::kId, 50},       // 5 Hz
   };
   for (const auto& [id, count] : expected_per_10s) {
     ASSERT_TRUE(sent.count(id)) << std::hex << id;

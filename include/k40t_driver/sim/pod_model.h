@@ -155,6 +155,7 @@ class PodModel {
 
  private:
   void restore_defaults();
+  void update_auto_exposure();
 
   PodConfig config_;
   World world_;
