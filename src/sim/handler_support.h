@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "code_mapping.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/sim/request_handlers.h"
 
@@ -73,6 +74,16 @@ HandlerEntry store(Store store_fn) {
   return plain<Req>([store_fn](PodModel& pod, const Req& req) {
     store_fn(pod, req);
     return Outcome::kOk;
+  });
+}
+
+// A setting the model only stores, field to field (codes pass through: same_code()):
+// settings(pod).*field = request.*value.
+template <class Req, class Settings, class Field, class Value>
+HandlerEntry stored_setting(Settings& (*settings)(PodModel&), Field Settings::*field,
+                            Value Req::*value) {
+  return store<Req>([settings, field, value](PodModel& pod, const Req& req) {
+    settings(pod).*field = same_code<Field>(req.*value);
   });
 }
 

@@ -32,31 +32,38 @@ p::VisibleSettingsAck read_all(RequestContext& ctx, const p::VisibleReadSettings
   return ack;
 }
 
-// A one-byte visible setting the model only stores.
+VisibleSettings& visible_settings(PodModel& pod) {
+  return pod.camera().visible();
+}
+
 template <class Req, class Field, class Value>
 HandlerEntry visible_setting(Field VisibleSettings::*field, Value Req::*value) {
-  return store<Req>([field, value](PodModel& pod, const Req& req) {
-    pod.camera().visible().*field = same_code<Field>(req.*value);
-  });
+  return stored_setting<Req>(visible_settings, field, value);
 }
 
 }  // namespace
 
 void add_visible_handlers(std::vector<HandlerEntry>& out) {
   out.push_back(with_data<p::VisibleReadSettingsRequest>(read_all));
-  out.push_back(visible_setting(&VisibleSettings::video_resolution, &p::VisibleVideoResolutionRequest::video_resolution));
-  out.push_back(visible_setting(&VisibleSettings::photo_resolution, &p::VisiblePhotoResolutionRequest::photo_resolution));
+  out.push_back(visible_setting(&VisibleSettings::video_resolution,
+                                &p::VisibleVideoResolutionRequest::video_resolution));
+  out.push_back(visible_setting(&VisibleSettings::photo_resolution,
+                                &p::VisiblePhotoResolutionRequest::photo_resolution));
   out.push_back(visible_setting(&VisibleSettings::iso, &p::VisibleIsoRequest::iso));
   out.push_back(visible_setting(&VisibleSettings::shutter, &p::VisibleShutterRequest::shutter));
   out.push_back(visible_setting(&VisibleSettings::ev, &p::VisibleEvRequest::ev));
-  out.push_back(visible_setting(&VisibleSettings::white_balance, &p::VisibleWhiteBalanceRequest::white_balance));
-  out.push_back(visible_setting(&VisibleSettings::anti_flicker, &p::VisibleAntiFlickerRequest::anti_flicker));
-  out.push_back(plain<p::VisibleStrongLightRequest>([](PodModel& pod, const p::VisibleStrongLightRequest& req) {
-    return pod.camera().set_strong_light(req.strong_light_on, req.strong_light_value);
-  }));
-  out.push_back(plain<p::VisibleBacklightRequest>([](PodModel& pod, const p::VisibleBacklightRequest& req) {
-    return pod.camera().set_backlight(req.backlight_on, req.backlight_value);
-  }));
+  out.push_back(visible_setting(&VisibleSettings::white_balance,
+                                &p::VisibleWhiteBalanceRequest::white_balance));
+  out.push_back(
+      visible_setting(&VisibleSettings::anti_flicker, &p::VisibleAntiFlickerRequest::anti_flicker));
+  out.push_back(plain<p::VisibleStrongLightRequest>(
+      [](PodModel& pod, const p::VisibleStrongLightRequest& req) {
+        return pod.camera().set_strong_light(req.strong_light_on, req.strong_light_value);
+      }));
+  out.push_back(
+      plain<p::VisibleBacklightRequest>([](PodModel& pod, const p::VisibleBacklightRequest& req) {
+        return pod.camera().set_backlight(req.backlight_on, req.backlight_value);
+      }));
   out.push_back(visible_setting(&VisibleSettings::ae_lock, &p::VisibleAeLockRequest::ae_lock_on));
   out.push_back(visible_setting(&VisibleSettings::metering, &p::VisibleMeteringRequest::metering));
 }
