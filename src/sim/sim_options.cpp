@@ -254,18 +254,42 @@ Result<SimOptions> parse_sim_options(const std::vector<std::string>& args) {
   return options;
 }
 
+namespace {
+// "  --name ARG   help..." with the help wrapped to `width` and aligned in one column.
+void append_option(std::ostringstream& out, const OptionSpec& spec) {
+  constexpr size_t kColumn = 30;
+  constexpr size_t kWidth = 100;
+  std::string head =
+      std::string("  ") + spec.name + (spec.argument ? std::string(" ") + spec.argument : "");
+  if (head.size() + 1 > kColumn) {
+    out << head << "\n";
+    head.clear();
+  }
+  head.resize(kColumn, ' ');
+  std::istringstream words(spec.help);
+  std::string line = head;
+  bool first = true;
+  for (std::string word; words >> word;) {
+    if (!first && line.size() + 1 + word.size() > kWidth) {
+      out << line << "\n";
+      line = std::string(kColumn, ' ');
+      first = true;
+    }
+    line += (first ? "" : " ") + word;
+    first = false;
+  }
+  out << line << "\n";
+}
+}  // namespace
+
 std::string sim_usage() {
   std::ostringstream out;
   out << "usage: k40t_sim [options]\n"
          "A simulated K40T gimbal pod: serves the pod's protocol with a physically consistent "
          "model\n"
-         "(gimbal, zoom, thermal scene, laser, camera and SD card) and misbehaves on demand.\n\n";
-  for (const OptionSpec& spec : option_table()) {
-    std::string head =
-        std::string("  ") + spec.name + (spec.argument ? std::string(" ") + spec.argument : "");
-    if (head.size() < 34) head.resize(34, ' ');
-    out << head << " " << spec.help << "\n";
-  }
+         "(gimbal, zoom, thermal scene, laser, camera and SD card) and misbehaves on demand.\n"
+         "See docs/simulator.md. Exit codes: 0, 1 could not start, 2 bad arguments.\n\n";
+  for (const OptionSpec& spec : option_table()) append_option(out, spec);
   out << "\nArguments of the form __name:=value (added by roslaunch) are ignored.\n";
   return out.str();
 }
