@@ -5,6 +5,7 @@
 #include "code_mapping.h"
 #include "k40t_driver/protocol/messages/camera.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
+#include "k40t_driver/protocol/messages/laser.h"
 #include "k40t_driver/protocol/messages/thermal.h"
 #include "k40t_driver/protocol/messages/visible.h"
 
@@ -24,10 +25,29 @@ bool camera_up(const PodModel& pod) {
 bool measuring(const PodModel& pod) {
   return pod.camera_available() && pod.thermal().settings().measurement_on;
 }
+bool ranging(const PodModel& pod) {
+  return pod.camera_available() && pod.laser().periodic();
+}
 
 template <class Msg>
 Result<p::Payload> encode(const Msg& message, const p::CodecOptions& codec) {
   return p::encode_payload(message, codec);
+}
+
+Result<p::Payload> gimbal_status(const PodModel& pod, const p::CodecOptions& codec) {
+  const auto link = [](bool ok) {
+    return ok ? p::GimbalLinkState::kNormal : p::GimbalLinkState::kAbnormal;
+  };
+  p::GimbalStatus report;
+  report.gimbal_link = link(pod.gimbal_link_ok());
+  report.camera_link = link(pod.camera_link_ok());
+  report.upgrade = same_code<p::GimbalUpgradeState>(pod.upgrade_status());
+  report.ir_ok = pod.self_test() & kSelfTestInfrared;
+  report.tele_ok = pod.self_test() & kSelfTestTele;
+  report.wide_ok = pod.self_test() & kSelfTestWide;
+  report.laser_ok = pod.self_test() & kSelfTestLaser;
+  report.stabilisation = same_code<p::GimbalStabilisationState>(pod.gimbal().stabilisation_state());
+  return encode(report, codec);
 }
 
 Result<p::Payload> gimbal_attitude(const PodModel& pod, const p::CodecOptions& codec) {
@@ -107,6 +127,12 @@ Result<p::Payload> visible_status(const PodModel& pod, const p::CodecOptions& co
   return encode(report, codec);
 }
 
+Result<p::Payload> periodic_range(const PodModel& pod, const p::CodecOptions& codec) {
+  p::LaserPeriodicRangeStatus report;
+  report.distance_m = pod.laser_range().value_or(0.0);  // 0: no return
+  return encode(report, codec);
+}
+
 // One visitor per event kind: the status frame it becomes.
 struct EventEncoder {
   const p::CodecOptions& codec;
@@ -163,10 +189,12 @@ struct EventEncoder {
 
 const std::vector<PeriodicReport>& periodic_reports() {
   static const std::vector<PeriodicReport> kReports = {
+      {p::GimbalStatus::kId, 0.5, always, gimbal_status},
       {p::GimbalAttitude::kId, 0.1, always, gimbal_attitude},
       {p::CameraSystemStatus::kId, 1.0, camera_up, camera_system_status},
       {p::ThermalStatus::kId, 0.2, measuring, thermal_status},
       {p::VisibleStatus::kId, 0.2, camera_up, visible_status},
+      {p::LaserPeriodicRangeStatus::kId, 1.0, ranging, periodic_range},
   };
   return kReports;
 }

@@ -5,6 +5,7 @@
 
 #include "k40t_driver/protocol/messages/camera.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
+#include "k40t_driver/protocol/messages/laser.h"
 #include "k40t_driver/protocol/messages/thermal.h"
 #include "k40t_driver/protocol/messages/visible.h"
 #include "sim_pod_harness.h"
@@ -28,12 +29,15 @@ std::map<p::MessageId, int> run_reports(PodModel& pod, double seconds) {
 
 TEST(SimReports, RatesAreTheDocuments) {
   PodModel pod;
+  pod.laser().set_periodic(true);
   const auto sent = run_reports(pod, 10.0);
   const std::map<p::MessageId, int> expected_per_10s = {
-      {p::GimbalAttitude::kId, 100},     // 10 Hz
-      {p::CameraSystemStatus::kId, 10},  // 1 Hz
-      {p::ThermalStatus::kId, 50},       // 5 Hz
-      {p::VisibleStatus::kId, 50},       // 5 Hz
+      {p::GimbalStatus::kId, 20},              // 2 Hz
+      {p::GimbalAttitude::kId, 100},           // 10 Hz
+      {p::CameraSystemStatus::kId, 10},        // 1 Hz
+      {p::ThermalStatus::kId, 50},             // 5 Hz
+      {p::VisibleStatus::kId, 50},             // 5 Hz
+      {p::LaserPeriodicRangeStatus::kId, 10},  // 1 Hz while periodic ranging is on
   };
   for (const auto& [id, count] : expected_per_10s) {
     ASSERT_TRUE(sent.count(id)) << std::hex << id;
