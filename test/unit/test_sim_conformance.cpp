@@ -31,7 +31,7 @@ SimOptions quick_pod() {
   options.pod.gimbal.drift_calibration_s = 1;
   options.pod.gimbal.linear_calibration_s = 1;
   options.pod.gimbal.accelerometer_calibration_s = 1;
-  options.pod.gimbal.restart_s = 0.5;
+  options.pod.gimbal.restart_s = 1.2;  // two 2 Hz gimbal status reports see it
   options.pod.camera_boot_s = 1;
   return options;
 }
