@@ -109,27 +109,15 @@ std::string run_seq_jump(const Args& args, ControlTarget& target) {
 }
 
 std::string run_sd(const Args& args, ControlTarget& target) {
-  using Change = void (*)(SdCard&);
-  static const std::vector<std::pair<const char*, Change>> kConditions = {
-      {"absent", [](SdCard& sd) { sd.remove(); }},
-      {"insert", [](SdCard& sd) { sd.insert(); }},
-      {"fill", [](SdCard& sd) { sd.fill(); }},
-      {"normal", [](SdCard& sd) { sd.set_fault(SdState::kNormal); }},
-      {"abnormal", [](SdCard& sd) { sd.set_fault(SdState::kAbnormal); }},
-      {"slow", [](SdCard& sd) { sd.set_fault(SdState::kSlow); }},
-      {"format-error", [](SdCard& sd) { sd.set_fault(SdState::kFormatError); }},
-  };
-  for (const auto& [name, change] : kConditions) {
-    if (args[0] != name) continue;
-    std::string state;
-    target.with_model([&, change = change](PodModel& pod) {
-      change(pod.camera().sd());
-      state = to_string(pod.camera().sd().state());
-    });
-    return "ok sd " + state;
-  }
-  return error("sd: unknown condition '" + args[0] +
-               "' (absent, insert, fill, normal, abnormal, slow, format-error)");
+  bool known = false;
+  std::string state;
+  target.with_model([&](PodModel& pod) {
+    known = set_sd_condition(pod.camera().sd(), args[0]);
+    state = to_string(pod.camera().sd().state());
+  });
+  if (!known)
+    return error("sd: unknown condition '" + args[0] + "' (" + sd_condition_names() + ")");
+  return "ok sd " + state;
 }
 
 std::string run_self_test(const Args& args, ControlTarget& target) {

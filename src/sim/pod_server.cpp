@@ -34,20 +34,11 @@ PodServer::PodServer(SimOptions options)
       faults_(options_.seed, options_.crc_coverage),
       pod_(options_.pod) {
   faults_.set_settings(options_.faults);
-  if (options_.sd_condition) apply_sd_condition(*options_.sd_condition);
+  if (options_.sd_condition) set_sd_condition(pod_.camera().sd(), *options_.sd_condition);
 }
 
 PodServer::~PodServer() {
   stop();
-}
-
-void PodServer::apply_sd_condition(const std::string& condition) {
-  SdCard& sd = pod_.camera().sd();
-  if (condition == "absent") sd.remove();
-  if (condition == "fill") sd.fill();
-  if (condition == "abnormal") sd.set_fault(SdState::kAbnormal);
-  if (condition == "slow") sd.set_fault(SdState::kSlow);
-  if (condition == "format-error") sd.set_fault(SdState::kFormatError);
 }
 
 Status PodServer::start() {

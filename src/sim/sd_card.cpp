@@ -1,6 +1,8 @@
 #include "k40t_driver/sim/sd_card.h"
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 
 namespace k40t::sim {
 
@@ -99,6 +101,40 @@ void SdCard::set_fault(SdState fault) {
       (fault == SdState::kAbnormal || fault == SdState::kSlow || fault == SdState::kFormatError)
           ? fault
           : SdState::kNormal;
+}
+
+namespace {
+using SdChange = void (*)(SdCard&);
+const std::vector<std::pair<std::string, SdChange>>& sd_conditions() {
+  static const std::vector<std::pair<std::string, SdChange>> kConditions = {
+      {"absent", [](SdCard& sd) { sd.remove(); }},
+      {"insert", [](SdCard& sd) { sd.insert(); }},
+      {"fill", [](SdCard& sd) { sd.fill(); }},
+      {"normal", [](SdCard& sd) { sd.set_fault(SdState::kNormal); }},
+      {"abnormal", [](SdCard& sd) { sd.set_fault(SdState::kAbnormal); }},
+      {"slow", [](SdCard& sd) { sd.set_fault(SdState::kSlow); }},
+      {"format-error", [](SdCard& sd) { sd.set_fault(SdState::kFormatError); }},
+  };
+  return kConditions;
+}
+}  // namespace
+
+bool set_sd_condition(SdCard& sd, const std::string& condition) {
+  for (const auto& [name, change] : sd_conditions()) {
+    if (name != condition) continue;
+    change(sd);
+    return true;
+  }
+  return false;
+}
+
+const std::string& sd_condition_names() {
+  static const std::string kNames = [] {
+    std::string names;
+    for (const auto& entry : sd_conditions()) names += (names.empty() ? "" : "|") + entry.first;
+    return names;
+  }();
+  return kNames;
 }
 
 }  // namespace k40t::sim

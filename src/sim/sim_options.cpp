@@ -104,16 +104,16 @@ const std::vector<OptionSpec>& option_table() {
        [](SimOptions& o, const std::string& option, const std::string& v) {
          return set_number(o.pod.camera.sd.capacity_mb, option, v, 64.0, 655350.0);
        }},
-      {"--sd", "absent|fill|abnormal|slow|format-error", "start with the SD card in this condition",
+      {"--sd", "CONDITION",
+       "start with the SD card absent, fill(ed), abnormal, slow or in format-error",
        [](SimOptions& o, const std::string& option, const std::string& v) {
-         for (const char* known : {"absent", "fill", "abnormal", "slow", "format-error"}) {
-           if (v == known) {
-             o.sd_condition = v;
-             return Status::ok();
-           }
+         SdCard probe;
+         if (!set_sd_condition(probe, v)) {
+           return Status::fail(option + ": expected one of " + sd_condition_names() + ", got '" +
+                               v + "'");
          }
-         return Status::fail(
-             option + ": expected absent, fill, abnormal, slow or format-error, got '" + v + "'");
+         o.sd_condition = v;
+         return Status::ok();
        }},
       {"--single-shot-status", nullptr,
        "send photo status frames for single shots too (the document sends none)",

@@ -69,7 +69,6 @@ class PodServer : public ControlTarget {
   void ask_for_gps(const GpsRequestEvent& request);
   void fire_scheduled_faults(SteadyClock::time_point now);
   void send_due_acks(SteadyClock::time_point now);
-  void apply_sd_condition(const std::string& condition);
 
   SimOptions options_;
   FaultInjector faults_;

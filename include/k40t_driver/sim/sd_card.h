@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "k40t_driver/sim/events.h"
 #include "k40t_driver/sim/outcome.h"
@@ -66,5 +67,11 @@ class SdCard {
   double since_status_s_ = 0;
   bool announce_ = false;  // "in progress" goes out at the first step of a format
 };
+
+// Conditions set by name from outside (command line --sd, control socket "sd"): absent, insert,
+// fill, normal, abnormal, slow, format-error. Returns false for an unknown name.
+bool set_sd_condition(SdCard& sd, const std::string& condition);
+// "absent|insert|fill|normal|abnormal|slow|format-error", for help texts and errors.
+const std::string& sd_condition_names();
 
 }  // namespace k40t::sim
