@@ -1,0 +1,110 @@
+#include "k40t_driver/psdk/catalogue.h"
+
+#include <algorithm>
+
+#include "k40t_driver/psdk/commands/all.h"
+
+namespace k40t::psdk {
+namespace {
+
+template <class T>
+CommandInfo info_of(CommandKey key, const std::string& name, const char* section) {
+  CommandInfo info;
+  info.key = key;
+  info.packet = T::kPacket;
+  info.name = name;
+  info.section = section;
+  info.min_size = min_data_size<T>();
+  info.max_size = max_data_size<T>();
+  info.encrypted = payload_encrypts(key);
+  info.describe = &describe_data<T>;
+  return info;
+}
+
+// Adds the command and, unless the document says it is not ACKed, its ACK.
+template <class Cmd>
+void add(std::vector<CommandInfo>& out) {
+  using Ack = typename Cmd::Ack;
+  CommandInfo command = info_of<Cmd>(Cmd::key(), Cmd::kName, Cmd::kSection);
+  command.sender = Cmd::kSender;
+  command.acked = !std::is_same_v<Ack, NoAck>;
+  out.push_back(command);
+  if constexpr (std::is_same_v<Ack, PlainAck>) {
+    CommandInfo ack =
+        info_of<PlainAck>(Cmd::key(), std::string(Cmd::kName) + "_ack", Cmd::kSection);
+    ack.sender = other_side(Cmd::kSender);
+    out.push_back(ack);
+  } else if constexpr (!std::is_same_v<Ack, NoAck>) {
+    static_assert(Ack::kSet == Cmd::kSet && Ack::kId == Cmd::kId, "ACK struct of another command");
+    static_assert(Ack::kSender != Cmd::kSender, "an ACK comes from the other side");
+    CommandInfo ack = info_of<Ack>(Ack::key(), Ack::kName, Ack::kSection);
+    ack.sender = Ack::kSender;
+    out.push_back(ack);
+  }
+}
+
+template <class... Cmds>
+void add_all(std::vector<CommandInfo>& out) {
+  (add<Cmds>(out), ...);
+}
+
+std::vector<CommandInfo> build() {
+  std::vector<CommandInfo> all;
+  add_all<IdentityVerification, GetPsdkVersion, Handshake, GetProductInfo, GetSkyportVersion,
+          GetProductAlias>(all);
+  add_all<TransparentFromMobile, TransparentToMobile, FloatingWindowMessage, GetWidgetListLength,
+          GetWidgetListData, GetWidgetGroupCount, GetWidgetGroupData, SetWidgetValue,
+          GetTextInputBox>(all);
+  add_all<LinkBandwidthPush, AttitudePush, BatteryInfoPush, GpsPush, UavStatePush, AppDateTimePush,
+          BarometricAltitudePush, RawGpsPush, RawRtkPush, UtcTimePush, OtherPayloadTypePush,
+          OtherPayloadFocalLengthPush>(all);
+  add_all<SetCameraWorkMode, GetCameraWorkMode, ShootPhoto, GetShootPhotoState, SetShootPhotoMode,
+          GetShootPhotoMode, RecordVideo, GetRecordState, GetSdCardInfo, FormatSdCard,
+          GetCameraCapability>(all);
+  add_all<SetMeteringMode, GetMeteringMode, SetSpotMeteringZone, GetSpotMeteringZone, SetFocusMode,
+          GetFocusMode, SetFocusZone, GetFocusZone, SetDigitalZoomFactor, GetDigitalZoomFactor,
+          GetOpticalZoomSpec, SetOpticalZoomFocalLength, GetOpticalZoomFocalLength,
+          GetOpticalZoomFactor, StartContinuousZoom, StopContinuousZoom, SetFocusAssistant,
+          GetFocusAssistant, GetFocusRingUpperBound, SetFocusRing, GetFocusRing,
+          GetDigitalZoomSpec>(all);
+  add_all<GetGimbalState, SetGimbalMode, GimbalReturnHead, ControlGimbalSpeed, ControlGimbalAngle,
+          ControlGimbalJointAngle, CalibrateGimbal, GetCalibrationProgress,
+          GetGimbalAdditionalStatus, GetGimbalCapability>(all);
+  add_all<TransparentFromOnboard, TransparentToOnboard>(all);
+  add_all<GetPosition>(all);
+  std::sort(all.begin(), all.end(), [](const CommandInfo& a, const CommandInfo& b) {
+    if (a.key != b.key) return a.key < b.key;
+    return a.packet < b.packet;
+  });
+  return all;
+}
+
+}  // namespace
+
+bool payload_encrypts(CommandKey key) {
+  return key == key_of(CommandSet::kAppFunction, 0x02) ||
+         key == key_of(CommandSet::kAppFunction, 0x03) ||
+         key.set == static_cast<uint8_t>(CommandSet::kOsdkFunction) ||
+         key == key_of(CommandSet::kPositioning, 0x01);
+}
+
+const std::vector<CommandInfo>& catalogue() {
+  static const std::vector<CommandInfo> all = build();
+  return all;
+}
+
+const CommandInfo* find_command(CommandKey key, PacketType packet) {
+  for (const CommandInfo& c : catalogue()) {
+    if (c.key == key && c.packet == packet) return &c;
+  }
+  return nullptr;
+}
+
+const CommandInfo* find_command(const std::string& name) {
+  for (const CommandInfo& c : catalogue()) {
+    if (c.name == name) return &c;
+  }
+  return nullptr;
+}
+
+}  // namespace k40t::psdk
