@@ -44,34 +44,13 @@ void add(std::vector<CommandInfo>& out) {
 }
 
 template <class... Cmds>
-void add_all(std::vector<CommandInfo>& out) {
+void add_all(std::vector<CommandInfo>& out, TypeList<Cmds...>) {
   (add<Cmds>(out), ...);
 }
 
 std::vector<CommandInfo> build() {
   std::vector<CommandInfo> all;
-  add_all<IdentityVerification, GetPsdkVersion, Handshake, GetProductInfo, GetSkyportVersion,
-          GetProductAlias>(all);
-  add_all<TransparentFromMobile, TransparentToMobile, FloatingWindowMessage, GetWidgetListLength,
-          GetWidgetListData, GetWidgetGroupCount, GetWidgetGroupData, SetWidgetValue,
-          GetTextInputBox>(all);
-  add_all<LinkBandwidthPush, AttitudePush, BatteryInfoPush, GpsPush, UavStatePush, AppDateTimePush,
-          BarometricAltitudePush, RawGpsPush, RawRtkPush, UtcTimePush, OtherPayloadTypePush,
-          OtherPayloadFocalLengthPush>(all);
-  add_all<SetCameraWorkMode, GetCameraWorkMode, ShootPhoto, GetShootPhotoState, SetShootPhotoMode,
-          GetShootPhotoMode, RecordVideo, GetRecordState, GetSdCardInfo, FormatSdCard,
-          GetCameraCapability>(all);
-  add_all<SetMeteringMode, GetMeteringMode, SetSpotMeteringZone, GetSpotMeteringZone, SetFocusMode,
-          GetFocusMode, SetFocusZone, GetFocusZone, SetDigitalZoomFactor, GetDigitalZoomFactor,
-          GetOpticalZoomSpec, SetOpticalZoomFocalLength, GetOpticalZoomFocalLength,
-          GetOpticalZoomFactor, StartContinuousZoom, StopContinuousZoom, SetFocusAssistant,
-          GetFocusAssistant, GetFocusRingUpperBound, SetFocusRing, GetFocusRing,
-          GetDigitalZoomSpec>(all);
-  add_all<GetGimbalState, SetGimbalMode, GimbalReturnHead, ControlGimbalSpeed, ControlGimbalAngle,
-          ControlGimbalJointAngle, CalibrateGimbal, GetCalibrationProgress,
-          GetGimbalAdditionalStatus, GetGimbalCapability>(all);
-  add_all<TransparentFromOnboard, TransparentToOnboard>(all);
-  add_all<GetPosition>(all);
+  add_all(all, AllCommands{});
   std::sort(all.begin(), all.end(), [](const CommandInfo& a, const CommandInfo& b) {
     if (a.key != b.key) return a.key < b.key;
     return a.packet < b.packet;

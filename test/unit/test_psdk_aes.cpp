@@ -72,7 +72,8 @@ TEST(PsdkMd5, Rfc1321Vectors) {
 TEST(PsdkAes, KeyIsMd5OfTheFourStringsConcatenated) {
   // Python: hashlib.md5(b"K40T bridge" b"123456" b"0123456789abcdef0123456789abcdef"
   //                     b"dev@example.com").hexdigest() == "71c682c7e3732053f005c0dd78d01e5e"
-  const AesKey key = derive_aes_key({"K40T bridge", "123456", "0123456789abcdef0123456789abcdef", "dev@example.com"});
+  const AesKey key = derive_aes_key(
+      {"K40T bridge", "123456", "0123456789abcdef0123456789abcdef", "dev@example.com"});
   const AesKey expected = {0x71, 0xc6, 0x82, 0xc7, 0xe3, 0x73, 0x20, 0x53,
                            0xf0, 0x05, 0xc0, 0xdd, 0x78, 0xd0, 0x1e, 0x5e};
   EXPECT_EQ(key, expected);

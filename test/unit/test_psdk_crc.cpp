@@ -10,9 +10,13 @@ namespace {
 
 const uint8_t kCheckInput[] = {'1', '2', '3', '4', '5', '6', '7', '8', '9'};
 
-TEST(PsdkCrc, Crc16CheckValue) { EXPECT_EQ(crc16(kCheckInput, sizeof(kCheckInput)), 0xEBEC); }
+TEST(PsdkCrc, Crc16CheckValue) {
+  EXPECT_EQ(crc16(kCheckInput, sizeof(kCheckInput)), 0xEBEC);
+}
 
-TEST(PsdkCrc, Crc32CheckValue) { EXPECT_EQ(crc32(kCheckInput, sizeof(kCheckInput)), 0x7EAD5C77u); }
+TEST(PsdkCrc, Crc32CheckValue) {
+  EXPECT_EQ(crc32(kCheckInput, sizeof(kCheckInput)), 0x7EAD5C77u);
+}
 
 TEST(PsdkCrc, TablesAreBuiltMsbFirst) {
   EXPECT_EQ(crc16_table_entry(0), 0x0000);
@@ -29,11 +33,11 @@ TEST(PsdkCrc, EmptyInputGivesTheStartValues) {
 
 TEST(PsdkCrc, UpdatingInPiecesEqualsOnePass) {
   for (size_t split = 0; split <= sizeof(kCheckInput); ++split) {
-    const uint16_t c16 = crc16_update(crc16_update(kCrc16Init, kCheckInput, split), kCheckInput + split,
-                                      sizeof(kCheckInput) - split);
+    const uint16_t c16 = crc16_update(crc16_update(kCrc16Init, kCheckInput, split),
+                                      kCheckInput + split, sizeof(kCheckInput) - split);
     EXPECT_EQ(c16, 0xEBEC) << "split at " << split;
-    const uint32_t c32 = crc32_update(crc32_update(kCrc32Init, kCheckInput, split), kCheckInput + split,
-                                      sizeof(kCheckInput) - split) ^
+    const uint32_t c32 = crc32_update(crc32_update(kCrc32Init, kCheckInput, split),
+                                      kCheckInput + split, sizeof(kCheckInput) - split) ^
                          kCrc32FinalXor;
     EXPECT_EQ(c32, 0x7EAD5C77u) << "split at " << split;
   }

@@ -13,14 +13,17 @@
 namespace k40t::psdk {
 namespace {
 
-std::vector<uint8_t> bytes_of(const EncodedFrame& f) { return {f.data(), f.data() + f.size()}; }
+std::vector<uint8_t> bytes_of(const EncodedFrame& f) {
+  return {f.data(), f.data() + f.size()};
+}
 
 // psdk_crc.md: get PSDK version, cmd set 0x01, id 0x02, seq 0, ACK requested.
 const std::vector<uint8_t> kGetVersion = {0xaa, 0x10, 0x00, 0x01, 0x00, 0x00, 0x01, 0x02,
                                           0x00, 0x00, 0xf2, 0x68, 0xbc, 0x0f, 0x4c, 0x90};
 // psdk_crc.md: its ACK, data 0x00 (OK) + version 1.3.0.0 as {debug, modify, minor, major}.
-const std::vector<uint8_t> kGetVersionAck = {0xaa, 0x15, 0x00, 0x20, 0x00, 0x00, 0x01, 0x02, 0x00, 0x00, 0x0b,
-                                             0x9d, 0x00, 0x00, 0x00, 0x03, 0x01, 0xaa, 0x7e, 0x6e, 0xbf};
+const std::vector<uint8_t> kGetVersionAck = {0xaa, 0x15, 0x00, 0x20, 0x00, 0x00, 0x01,
+                                             0x02, 0x00, 0x00, 0x0b, 0x9d, 0x00, 0x00,
+                                             0x00, 0x03, 0x01, 0xaa, 0x7e, 0x6e, 0xbf};
 // 3.2.3 floating-window message "SD full" + NUL, seq 5, no ACK, AES (ENC 1 in bits 5-7 of byte 4)
 // with 8 bytes of padding: byte 4 = 0x28; 32 bytes in all.
 const std::vector<uint8_t> kEncryptedFloatingWindow = {
@@ -121,7 +124,8 @@ TEST(PsdkFrame, EncryptionPadsToWholeBlocks) {
   FrameHeader h;
   h.encryption = Encryption::kAes;
   const std::vector<uint8_t> data(kMaxDataSize, 0x5A);
-  for (size_t size : {size_t{0}, size_t{1}, size_t{15}, size_t{16}, size_t{17}, size_t{40}, size_t{241}, size_t{256}}) {
+  for (size_t size : {size_t{0}, size_t{1}, size_t{15}, size_t{16}, size_t{17}, size_t{40},
+                      size_t{241}, size_t{256}}) {
     auto frame = encode_frame(h, data.data(), size, &cipher);
     ASSERT_TRUE(frame) << frame.error();
     const size_t padded = (size + 15) / 16 * 16;

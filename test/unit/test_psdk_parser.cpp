@@ -18,7 +18,8 @@ const Bytes kGetVersion = {0xaa, 0x10, 0x00, 0x01, 0x00, 0x00, 0x01, 0x02,
 const Bytes kGetVersionAck = {0xaa, 0x15, 0x00, 0x20, 0x00, 0x00, 0x01, 0x02, 0x00, 0x00, 0x0b,
                               0x9d, 0x00, 0x00, 0x00, 0x03, 0x01, 0xaa, 0x7e, 0x6e, 0xbf};
 
-Bytes frame_with(uint16_t sequence, const Bytes& data, CommandKey key = key_of(CommandSet::kCamera, 0x07)) {
+Bytes frame_with(uint16_t sequence, const Bytes& data,
+                 CommandKey key = key_of(CommandSet::kCamera, 0x07)) {
   FrameHeader h;
   h.ack_request = AckRequest::kAfterExecution;
   h.command = key;
@@ -78,7 +79,8 @@ TEST(PsdkParser, DataPointsAtDataAndPaddingIsReported) {
 TEST(PsdkParser, SkipsGarbageIncludingFalseSofs) {
   const Bytes garbage = {0x00, 0xaa, 0xaa, 0x13, 0xaa, 0x10, 0x00, 0x55, 0xff, 0xaa};
   FrameParser parser;
-  const Collected c = parse(parser, concat({garbage, kGetVersion, garbage, kGetVersionAck, garbage}));
+  const Collected c =
+      parse(parser, concat({garbage, kGetVersion, garbage, kGetVersionAck, garbage}));
   ASSERT_EQ(c.frames.size(), 2u);
   EXPECT_EQ(c.frames[0], kGetVersion);
   EXPECT_EQ(c.frames[1], kGetVersionAck);
@@ -88,14 +90,17 @@ TEST(PsdkParser, SkipsGarbageIncludingFalseSofs) {
 }
 
 TEST(PsdkParser, EverySplitPointGivesTheSameFrames) {
-  const Bytes stream = concat({Bytes{0x01, 0xaa}, kGetVersion, frame_with(7, Bytes(200, 0xaa)), kGetVersionAck});
+  const Bytes stream =
+      concat({Bytes{0x01, 0xaa}, kGetVersion, frame_with(7, Bytes(200, 0xaa)), kGetVersionAck});
   FrameParser whole;
   const Collected expected = parse(whole, stream);
   ASSERT_EQ(expected.frames.size(), 3u);
   for (size_t split = 1; split < stream.size(); ++split) {
     FrameParser parser;
     Collected c;
-    const auto on_frame = [&](const FrameView& f) { c.frames.emplace_back(f.bytes, f.bytes + f.size); };
+    const auto on_frame = [&](const FrameView& f) {
+      c.frames.emplace_back(f.bytes, f.bytes + f.size);
+    };
     parser.feed(stream.data(), split, on_frame);
     parser.feed(stream.data() + split, stream.size() - split, on_frame);
     EXPECT_EQ(c.frames, expected.frames) << "split at " << split;
@@ -142,9 +147,9 @@ TEST(PsdkParser, HeaderCrcErrorDoesNotWaitForTheClaimedLength) {
 
 TEST(PsdkParser, RejectsLengthsOutOfRangeAndNonZeroVersion) {
   FrameParser parser;
-  const Bytes short_length = {0xaa, 0x0f, 0x00};       // 15 < 16
-  const Bytes long_length = {0xaa, 0x11, 0x01};        // 273 > 272
-  const Bytes version_one = {0xaa, 0x10, 0x04};        // version bits = 1
+  const Bytes short_length = {0xaa, 0x0f, 0x00};  // 15 < 16
+  const Bytes long_length = {0xaa, 0x11, 0x01};   // 273 > 272
+  const Bytes version_one = {0xaa, 0x10, 0x04};   // version bits = 1
   const Collected c = parse(parser, concat({short_length, long_length, version_one, kGetVersion}));
   ASSERT_EQ(c.frames.size(), 1u);
   EXPECT_EQ(parser.stats().length_errors, 2u);
@@ -161,7 +166,8 @@ TEST(PsdkParser, AcceptsTheLongestFrame) {
 
 TEST(PsdkParser, CountsGapsInTheOtherSidesCommandSequence) {
   FrameParser parser;
-  parse(parser, concat({frame_with(10, {}), frame_with(11, {}), frame_with(14, {}), kGetVersionAck}));
+  parse(parser,
+        concat({frame_with(10, {}), frame_with(11, {}), frame_with(14, {}), kGetVersionAck}));
   EXPECT_EQ(parser.stats().sequence_gaps, 1u);
   EXPECT_EQ(parser.stats().commands_lost, 2u);
   // ACKs carry our own sequence numbers and do not count.
@@ -190,7 +196,8 @@ TEST(PsdkParser, SurvivesLongRandomNoise) {
   const Collected c = parse(parser, concat({noise, kGetVersion, noise, kGetVersionAck}), 333);
   ASSERT_GE(c.frames.size(), 2u);
   EXPECT_EQ(c.frames[c.frames.size() - 1], kGetVersionAck);
-  EXPECT_EQ(parser.stats().bytes_received, 2 * noise.size() + kGetVersion.size() + kGetVersionAck.size());
+  EXPECT_EQ(parser.stats().bytes_received,
+            2 * noise.size() + kGetVersion.size() + kGetVersionAck.size());
 }
 
 }  // namespace
