@@ -1,4 +1,5 @@
-// Test helpers for the PSDK layer: a FieldSink that records "name=value" lines.
+// Test helpers for the PSDK layer: psdk_crc.md's frame vectors, a frame builder, and a FieldSink
+// that records "name=value" lines.
 #pragma once
 
 #include <iomanip>
@@ -6,9 +7,30 @@
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "k40t_driver/protocol/field_visit.h"
+#include "k40t_driver/psdk/frame.h"
 
 namespace k40t::psdk::testing {
+
+using Bytes = std::vector<uint8_t>;
+
+// psdk_crc.md's whole-frame vectors: get PSDK version (cmd set 0x01, id 0x02, seq 0, ACK
+// requested) and its ACK, DATA 0x00 (OK) + version 1.3.0.0 as {debug, modify, minor, major}.
+inline const Bytes kGetVersion = {0xaa, 0x10, 0x00, 0x01, 0x00, 0x00, 0x01, 0x02,
+                                  0x00, 0x00, 0xf2, 0x68, 0xbc, 0x0f, 0x4c, 0x90};
+inline const Bytes kGetVersionAck = {0xaa, 0x15, 0x00, 0x20, 0x00, 0x00, 0x01,
+                                     0x02, 0x00, 0x00, 0x0b, 0x9d, 0x00, 0x00,
+                                     0x00, 0x03, 0x01, 0xaa, 0x7e, 0x6e, 0xbf};
+
+// A frame built by the encoder under test (for streams and sessions, never as a golden vector).
+inline Bytes make_frame(const FrameHeader& header, const Bytes& data,
+                        const Aes128Ecb* cipher = nullptr) {
+  auto f = encode_frame(header, data.data(), data.size(), cipher);
+  EXPECT_TRUE(f) << f.error();
+  return f ? Bytes(f->data(), f->data() + f->size()) : Bytes{};
+}
 
 class RecordingSink : public protocol::FieldSink {
  public:

@@ -9,6 +9,7 @@
 
 #include "k40t_driver/psdk/aes.h"
 #include "k40t_driver/psdk/frame.h"
+#include "psdk_test_support.h"
 
 namespace k40t::psdk {
 namespace {
@@ -17,13 +18,9 @@ std::vector<uint8_t> bytes_of(const EncodedFrame& f) {
   return {f.data(), f.data() + f.size()};
 }
 
-// psdk_crc.md: get PSDK version, cmd set 0x01, id 0x02, seq 0, ACK requested.
-const std::vector<uint8_t> kGetVersion = {0xaa, 0x10, 0x00, 0x01, 0x00, 0x00, 0x01, 0x02,
-                                          0x00, 0x00, 0xf2, 0x68, 0xbc, 0x0f, 0x4c, 0x90};
-// psdk_crc.md: its ACK, data 0x00 (OK) + version 1.3.0.0 as {debug, modify, minor, major}.
-const std::vector<uint8_t> kGetVersionAck = {0xaa, 0x15, 0x00, 0x20, 0x00, 0x00, 0x01,
-                                             0x02, 0x00, 0x00, 0x0b, 0x9d, 0x00, 0x00,
-                                             0x00, 0x03, 0x01, 0xaa, 0x7e, 0x6e, 0xbf};
+using testing::kGetVersion;  // psdk_crc.md's whole-frame vectors
+using testing::kGetVersionAck;
+
 // 3.2.3 floating-window message "SD full" + NUL, seq 5, no ACK, AES (ENC 1 in bits 5-7 of byte 4)
 // with 8 bytes of padding: byte 4 = 0x28; 32 bytes in all.
 const std::vector<uint8_t> kEncryptedFloatingWindow = {

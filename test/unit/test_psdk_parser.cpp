@@ -6,17 +6,14 @@
 
 #include "k40t_driver/psdk/frame.h"
 #include "k40t_driver/psdk/parser.h"
+#include "psdk_test_support.h"
 
 namespace k40t::psdk {
 namespace {
 
-using Bytes = std::vector<uint8_t>;
-
-// psdk_crc.md's whole-frame vectors (get PSDK version and its ACK).
-const Bytes kGetVersion = {0xaa, 0x10, 0x00, 0x01, 0x00, 0x00, 0x01, 0x02,
-                           0x00, 0x00, 0xf2, 0x68, 0xbc, 0x0f, 0x4c, 0x90};
-const Bytes kGetVersionAck = {0xaa, 0x15, 0x00, 0x20, 0x00, 0x00, 0x01, 0x02, 0x00, 0x00, 0x0b,
-                              0x9d, 0x00, 0x00, 0x00, 0x03, 0x01, 0xaa, 0x7e, 0x6e, 0xbf};
+using testing::Bytes;
+using testing::kGetVersion;
+using testing::kGetVersionAck;
 
 Bytes frame_with(uint16_t sequence, const Bytes& data,
                  CommandKey key = key_of(CommandSet::kCamera, 0x07)) {
@@ -24,9 +21,7 @@ Bytes frame_with(uint16_t sequence, const Bytes& data,
   h.ack_request = AckRequest::kAfterExecution;
   h.command = key;
   h.sequence = sequence;
-  auto f = encode_frame(h, data.data(), data.size());
-  EXPECT_TRUE(f) << f.error();
-  return {f->data(), f->data() + f->size()};
+  return testing::make_frame(h, data);
 }
 
 struct Collected {
