@@ -107,6 +107,9 @@ class Session {
   // The ACK of `command` (whose header a handler kept), for replies that come later.
   Status send_ack(const FrameHeader& command, const Data& data);
 
+  // Jumps our sequence counter forward (the simulator's sequence-jump fault).
+  void skip_sequence(uint16_t count);
+
   SessionStats stats() const;
   const SessionOptions& options() const { return options_; }
   transport::LinkState link_state() const { return transport_->state(); }
