@@ -195,6 +195,11 @@ uint16_t Session::next_sequence() {
   return sequence_++;
 }
 
+void Session::skip_sequence(uint16_t count) {
+  std::lock_guard<std::mutex> lock(send_mutex_);
+  sequence_ = static_cast<uint16_t>(sequence_ + count);
+}
+
 Status Session::send_raw(CommandKey key, const uint8_t* data, size_t size) {
   FrameHeader h;
   h.command = key;
