@@ -131,6 +131,34 @@ TEST(PsdkFrame, EncryptionPadsToWholeBlocks) {
   }
 }
 
+TEST(PsdkFrame, EncryptedRoundTripForEveryDataSize) {
+  const Aes128Ecb cipher(derive_aes_key(test_credentials()));
+  FrameHeader h;
+  h.encryption = Encryption::kAes;
+  h.command = key_of(CommandSet::kOsdkFunction, 0x02);
+  std::vector<uint8_t> data(kMaxDataSize);
+  for (size_t i = 0; i < data.size(); ++i) data[i] = static_cast<uint8_t>(i * 13 + 1);
+  for (size_t size = 0; size <= kMaxDataSize; ++size) {
+    auto frame = encode_frame(h, data.data(), size, &cipher);
+    ASSERT_TRUE(frame) << size << ": " << frame.error();
+    FrameView view;
+    view.header = parse_header(frame->data());
+    view.data = frame->data() + kHeaderSize;
+    view.data_size = frame->size() - kFrameOverhead;
+    EXPECT_EQ(view.data_size % 16, 0u) << size;
+    if (size > 0) {
+      EXPECT_NE(std::vector<uint8_t>(view.data, view.data + size),
+                std::vector<uint8_t>(data.begin(), data.begin() + size))
+          << "DATA of " << size << " bytes left in clear";
+    }
+    auto opened = open_data(view, &cipher);
+    ASSERT_TRUE(opened) << size << ": " << opened.error();
+    EXPECT_EQ(std::vector<uint8_t>(opened->data(), opened->data() + opened->size),
+              std::vector<uint8_t>(data.begin(), data.begin() + size))
+        << size;
+  }
+}
+
 TEST(PsdkFrame, AcceptsTheLargestFrame) {
   std::vector<uint8_t> data(kMaxDataSize, 0x11);
   auto frame = encode_frame(FrameHeader{}, data.data(), data.size());
