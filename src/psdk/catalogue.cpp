@@ -1,6 +1,7 @@
 #include "k40t_driver/psdk/catalogue.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "k40t_driver/psdk/commands/all.h"
 
@@ -65,6 +66,29 @@ bool payload_encrypts(CommandKey key) {
          key == key_of(CommandSet::kAppFunction, 0x03) ||
          key.set == static_cast<uint8_t>(CommandSet::kOsdkFunction) ||
          key == key_of(CommandSet::kPositioning, 0x01);
+}
+
+Status describe_frame(const FrameView& frame, const Aes128Ecb* cipher, protocol::FieldSink& sink) {
+  const FrameHeader& h = frame.header;
+  const CommandInfo* info = find_command(h.command, h.packet_type);
+  sink.text("command", info ? info->name : std::string("unknown"));
+  protocol::detail::SinkAdapter out{sink};
+  out("cmd_set", static_cast<CommandSet>(h.command.set));
+  out("cmd_id", h.command.id);
+  out("packet_type", h.packet_type);
+  out("sequence", h.sequence);
+  out("ack_request", h.ack_request);
+  out("encryption", h.encryption);
+  const Result<Data> data = open_data(frame, cipher);
+  if (!data) return data.status();
+  if (info == nullptr) {
+    sink.bytes("data", data->data(), data->size);
+    char text[64];
+    std::snprintf(text, sizeof(text), "command 0x%02X/0x%02X%s is not in the document",
+                  h.command.set, h.command.id, h.packet_type == PacketType::kAck ? " ACK" : "");
+    return Status::fail(text);
+  }
+  return info->describe(data->data(), data->size, sink);
 }
 
 const std::vector<CommandInfo>& catalogue() {

@@ -7,6 +7,7 @@
 
 #include "k40t_driver/psdk/catalogue.h"
 #include "k40t_driver/psdk/commands/all.h"
+#include "k40t_driver/psdk/frame.h"
 #include "psdk_test_support.h"
 
 namespace k40t::psdk {
@@ -331,6 +332,39 @@ TEST(PsdkCommands, CatalogueCoversEveryCommandOfTheDocument) {
   size_t in_catalogue = 0;
   for (const CommandInfo& c : catalogue()) in_catalogue += c.packet == PacketType::kCommand;
   EXPECT_EQ(in_catalogue, commands);
+}
+
+FrameView view_of(const testing::Bytes& frame) {
+  FrameView v;
+  v.header = parse_header(frame.data());
+  v.data = frame.data() + kHeaderSize;
+  v.data_size = frame.size() - kFrameOverhead;
+  v.bytes = frame.data();
+  v.size = frame.size();
+  return v;
+}
+
+TEST(PsdkCommands, DescribesWholeFrames) {
+  RecordingSink sink;
+  ASSERT_TRUE(describe_frame(view_of(testing::kGetVersionAck), nullptr, sink));
+  EXPECT_TRUE(sink.has("command=\"get_psdk_version_ack\"")) << ::testing::PrintToString(sink.lines);
+  EXPECT_TRUE(sink.has("packet_type=1(ack)"));
+  EXPECT_TRUE(sink.has("sequence=0"));
+  EXPECT_TRUE(sink.has("code=0(ok)"));
+  EXPECT_TRUE(sink.has("major=1"));
+  EXPECT_TRUE(sink.has("minor=3"));
+}
+
+TEST(PsdkCommands, DescribingAnUnknownCommandNamesIt) {
+  FrameHeader h;
+  h.command = {0x04, 0x50};
+  const testing::Bytes frame = testing::make_frame(h, {0x01, 0x02});
+  RecordingSink sink;
+  const Status s = describe_frame(view_of(frame), nullptr, sink);
+  ASSERT_FALSE(s);
+  EXPECT_NE(s.message().find("0x04/0x50 is not in the document"), std::string::npos) << s.message();
+  EXPECT_TRUE(sink.has("command=\"unknown\""));
+  EXPECT_TRUE(sink.has("data=0102"));
 }
 
 TEST(PsdkCommands, PayloadEncryptsWhatPsdkCrcMdLists) {

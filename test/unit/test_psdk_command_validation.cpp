@@ -119,6 +119,9 @@ TEST(PsdkValidation, OpaqueDataLengths) {
   TransparentToMobile t;
   t.data = Blob<128>::from(std::string(128, 'x'));
   EXPECT_TRUE(encode_data(t));
+  Handshake long_handshake;
+  long_handshake.data = Blob<32>::from(std::string(33, 'h'));
+  EXPECT_MENTIONS(encode_error(long_handshake), "'data' must be 1..32 bytes, got 33");
   TransparentFromOnboard o;
   o.data.size = 0;
   EXPECT_MENTIONS(encode_error(o), "1..255 bytes");

@@ -34,6 +34,12 @@ const std::vector<CommandInfo>& catalogue();
 const CommandInfo* find_command(CommandKey key, PacketType packet);
 const CommandInfo* find_command(const std::string& name);
 
+// A whole received frame for tools: its header (command name, set, id, packet type, sequence,
+// ACK request, encryption) and then the command's fields; DATA is decrypted with `cipher` when
+// the frame is encrypted. Fails, naming the problem, for an unknown command or DATA that does not
+// decode (the header fields have been reported by then).
+Status describe_frame(const FrameView& frame, const Aes128Ecb* cipher, protocol::FieldSink& sink);
+
 template <class T>
 Status describe_data(const uint8_t* data, size_t size, protocol::FieldSink& sink) {
   Result<T> decoded = decode_data<T>(data, size);

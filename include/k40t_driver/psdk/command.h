@@ -96,9 +96,11 @@ template <size_t N>
 struct Blob {
   std::array<uint8_t, N> bytes{};
   size_t size = 0;
+  size_t dropped = 0;  // bytes from() could not keep; validation reports them
   static Blob from(const uint8_t* data, size_t n) {
     Blob b;
     b.size = std::min(n, N);
+    b.dropped = n - b.size;
     if (b.size > 0) std::memcpy(b.bytes.data(), data, b.size);
     return b;
   }
@@ -127,7 +129,7 @@ struct OpaqueData {
   static constexpr size_t kMaxBodySize = Max;
   Blob<Max> data;
 
-  Status validate() const { return check_length("data", data.size, Min, Max); }
+  Status validate() const { return check_length("data", data.size + data.dropped, Min, Max); }
   void encode(ByteWriter& w) const {
     for (size_t i = 0; i < data.size; ++i) w.u8(data.bytes[i]);
   }
