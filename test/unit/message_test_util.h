@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "field_recorder.h"
-#include "golden_file.h"
+#include "golden_frames.h"
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/frame.h"
 #include "k40t_driver/protocol/message.h"

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "golden_file.h"
+#include "golden_frames.h"
 #include "k40t_driver/protocol/crc.h"
 #include "k40t_driver/protocol/frame.h"
 #include "k40t_driver/protocol/parser.h"
