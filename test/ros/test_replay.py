@@ -79,7 +79,8 @@ class Replay(unittest.TestCase):
 
         replayed = {topic: Recorder(REPLAY + "/" + topic, cls) for topic, cls in DECODED.items()}
         time.sleep(1.0)  # subscriptions connect before the first frame is played
-        play = subprocess.run(["rosbag", "play", "--quiet", "--topics", LIVE + "/raw/rx", "--bags=" + self.bag_path,
+        # --delay: rosbag advertises, waits for the replay driver to connect, then plays.
+        play = subprocess.run(["rosbag", "play", "--quiet", "--delay=1", "--topics", LIVE + "/raw/rx", "--bags=" + self.bag_path,
                                LIVE + "/raw/rx:=" + REPLAY + "/raw/rx"],
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=60)
         self.assertEqual(play.returncode, 0, play.stdout.decode(errors="replace"))
