@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Replay: raw frames recorded from the simulator into a bag, played back through a second
 driver in replay mode, regenerate the decoded topics message by message and bit for bit
-(serialized bytes equal, recorded stamps included)."""
+(serialized bytes equal, recorded stamps included; only header.seq, which roscpp assigns per
+publisher, is left out)."""
 import io
 import os
 import subprocess
@@ -31,6 +32,9 @@ DECODED = {
 
 
 def serialized(msg):
+    """The message's bytes, with header.seq zeroed: roscpp numbers the messages of each publisher
+    itself (the replay driver's publishers start at 0), so seq is not part of what is regenerated."""
+    msg.header.seq = 0
     buffer = io.BytesIO()
     msg.serialize(buffer)
     return buffer.getvalue()
