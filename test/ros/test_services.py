@@ -198,23 +198,34 @@ class Services(unittest.TestCase):
     def test_point_at(self):
         self.call_ok("gimbal/center", Trigger)
         self.assertTrue(self.wait_joint(0, 0.0))
-        self.call_ok("gimbal/point_at", PointAt, lens=PointAt._request_class.LENS_TELE, zoom=1.0, x=1800, y=540)
+        self.call_ok("gimbal/point_at", PointAt, lens=PointAt._request_class.LENS_TELE, zoom=5.0, x=1800, y=540)
         # A point right of the centre: the gimbal turns right, which is negative yaw in REP 103.
         self.assertTrue(wait_until(lambda: self.joints.latest().position[0] < -0.05, 10.0), "point_at did not turn right")
         self.call_ok("gimbal/center", Trigger)
-        self.assert_rejected_without_sending("gimbal/point_at", PointAt, "x", lens=0, zoom=1.0, x=0, y=540)
+        self.assert_rejected_without_sending("gimbal/point_at", PointAt, "x", lens=0, zoom=5.0, x=0, y=540)
+        self.assert_rejected_without_sending("gimbal/point_at", PointAt, "zoom", lens=0, zoom=2.0, x=960, y=540)
 
     def test_calibrations_restart_and_servo_off(self):
+        # Each calibration keeps the gimbal busy for a few seconds; the next one (and any motion)
+        # is refused with "busy" until it ends: retry until the pod takes it.
+        proxy = service("gimbal/calibrate", Calibrate)
         for kind in (0, 1, 2):
             since = time.time()
-            self.call_ok("gimbal/calibrate", Calibrate, kind=kind)
+            deadline = since + 12.0
+            response = proxy(kind=kind)
+            while not response.success and "busy" in response.message and time.time() < deadline:
+                time.sleep(0.5)
+                response = proxy(kind=kind)
+            self.assertTrue(response.success, "calibration %d: %s" % (kind, response.message))
             self.assertIn((0x000013, 0x00002E, 0x000031)[kind], self.sent_ids(since))
         self.assert_rejected_without_sending("gimbal/calibrate", Calibrate, "kind", kind=3)
-        self.call_ok("gimbal/servo_off", Trigger)
+        # Let the last calibration end, then the servo off and the restart.
+        self.assertTrue(wait_until(lambda: service("gimbal/servo_off", Trigger)().success, 12.0, step=0.5))
         self.call_ok("gimbal/restart", Trigger)
         restarted = self.gimbal.wait_for_match(lambda m: not m.gimbal_link_ok, 4.0, since=time.time() - 0.5)
         self.assertIsNotNone(restarted, "gimbal/status never showed the restart")
         self.assertTrue(wait_until(lambda: self.gimbal.latest().gimbal_link_ok, 15.0))
+        self.assertTrue(wait_until(lambda: service("gimbal/center", Trigger)().success, 10.0, step=0.5))
 
     def test_cmd_angle_and_cmd_rate_dead_man(self):
         angle_pub = rospy.Publisher(name("gimbal/cmd_angle"), Vector3Stamped, queue_size=1)
