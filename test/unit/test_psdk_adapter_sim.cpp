@@ -88,6 +88,8 @@ class TestPayload {
     if (handle_camera_and_gimbal) add_camera_and_gimbal();
   }
 
+  ~TestPayload() { session_->stop(); }  // before the state its handlers use goes
+
   Session& session() { return *session_; }
   uint64_t pushes(const std::string& name) {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -218,7 +220,15 @@ class TestPayload {
   GimbalAngles angles_;
 };
 
+// Both sides are stopped before either is destroyed: a running side may still be writing into
+// its peer's link.
 struct Rig {
+  Rig() = default;
+  Rig(Rig&&) = default;
+  ~Rig() {
+    if (adapter) adapter->stop();
+    if (payload) payload->session().stop();
+  }
   std::unique_ptr<TestPayload> payload;
   std::unique_ptr<AdapterSimulator> adapter;
 };
