@@ -1,4 +1,21 @@
 # catkin: messages, services, dynamic_reconfigure and catkin_package(). Included before any
 # target so that catkin's output directories apply to every executable (rosrun k40t_driver k40t).
-find_package(catkin REQUIRED COMPONENTS roscpp)
-catkin_package()
+set(K40T_CATKIN_COMPONENTS
+  roscpp nodelet pluginlib std_msgs std_srvs sensor_msgs geometry_msgs diagnostic_msgs
+  diagnostic_updater dynamic_reconfigure tf2 tf2_ros message_generation)
+find_package(catkin REQUIRED COMPONENTS ${K40T_CATKIN_COMPONENTS})
+
+# Message and service definitions are globbed: adding a .msg/.srv file is enough.
+file(GLOB K40T_MSG_FILES RELATIVE ${PROJECT_SOURCE_DIR}/msg CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/msg/*.msg)
+file(GLOB K40T_SRV_FILES RELATIVE ${PROJECT_SOURCE_DIR}/srv CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/srv/*.srv)
+add_message_files(FILES ${K40T_MSG_FILES})
+add_service_files(FILES ${K40T_SRV_FILES})
+generate_messages(DEPENDENCIES std_msgs sensor_msgs geometry_msgs)
+
+generate_dynamic_reconfigure_options(cfg/K40t.cfg)
+
+catkin_package(
+  INCLUDE_DIRS include
+  LIBRARIES k40t_ros
+  CATKIN_DEPENDS roscpp nodelet pluginlib std_msgs std_srvs sensor_msgs geometry_msgs
+                 diagnostic_msgs diagnostic_updater dynamic_reconfigure tf2 tf2_ros message_runtime)

@@ -1,1 +1,61 @@
-# Nodelets, nodes and rostests (the ROS layer, ros/).
+# The ROS layer (src/ros/): one library holding the driver and its ROS glue, the nodelet plugin
+# that wraps it, the standalone node, and the rostest programs under test/ros/.
+file(GLOB_RECURSE K40T_ROS_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/*.cpp)
+list(FILTER K40T_ROS_SOURCES EXCLUDE REGEX ".*/src/ros/nodes/.*")
+
+if(NOT K40T_ROS_SOURCES)
+  return()  # nothing in src/ros/ yet
+endif()
+add_library(k40t_ros SHARED ${K40T_ROS_SOURCES})
+target_include_directories(k40t_ros PUBLIC ${PROJECT_SOURCE_DIR}/include)
+target_include_directories(k40t_ros SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
+target_link_libraries(k40t_ros PUBLIC k40t_core ${catkin_LIBRARIES})
+# Generated message/service headers and the dynamic_reconfigure K40tConfig.h.
+add_dependencies(k40t_ros ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg)
+
+# One executable per src/ros/nodes/*.cpp (k40t_node, ...), each a thin main() over k40t_ros.
+file(GLOB K40T_ROS_NODES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/nodes/*.cpp)
+foreach(source ${K40T_ROS_NODES})
+  get_filename_component(name ${source} NAME_WE)
+  add_executable(${name} ${source})
+  target_link_libraries(${name} PRIVATE k40t_ros)
+  install(TARGETS ${name} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+endforeach()
+
+install(TARGETS k40t_ros
+  LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
+  ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
+install(DIRECTORY include/k40t_driver/ DESTINATION ${CATKIN_PACKAGE_INCLUDE_DESTINATION})
+install(FILES nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
+install(DIRECTORY launch config urdf rviz DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
+
+# rostest programs, run by scripts/run_tests.sh through test/ros/*.test:
+#   test/ros/unit/*.cpp  gtest of the ROS layer's own logic (conversions, rate dead-man...), one
+#                        binary k40t_ros_unit_tests;
+#   test/ros/*.cpp       gtest nodes, one executable each;
+#   test/ros/*.py        Python test nodes (/usr/bin/python3, rospy + unittest).
+if(CATKIN_ENABLE_TESTING)
+  find_package(GTest REQUIRED)
+  file(GLOB K40T_ROS_UNIT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/test/ros/unit/*.cpp)
+  if(K40T_ROS_UNIT_SOURCES)
+    add_executable(k40t_ros_unit_tests ${K40T_ROS_UNIT_SOURCES})
+    target_link_libraries(k40t_ros_unit_tests PRIVATE k40t_ros GTest::gtest GTest::gtest_main)
+  endif()
+  file(GLOB K40T_ROSTEST_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/test/ros/*.cpp)
+  foreach(source ${K40T_ROSTEST_SOURCES})
+    get_filename_component(name ${source} NAME_WE)
+    add_executable(${name} ${source})
+    target_link_libraries(${name} PRIVATE k40t_ros GTest::gtest)
+  endforeach()
+endif()
+
+# End-to-end benchmarks of the ROS layer (bench/ros/, run by bench/ros/run_ros_bench.sh): the
+# latency probe as a node and as a nodelet (library k40t_bench_nodelets, listed in
+# nodelet_plugins.xml), and the service round-trip client.
+add_library(k40t_bench_nodelets SHARED ${PROJECT_SOURCE_DIR}/bench/ros/latency_probe.cpp
+                                       ${PROJECT_SOURCE_DIR}/bench/ros/latency_probe_nodelet.cpp)
+target_link_libraries(k40t_bench_nodelets PUBLIC k40t_ros)
+add_executable(k40t_latency_probe ${PROJECT_SOURCE_DIR}/bench/ros/latency_probe_node.cpp)
+target_link_libraries(k40t_latency_probe PRIVATE k40t_bench_nodelets)
+add_executable(k40t_service_rtt ${PROJECT_SOURCE_DIR}/bench/ros/service_rtt.cpp)
+target_link_libraries(k40t_service_rtt PRIVATE k40t_ros)

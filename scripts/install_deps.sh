@@ -12,6 +12,7 @@ packages=(
   libdiagnostic-updater-dev libcv-bridge-dev libopencv-dev python3-dynamic-reconfigure
   libdynamic-reconfigure-config-init-mutex-dev ros-robot-state-publisher
   ros-std-srvs libstd-srvs-dev ros-sensor-msgs libsensor-msgs-dev
+  python3-tf2-ros python3-tf2-msgs libdiagnostic-aggregator-dev libdiagnostic-aggregator-tools
   socat libssl-dev
 )
 

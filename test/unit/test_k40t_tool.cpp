@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "golden_file.h"
+#include "golden_frames.h"
 #include "run_tool.h"
 
 namespace k40t::test {

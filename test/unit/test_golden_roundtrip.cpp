@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "golden_file.h"
+#include "golden_frames.h"
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/parser.h"
 

@@ -1,4 +1,4 @@
-#include "golden_file.h"
+#include "golden_frames.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,0 +1,82 @@
+#!/usr/bin/python3
+"""Checks every launch file of the package with roslaunch's own checker (the code behind
+roslaunch-check and rostest's roslaunch_add_file_check): XML, args, substitutions, that every
+node's package and executable exist, and package.xml dependencies. Each file is checked with its
+default args and with the arg combinations listed in VARIANTS (roslaunch reads `name:=value`
+from sys.argv). Writes one JUnit test case per (file, args) to --junit; exits 1 on any failure.
+
+Run after a ROS build with scripts/ros_env.sh sourced (scripts/run_tests.sh does)."""
+import argparse
+import glob
+import os
+import sys
+import time
+import xml.etree.ElementTree as ET
+
+import roslaunch.rlutil
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+# Arg combinations worth checking beyond the defaults: each branch of an if/unless.
+VARIANTS = {
+    "k40t.launch": [["sim:=true"], ["manager:=/pod_manager"], ["publish_tf:=false", "ns:=pod2"]],
+    "sim.launch": [["manager:=/pod_manager"]],
+    "record.launch": [["raw_only:=true", "duration:=5"]],
+    "replay.launch": [["sim_time:=true", "rate:=2.0"]],
+    "latency.launch": [["in_manager:=true"]],
+}
+
+
+def launch_files():
+    files = sorted(glob.glob(os.path.join(ROOT, "launch", "*.launch")))
+    files += sorted(glob.glob(os.path.join(ROOT, "test", "ros", "*.test")))
+    files += sorted(glob.glob(os.path.join(ROOT, "bench", "ros", "*.launch")))
+    return files
+
+
+def check(path, args):
+    saved = sys.argv
+    sys.argv = [saved[0]] + args  # roslaunch's loader takes name:=value mappings from sys.argv
+    try:
+        return roslaunch.rlutil.check_roslaunch(path, use_test_depends=path.endswith(".test"))
+    except Exception as e:  # a crash of the checker is a failure of this file, not of the script
+        return "checker raised %s: %s" % (type(e).__name__, e)
+    finally:
+        sys.argv = saved
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--junit", help="JUnit XML output path")
+    options = ap.parse_args()
+
+    suite = ET.Element("testsuite", name="launch_files")
+    failures = 0
+    cases = 0
+    for path in launch_files():
+        name = os.path.relpath(path, ROOT)
+        for args in [[]] + VARIANTS.get(os.path.basename(path), []):
+            label = name + (" " + " ".join(args) if args else "")
+            started = time.time()
+            error = check(path, args)
+            case = ET.SubElement(suite, "testcase", classname="launch_files", name=label,
+                                 time="%.3f" % (time.time() - started))
+            cases += 1
+            if error:
+                failures += 1
+                ET.SubElement(case, "failure", message="roslaunch check failed").text = error
+                print("FAIL %s\n  %s" % (label, error.replace("\n", "\n  ")))
+            else:
+                print("ok   %s" % label)
+    suite.set("tests", str(cases))
+    suite.set("failures", str(failures))
+    suite.set("errors", "0")
+    if options.junit:
+        os.makedirs(os.path.dirname(os.path.abspath(options.junit)), exist_ok=True)
+        ET.ElementTree(suite).write(options.junit, encoding="utf-8", xml_declaration=True)
+    print("%d launch checks, %d failed" % (cases, failures))
+    return 1 if failures or cases == 0 else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
