@@ -51,9 +51,10 @@ if has_tier ros; then
     for t in "${tests[@]}"; do
       name="$(basename "$t" .test)"
       echo "-- $name"
-      # One results directory per .test file: rostest reuses file names across runs.
+      # One results directory per .test file: rostest reuses file names across runs. No --text:
+      # with it rostest writes no JUnit XML for the Python test nodes.
       (source "$K40T_ROOT/scripts/ros_env.sh" && export ROS_TEST_RESULTS_DIR="$results/ros/$name" && \
-        timeout 600 rostest --text k40t_driver "$(basename "$t")" > "$results/ros-$name.log" 2>&1)
+        timeout 600 rostest k40t_driver "$(basename "$t")" > "$results/ros-$name.log" 2>&1)
       rc=$?
       grep -E "^\s*(\* RESULT|\* TESTS|\* ERRORS|\* FAILURES)" "$results/ros-$name.log" | head -5
       # A non-zero exit must show up as a failure even when no XML recorded one (a crashed node,

@@ -68,6 +68,11 @@ class Services(unittest.TestCase):
     def sent_ids(self, since):
         return [frame_id(f.data) for f in self.raw_tx.messages(since)]
 
+    def assert_sent(self, msg_id, since):
+        """raw/tx shows a frame with msg_id after `since` (it arrives just after the service returns)."""
+        self.assertTrue(wait_until(lambda: msg_id in self.sent_ids(since), 2.0),
+                        "0x%06X not on raw/tx: %s" % (msg_id, ["0x%06X" % i for i in self.sent_ids(since)]))
+
     def wait_joint(self, index, value, timeout=15.0, tol=0.03):
         return wait_until(lambda: self.joints.latest() and abs(self.joints.latest().position[index] - value) < tol,
                           timeout)
@@ -101,7 +106,7 @@ class Services(unittest.TestCase):
     def test_focus(self):
         since = time.time()
         self.call_ok("focus", Focus, mode=Focus._request_class.ONE_TOUCH, x1=0, y1=0, x2=0, y2=0)
-        self.assertIn(0x000313, self.sent_ids(since))
+        self.assert_sent(0x000313, since)
         self.assert_rejected_without_sending("focus", Focus, "command", mode=9, x1=0, y1=0, x2=0, y2=0)
 
     def test_take_photo_is_geotagged_from_fix(self):
@@ -109,6 +114,7 @@ class Services(unittest.TestCase):
         fix = NavSatFix()
         fix.header.stamp = rospy.Time.now()
         fix.latitude, fix.longitude, fix.altitude = 47.5, 8.25, 420.0
+        self.assertTrue(wait_until(lambda: fix_pub.get_num_connections() > 0, 5.0), "the driver does not subscribe fix")
         fix_pub.publish(fix)
         time.sleep(0.5)
         before = self.sim.ok("photos")
@@ -217,7 +223,7 @@ class Services(unittest.TestCase):
                 time.sleep(0.5)
                 response = proxy(kind=kind)
             self.assertTrue(response.success, "calibration %d: %s" % (kind, response.message))
-            self.assertIn((0x000013, 0x00002E, 0x000031)[kind], self.sent_ids(since))
+            self.assert_sent((0x000013, 0x00002E, 0x000031)[kind], since)
         self.assert_rejected_without_sending("gimbal/calibrate", Calibrate, "kind", kind=3)
         # Let the last calibration end, then the servo off and the restart.
         self.assertTrue(wait_until(lambda: service("gimbal/servo_off", Trigger)().success, 12.0, step=0.5))
@@ -330,7 +336,8 @@ class Services(unittest.TestCase):
             elapsed = time.time() - started
             self.assertFalse(response.success)
             self.assertIn("timeout", response.message.lower())
-            self.assertEqual(self.sent_ids(since).count(0x000106), 3, "expected the request and 2 retries")
+            self.assertTrue(wait_until(lambda: self.sent_ids(since).count(0x000106) == 3, 2.0),
+                            "expected the request and 2 retries: %d sent" % self.sent_ids(since).count(0x000106))
             self.assertLess(elapsed, 3.0)
         finally:
             self.sim.ok("drop-acks 0")
