@@ -52,7 +52,7 @@ if has_tier ros; then
       name="$(basename "$t" .test)"
       echo "-- $name"
       # One results directory per .test file: rostest reuses file names across runs. No --text:
-      # in text mode the test nodes print results instead of writing their XML.
+      # with it rostest writes no JUnit XML for the Python test nodes.
       (source "$K40T_ROOT/scripts/ros_env.sh" && export ROS_TEST_RESULTS_DIR="$results/ros/$name" && \
         timeout 600 rostest k40t_driver "$(basename "$t")" > "$results/ros-$name.log" 2>&1)
       rc=$?

@@ -68,10 +68,10 @@ class Services(unittest.TestCase):
     def sent_ids(self, since):
         return [frame_id(f.data) for f in self.raw_tx.messages(since)]
 
-    def assert_sent(self, message_id, since, timeout=5.0):
-        # raw/tx reaches this subscriber asynchronously: the service may return first.
-        self.assertTrue(wait_until(lambda: message_id in self.sent_ids(since), timeout),
-                        "0x%06X not on raw/tx; sent: %s" % (message_id, [hex(i) for i in self.sent_ids(since)]))
+    def assert_sent(self, msg_id, since):
+        """raw/tx shows a frame with msg_id after `since` (it arrives just after the service returns)."""
+        self.assertTrue(wait_until(lambda: msg_id in self.sent_ids(since), 2.0),
+                        "0x%06X not on raw/tx: %s" % (msg_id, ["0x%06X" % i for i in self.sent_ids(since)]))
 
     def wait_joint(self, index, value, timeout=15.0, tol=0.03):
         return wait_until(lambda: self.joints.latest() and abs(self.joints.latest().position[index] - value) < tol,
@@ -114,6 +114,7 @@ class Services(unittest.TestCase):
         fix = NavSatFix()
         fix.header.stamp = rospy.Time.now()
         fix.latitude, fix.longitude, fix.altitude = 47.5, 8.25, 420.0
+        self.assertTrue(wait_until(lambda: fix_pub.get_num_connections() > 0, 5.0), "the driver does not subscribe fix")
         fix_pub.publish(fix)
         time.sleep(0.5)
         before = self.sim.ok("photos")
@@ -333,8 +334,8 @@ class Services(unittest.TestCase):
             response = service("set_palette", SetPalette)(palette=2)
             self.assertFalse(response.success)
             self.assertIn("timeout", response.message.lower())
-            wait_until(lambda: self.sent_ids(since).count(0x000106) >= 3, 5.0)
-            self.assertEqual(self.sent_ids(since).count(0x000106), 3, "expected the request and 2 retries")
+            self.assertTrue(wait_until(lambda: self.sent_ids(since).count(0x000106) == 3, 2.0),
+                            "expected the request and 2 retries: %d sent" % self.sent_ids(since).count(0x000106))
         finally:
             self.sim.ok("drop-acks 0")
 
