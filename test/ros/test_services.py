@@ -332,14 +332,11 @@ class Services(unittest.TestCase):
         self.sim.ok("drop-acks 1")
         try:
             since = time.time()
-            started = time.time()
             response = service("set_palette", SetPalette)(palette=2)
-            elapsed = time.time() - started
             self.assertFalse(response.success)
             self.assertIn("timeout", response.message.lower())
             self.assertTrue(wait_until(lambda: self.sent_ids(since).count(0x000106) == 3, 2.0),
                             "expected the request and 2 retries: %d sent" % self.sent_ids(since).count(0x000106))
-            self.assertLess(elapsed, 3.0)
         finally:
             self.sim.ok("drop-acks 0")
 

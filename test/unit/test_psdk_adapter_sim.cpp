@@ -88,6 +88,8 @@ class TestPayload {
     if (handle_camera_and_gimbal) add_camera_and_gimbal();
   }
 
+  ~TestPayload() { session_->stop(); }  // before the state its handlers use goes
+
   Session& session() { return *session_; }
   uint64_t pushes(const std::string& name) {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -218,7 +220,15 @@ class TestPayload {
   GimbalAngles angles_;
 };
 
+// Both sides are stopped before either is destroyed: a running side may still be writing into
+// its peer's link.
 struct Rig {
+  Rig() = default;
+  Rig(Rig&&) = default;
+  ~Rig() {
+    if (adapter) adapter->stop();
+    if (payload) payload->session().stop();
+  }
   std::unique_ptr<TestPayload> payload;
   std::unique_ptr<AdapterSimulator> adapter;
 };
@@ -347,7 +357,7 @@ TEST(PsdkAdapterSim, RecordsFloatingWindowMessages) {
 
 TEST(PsdkAdapterSim, ByteFaultsShowUpInThePayloadsCounters) {
   AdapterOptions o = default_options();
-  o.byte_faults.corrupt_byte_rate = 0.01;
+  o.byte_faults.corrupt_rate = 0.01;
   o.byte_faults.garbage_rate = 0.2;
   Rig rig = make_rig(o);
   EXPECT_TRUE(eventually([&] {
@@ -374,7 +384,7 @@ TEST(PsdkAdapterSim, DroppedAcksTimeOutAndSequenceJumpsAreCounted) {
 
 TEST(PsdkAdapterSim, DelayedAcksStillArrive) {
   AdapterOptions o = default_options();
-  o.protocol_faults.ack_delay = std::chrono::milliseconds(100);
+  o.protocol_faults.delay_ack_ms = 100;
   Rig rig = make_rig(o);
   GetPosition request;
   request.base_time = utc_from_unix_us(FlightModelOptions{}.start_utc_us).date_time;
@@ -392,6 +402,42 @@ TEST(PsdkAdapterSim, SilenceStopsThePushes) {
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
   EXPECT_EQ(rig.payload->pushes(AttitudePush::kName), before);
   EXPECT_GT(rig.adapter->stats().byte_faults.writes_silenced, 0u);
+}
+
+}  // namespace
+}  // namespace k40t::psdk::sim
+
+namespace k40t::psdk::sim {
+namespace {
+
+TEST(PsdkAdapterSim, DisconnectStopsThePushesUntilTheLinkIsBack) {
+  Rig rig = make_rig(default_options());
+  EXPECT_TRUE(eventually([&] { return rig.payload->pushes(AttitudePush::kName) > 0; }));
+  rig.adapter->disconnect_for(std::chrono::seconds(1));
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));  // let frames in flight land
+  const uint64_t before = rig.payload->pushes(AttitudePush::kName);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_EQ(rig.payload->pushes(AttitudePush::kName), before);
+  EXPECT_TRUE(eventually([&] { return rig.payload->pushes(AttitudePush::kName) > before + 10; }));
+  const AdapterStats stats = rig.adapter->stats();
+  EXPECT_EQ(stats.byte_faults.disconnects, 1u);
+  EXPECT_GT(stats.session.send_errors, 0u);  // pushes while the link was down
+}
+
+TEST(PsdkAdapterSim, SequenceJumpOnDemandIsOneGap) {
+  AdapterOptions o = default_options();
+  o.rates = PushRates{};
+  o.rates.attitude_hz = 50;  // one push stream keeps the count simple
+  o.rates.gps_hz = o.rates.raw_gps_hz = o.rates.raw_rtk_hz = o.rates.barometric_altitude_hz = 0;
+  o.rates.battery_hz = o.rates.uav_state_hz = o.rates.link_bandwidth_hz = 0;
+  o.rates.app_date_time_hz = o.rates.utc_time_hz = o.rates.other_payload_hz = 0;
+  Rig rig = make_rig(o);
+  EXPECT_TRUE(eventually([&] { return rig.payload->pushes(AttitudePush::kName) > 5; }));
+  const uint64_t gaps = rig.payload->session().stats().parser.sequence_gaps;
+  rig.adapter->jump_sequence(40);
+  EXPECT_TRUE(
+      eventually([&] { return rig.payload->session().stats().parser.sequence_gaps == gaps + 1; }));
+  EXPECT_GE(rig.payload->session().stats().parser.commands_lost, 40u);
 }
 
 }  // namespace

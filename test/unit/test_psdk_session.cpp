@@ -48,6 +48,21 @@ Endpoint make_endpoint(SessionOptions options = {}) {
   return e;
 }
 
+// An adapter and a payload session on two paired links. Both are stopped before either link is
+// destroyed: a running side may still be writing into its peer.
+struct LinkedPair {
+  explicit LinkedPair(SessionOptions adapter_options)
+      : adapter(make_endpoint(adapter_options)), payload(make_endpoint()) {
+    FakeLink::pair(*adapter.link, *payload.link);
+  }
+  ~LinkedPair() {
+    adapter.session->stop();
+    payload.session->stop();
+  }
+  Endpoint adapter;
+  Endpoint payload;
+};
+
 Bytes command_frame(CommandKey key, uint16_t sequence, const Bytes& data,
                     AckRequest ack = AckRequest::kAfterExecution,
                     const Aes128Ecb* cipher = nullptr) {
@@ -234,9 +249,9 @@ TEST(PsdkSession, RequestsAreMatchedOnSequenceSetAndId) {
 TEST(PsdkSession, AdapterAndPayloadTalk) {
   SessionOptions adapter_options;
   adapter_options.role = Sender::kAdapter;
-  Endpoint adapter = make_endpoint(adapter_options);
-  Endpoint payload = make_endpoint();
-  FakeLink::pair(*adapter.link, *payload.link);
+  LinkedPair pair(adapter_options);
+  Endpoint& adapter = pair.adapter;
+  Endpoint& payload = pair.payload;
   payload.session->handle<GetGimbalState>([](const GetGimbalState&) {
     GimbalStateAck ack;
     ack.mode = GimbalStateMode::kFollowing;
@@ -265,9 +280,9 @@ TEST(PsdkSession, ConcurrentRequestsAllFindTheirAcks) {
   SessionOptions adapter_options;
   adapter_options.role = Sender::kAdapter;
   adapter_options.ack_timeout = std::chrono::seconds(5);
-  Endpoint adapter = make_endpoint(adapter_options);
-  Endpoint payload = make_endpoint();
-  FakeLink::pair(*adapter.link, *payload.link);
+  LinkedPair pair(adapter_options);
+  Endpoint& adapter = pair.adapter;
+  Endpoint& payload = pair.payload;
   payload.session->handle<Handshake>([](const Handshake& h) {
     HandshakeAck ack;
     ack.data = h.data;

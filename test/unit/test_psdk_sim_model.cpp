@@ -128,7 +128,7 @@ std::unique_ptr<FaultyTransport> faulty_over(testing::FakeLink*& raw, ByteFaults
 TEST(PsdkSimFaults, CorruptionShowsUpAsCrcErrors) {
   testing::FakeLink* link = nullptr;
   ByteFaults faults;
-  faults.corrupt_byte_rate = 0.05;
+  faults.corrupt_rate = 0.05;
   auto faulty = faulty_over(link, faults);
   ASSERT_TRUE(faulty->open());
   for (int i = 0; i < 200; ++i)

@@ -140,6 +140,7 @@ void AdapterSimulator::run() {
       next_identity_s_ =
           elapsed_s() + std::chrono::duration<double>(options_.identity_interval).count();
     }
+    faulty_->poll();  // reopen the link after a simulated disconnect
     send_due_pushes(elapsed_s());
     flush_delayed_acks();
     lock.lock();
@@ -269,10 +270,11 @@ std::optional<Data> AdapterSimulator::answer_get_position(const IncomingCommand&
       ++stats_.acks_dropped;
       return std::nullopt;
     }
-    if (protocol_faults_.ack_delay.count() > 0) {
+    if (protocol_faults_.delay_ack_ms > 0 && roll(protocol_faults_.delay_ack_rate)) {
       ++stats_.acks_delayed;
-      delayed_.push_back(
-          {std::chrono::steady_clock::now() + protocol_faults_.ack_delay, in.header, data.value()});
+      const auto delay =
+          std::chrono::microseconds(static_cast<int64_t>(protocol_faults_.delay_ack_ms * 1000.0));
+      delayed_.push_back({std::chrono::steady_clock::now() + delay, in.header, data.value()});
       return std::nullopt;
     }
   }
@@ -332,6 +334,16 @@ void AdapterSimulator::set_protocol_faults(const ProtocolFaults& faults) {
 
 void AdapterSimulator::silence_for(std::chrono::milliseconds duration) {
   faulty_->silence_for(duration);
+}
+
+void AdapterSimulator::disconnect_for(std::chrono::milliseconds duration) {
+  faulty_->disconnect_for(duration);
+}
+
+void AdapterSimulator::jump_sequence(uint16_t count) {
+  session_->skip_sequence(count);
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++stats_.sequence_jumps;
 }
 
 void AdapterSimulator::announce_power_off() {

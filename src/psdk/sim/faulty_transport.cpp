@@ -1,5 +1,6 @@
 #include "k40t_driver/psdk/sim/faulty_transport.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace k40t::psdk::sim {
@@ -29,6 +30,31 @@ void FaultyTransport::silence_for(std::chrono::milliseconds duration) {
   silent_until_ = std::chrono::steady_clock::now() + duration;
 }
 
+void FaultyTransport::disconnect_for(std::chrono::milliseconds duration) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (disconnected_) return;
+    disconnected_ = true;
+    reopen_at_ = std::chrono::steady_clock::now() + duration;
+    ++stats_.disconnects;
+  }
+  inner_->close();  // outside the lock: the I/O thread may be sending while it is joined
+}
+
+void FaultyTransport::poll() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!disconnected_ || std::chrono::steady_clock::now() < reopen_at_) return;
+    disconnected_ = false;
+  }
+  (void)inner_->open();  // a device that is absent now is retried by the transport itself
+}
+
+bool FaultyTransport::disconnected() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return disconnected_;
+}
+
 ByteFaultStats FaultyTransport::fault_stats() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return stats_;
@@ -39,6 +65,7 @@ Status FaultyTransport::send(const uint8_t* data, size_t size) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     ++stats_.writes;
+    if (disconnected_) return Status::fail(inner_->url() + ": disconnected (simulated fault)");
     if (std::chrono::steady_clock::now() < silent_until_) {
       ++stats_.writes_silenced;
       return Status::ok();
@@ -46,16 +73,17 @@ Status FaultyTransport::send(const uint8_t* data, size_t size) {
     std::uniform_real_distribution<double> chance(0.0, 1.0);
     std::uniform_int_distribution<int> byte(0, 255);
     if (faults_.garbage_rate > 0 && chance(random_) < faults_.garbage_rate) {
-      const int n = std::uniform_int_distribution<int>(1, 32)(random_);
+      const int n = std::uniform_int_distribution<int>(
+          1, static_cast<int>(std::max<size_t>(faults_.garbage_max_bytes, 1)))(random_);
       for (int i = 0; i < n; ++i) out.push_back(static_cast<uint8_t>(byte(random_)));
       ++stats_.garbage_bursts;
       stats_.garbage_bytes += static_cast<uint64_t>(n);
     }
     const size_t start = out.size();
     out.insert(out.end(), data, data + size);
-    if (faults_.corrupt_byte_rate > 0) {
+    if (faults_.corrupt_rate > 0) {
       for (size_t i = start; i < out.size(); ++i) {
-        if (chance(random_) < faults_.corrupt_byte_rate) {
+        if (chance(random_) < faults_.corrupt_rate) {
           out[i] = static_cast<uint8_t>(out[i] ^
                                         (1u << std::uniform_int_distribution<int>(0, 7)(random_)));
           ++stats_.bytes_corrupted;

@@ -32,10 +32,12 @@
 
 namespace k40t::psdk::sim {
 
+// Named like k40t_sim's FaultSettings.
 struct ProtocolFaults {
-  double drop_ack_rate = 0.0;              // our ACKs to the payload's commands, not sent
-  std::chrono::milliseconds ack_delay{0};  // our ACKs, sent this late
-  double sequence_jump_rate = 0.0;         // per command: skip 1..100 sequence numbers
+  double drop_ack_rate = 0.0;       // probability that a payload command gets no ACK from us
+  double delay_ack_ms = 0.0;        // our ACKs go out this late...
+  double delay_ack_rate = 1.0;      // ...with this probability
+  double sequence_jump_rate = 0.0;  // per command: skip 1..100 sequence numbers
 };
 
 struct AdapterOptions {
@@ -99,6 +101,10 @@ class AdapterSimulator {
   void set_byte_faults(const ByteFaults& faults);
   void set_protocol_faults(const ProtocolFaults& faults);
   void silence_for(std::chrono::milliseconds duration);
+  // Closes the link and reopens it after `duration` (the worker thread reopens it).
+  void disconnect_for(std::chrono::milliseconds duration);
+  // Our following commands skip `count` sequence numbers (one gap).
+  void jump_sequence(uint16_t count);
   // From now on the battery push announces power-off (and asks the payload to get ready).
   void announce_power_off();
 
