@@ -117,13 +117,15 @@ class Services(unittest.TestCase):
         self.assertTrue(wait_until(lambda: fix_pub.get_num_connections() > 0, 5.0), "the driver does not subscribe fix")
         fix_pub.publish(fix)
         time.sleep(0.5)
-        before = self.sim.ok("photos")
         self.call_ok("take_photo", TakePhoto, lens=TakePhoto._request_class.LENS_VISIBLE, stop=False,
                      folder="survey", name="tower")
-        after = wait_until(lambda: self.sim.ok("photos") != before and self.sim.ok("photos"), 5.0)
-        self.assertTrue(after, "the simulator recorded no photo")
-        self.assertIn("tower", after)
-        self.assertIn("lat 47.5", after, "the photo is not geotagged with the fix: %s" % after)
+        # The pod files the photo first and attaches the position when the driver has answered its
+        # GPS request (section 3.2.4.3), so the listing shows "no gps" for a moment: wait for the tag.
+        tower = lambda: [p for p in self.sim.ok("photos").split("; ") if p.startswith("survey/tower.jpg")]
+        self.assertTrue(wait_until(tower, 5.0), "the simulator recorded no photo: %s" % self.sim.ok("photos"))
+        tagged = wait_until(lambda: [p for p in tower() if "lat 47.5" in p], 5.0)
+        self.assertTrue(tagged, "the photo is not geotagged with the fix: %s" % tower())
+        self.assertIn("lon 8.25", tagged[0])
 
     def test_take_photo_rejects_long_names(self):
         self.assert_rejected_without_sending("take_photo", TakePhoto, "folder", lens=0, stop=False, folder="f" * 21, name="")
