@@ -8,13 +8,13 @@ set -euo pipefail
 source "$(dirname "$0")/env.sh"
 what="${1:-all}"
 
+mkdir -p "$K40T_BUILD"
 if [ "$what" = core ] || [ "$what" = all ]; then
   cmake -S "$K40T_ROOT" -B "$K40T_BUILD/core" -DK40T_WITH_ROS=OFF -DK40T_BUILD_BENCH=ON > "$K40T_BUILD/core-configure.log" 2>&1 \
     || { cat "$K40T_BUILD/core-configure.log"; exit 1; }
   cmake --build "$K40T_BUILD/core" -j "$JOBS"
 fi
 if [ "$what" = ros ] || [ "$what" = all ]; then
-  mkdir -p "$K40T_BUILD"
   cmake -S "$K40T_ROOT" -B "$K40T_BUILD/ros" -DK40T_WITH_ROS=ON -DPYTHON_EXECUTABLE=/usr/bin/python3 \
     -DCATKIN_DEVEL_PREFIX="$K40T_BUILD/ros/devel" -DCATKIN_ENABLE_TESTING=ON > "$K40T_BUILD/ros-configure.log" 2>&1 \
     || { cat "$K40T_BUILD/ros-configure.log"; exit 1; }

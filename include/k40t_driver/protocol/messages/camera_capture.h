@@ -1,0 +1,192 @@
+// Capture requests of the common camera family (document section 3.2.4.1-3.2.4.7): photo/video
+// mode, photo settings, take photo, record, zoom and precise re-shoot. Host 0x01/0x01 -> camera
+// 0x04/0x01; multi-byte fields low byte first (section 2.1); reserved bytes sent as zero (NOTES
+// A11) and optional on receive. Every ACK is the bare response code (PlainAck). Their status
+// frames are in camera_status.h.
+#pragma once
+
+#include <string>
+
+#include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/messages/ack.h"
+#include "k40t_driver/protocol/messages/camera_enums.h"
+
+namespace k40t::protocol {
+
+// Widths of the folder and file name text fields of 0x000302, 0x000303 and 0x000307: no NUL
+// terminator when full; empty means "root folder" / "default name".
+constexpr size_t kCameraFolderBytes = 20;
+constexpr size_t kCameraFileNameBytes = 32;
+
+// The hybrid (optical + digital) zoom range of 0x000304 and 0x000307, as a ratio.
+constexpr double kMinZoomRatio = 1.0;
+constexpr double kMaxZoomRatio = 160.0;
+
+// 0x000300, section 3.2.4.1: photo or video mode. In photo mode the pod ignores record requests
+// and vice versa.
+struct CaptureModeRequest {
+  static constexpr MessageId kId = 0x000300;
+  static constexpr const char* kName = "capture_mode";
+  static constexpr const char* kSection = "3.2.4.1";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 2;
+  static constexpr size_t kMinSize = 1;
+  using Ack = PlainAck;
+
+  CaptureMode mode = CaptureMode::kPhoto;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("mode", self.mode);
+  }
+};
+
+// 0x000301, section 3.2.4.2: photo mode, time-lapse interval (5/7/30/60 s) and burst count (3/5).
+// The pod reports all three in 0x000003 whatever the mode, so all three are always validated.
+struct PhotoSettingsRequest {
+  static constexpr MessageId kId = 0x000301;
+  static constexpr const char* kName = "photo_settings";
+  static constexpr const char* kSection = "3.2.4.2";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 4;
+  static constexpr size_t kMinSize = 3;
+  using Ack = PlainAck;
+
+  PhotoMode photo_mode = PhotoMode::kSingle;
+  uint8_t time_lapse_interval_s = 5;
+  uint8_t burst_count = 3;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("photo_mode", self.photo_mode);
+    v("time_lapse_interval_s", self.time_lapse_interval_s);
+    v("burst_count", self.burst_count);
+  }
+};
+
+// What 0x000302 and 0x000303 share (54 bytes): which cameras, start/stop, then the folder (20
+// bytes) and file name (32 bytes) to save into; empty texts mean the root folder and the pod's
+// default naming.
+template <class Lens, class Action>
+struct FileCaptureRequest {
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 2 + kCameraFolderBytes + kCameraFileNameBytes;  // 54
+  static constexpr size_t kMinSize = kSize;
+  using Ack = PlainAck;
+
+  Lens lens = Lens::kDefault;
+  Action action = Action::kStart;
+  std::string folder;
+  std::string name;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("lens", self.lens);
+    v("action", self.action);
+    v("folder", self.folder);
+    v("name", self.name);
+  }
+};
+
+// 0x000302, section 3.2.4.3: take a photo (action 0), or stop a burst (1). Status frame 0x020302
+// follows except for single shots; the pod asks for GPS (0x000310) before shooting.
+struct TakePhotoRequest : FileCaptureRequest<PhotoLensMode, PhotoAction> {
+  static constexpr MessageId kId = 0x000302;
+  static constexpr const char* kName = "take_photo";
+  static constexpr const char* kSection = "3.2.4.3";
+};
+
+// 0x000303, section 3.2.4.4: start (1) or stop (2) recording; status frame 0x020303 at 1 Hz.
+// Starting twice does not stop a recording.
+struct RecordRequest : FileCaptureRequest<RecordLensMode, RecordAction> {
+  static constexpr MessageId kId = 0x000303;
+  static constexpr const char* kName = "record";
+  static constexpr const char* kSection = "3.2.4.4";
+};
+
+// 0x000304, section 3.2.4.5: byte 1 = 0x00 "start setting", uint16 zoom ratio x10 (1.0..160.0x).
+// Status frame 0x020304 tells when the zoom has arrived.
+struct ZoomRatioRequest {
+  static constexpr MessageId kId = 0x000304;
+  static constexpr const char* kName = "zoom_ratio";
+  static constexpr const char* kSection = "3.2.4.5";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 3;
+  static constexpr size_t kMinSize = 3;
+  using Ack = PlainAck;
+
+  double zoom_x = 1.0;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("zoom_x", self.zoom_x);
+  }
+};
+
+// 0x000306, section 3.2.4.6: continuous zoom in/out, stop, or one step in/out.
+struct ContinuousZoomRequest {
+  static constexpr MessageId kId = 0x000306;
+  static constexpr const char* kName = "continuous_zoom";
+  static constexpr const char* kSection = "3.2.4.6";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 2;
+  static constexpr size_t kMinSize = 1;
+  using Ack = PlainAck;
+
+  ZoomCommand command = ZoomCommand::kStop;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("command", self.command);
+  }
+};
+
+// 0x000307, section 3.2.4.7: take a photo at a given visible resolution, zoom and focus position
+// (the values a previous shot reported in 0x000005), into folder/name. Status frame 0x020307.
+// The focus position has no unit in the document: it is passed through as the raw uint16.
+struct PreciseReshootRequest {
+  static constexpr MessageId kId = 0x000307;
+  static constexpr const char* kName = "precise_reshoot";
+  static constexpr const char* kSection = "3.2.4.7";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 6 + kCameraFolderBytes + kCameraFileNameBytes;  // 58
+  static constexpr size_t kMinSize = kSize;
+  using Ack = PlainAck;
+
+  PhotoLensMode lens = PhotoLensMode::kDefault;
+  ReshootResolution resolution = ReshootResolution::k4000x3000;
+  double zoom_x = 1.0;  // uint16 x10 on the wire
+  uint16_t focal_length_raw = 0;
+  std::string folder;
+  std::string name;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("lens", self.lens);
+    v("resolution", self.resolution);
+    v("zoom_x", self.zoom_x);
+    v("focal_length_raw", self.focal_length_raw);
+    v("folder", self.folder);
+    v("name", self.name);
+  }
+};
+
+}  // namespace k40t::protocol

@@ -1,0 +1,220 @@
+// Stream and image requests of the common camera family (document sections 3.2.4.8-3.2.4.10,
+// 3.2.4.18, 3.2.4.19, 3.2.4.22, 3.2.4.23 and 3.2.4.25): output bitrate, resolution and encoding,
+// image mode, focus, OSD watermark, AI recognition and box tracking. Host 0x01/0x01 -> camera
+// 0x04/0x01; multi-byte fields low byte first (section 2.1); reserved bytes sent as zero (NOTES
+// A11) and optional on receive. Every ACK is the bare response code (PlainAck).
+#pragma once
+
+#include <array>
+
+#include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/messages/ack.h"
+#include "k40t_driver/protocol/messages/camera_enums.h"
+
+namespace k40t::protocol {
+
+// Pixel coordinates of focus areas and tracking boxes refer to the 1920x1080 output stream
+// (section 3.2.4.25 gives these bounds; 1080P30 is the only supported stream resolution).
+constexpr int kStreamWidthPx = 1920;
+constexpr int kStreamHeightPx = 1080;
+
+// 0x000308, section 3.2.4.8: output stream bitrate, 1 (1 Mbit/s) .. 6 (12 Mbit/s).
+struct StreamBitrateRequest {
+  static constexpr MessageId kId = 0x000308;
+  static constexpr const char* kName = "stream_bitrate";
+  static constexpr const char* kSection = "3.2.4.8";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 2;
+  static constexpr size_t kMinSize = 1;
+  using Ack = PlainAck;
+
+  StreamBitrate bitrate = StreamBitrate::k4Mbps;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("bitrate", self.bitrate);
+  }
+};
+
+// 0x00030A, section 3.2.4.9: output resolution, 1 = 1080P30. The document lists 2 = 720P30 as
+// "not supported", so validation refuses it (the code is still decoded and named).
+struct StreamResolutionRequest {
+  static constexpr MessageId kId = 0x00030A;
+  static constexpr const char* kName = "stream_resolution";
+  static constexpr const char* kSection = "3.2.4.9";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 2;
+  static constexpr size_t kMinSize = 1;
+  using Ack = PlainAck;
+
+  StreamResolution resolution = StreamResolution::k1080p30;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("resolution", self.resolution);
+  }
+};
+
+// 0x00030B, section 3.2.4.10: output encoding H264 (0) or H265 (1).
+struct StreamEncodingRequest {
+  static constexpr MessageId kId = 0x00030B;
+  static constexpr const char* kName = "stream_encoding";
+  static constexpr const char* kSection = "3.2.4.10";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 2;
+  static constexpr size_t kMinSize = 1;
+  using Ack = PlainAck;
+
+  VideoEncoding encoding = VideoEncoding::kH264;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("encoding", self.encoding);
+  }
+};
+
+// 0x000313, section 3.2.4.18: focus command; the uint16 area corners (top-left, bottom-right)
+// are used by area auto focus (4) only and must then span a non-empty box.
+struct FocusRequest {
+  static constexpr MessageId kId = 0x000313;
+  static constexpr const char* kName = "focus";
+  static constexpr const char* kSection = "3.2.4.18";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 10;
+  static constexpr size_t kMinSize = 9;
+  using Ack = PlainAck;
+
+  FocusCommand command = FocusCommand::kAuto;
+  uint16_t area_left_px = 0;
+  uint16_t area_top_px = 0;
+  uint16_t area_right_px = 0;
+  uint16_t area_bottom_px = 0;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("command", self.command);
+    v("area_left_px", self.area_left_px);
+    v("area_top_px", self.area_top_px);
+    v("area_right_px", self.area_right_px);
+    v("area_bottom_px", self.area_bottom_px);
+  }
+};
+
+// 0x000314, section 3.2.4.19: OSD watermark off (0) / on (1), then two reserved bytes.
+struct OsdWatermarkRequest {
+  static constexpr MessageId kId = 0x000314;
+  static constexpr const char* kName = "osd_watermark";
+  static constexpr const char* kSection = "3.2.4.19";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 3;
+  static constexpr size_t kMinSize = 1;
+  using Ack = PlainAck;
+
+  bool enabled = false;
+
+  Status validate() const { return Status::ok(); }
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("enabled", self.enabled);
+  }
+};
+
+// 0x000318, section 3.2.4.22: what the stream shows: 0 infrared, 5/6 visible, 7 split screen.
+struct ImageModeRequest {
+  static constexpr MessageId kId = 0x000318;
+  static constexpr const char* kName = "image_mode";
+  static constexpr const char* kSection = "3.2.4.22";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 2;
+  static constexpr size_t kMinSize = 1;
+  using Ack = PlainAck;
+
+  ImageMode mode = ImageMode::kVisible;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("mode", self.mode);
+  }
+};
+
+// 0x000319, section 3.2.4.23: AI recognition on (1) / off (2), the model to load (0 = default
+// YOLO model) and up to 10 target class ids from the model's label file. The document does not
+// say how unused slots are marked; they are sent as the caller set them (default 0).
+struct AiRecognitionRequest {
+  static constexpr size_t kClassSlots = 10;
+  static constexpr MessageId kId = 0x000319;
+  static constexpr const char* kName = "ai_recognition";
+  static constexpr const char* kSection = "3.2.4.23";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 2 + kClassSlots;  // 12
+  static constexpr size_t kMinSize = kSize;
+  using Ack = PlainAck;
+
+  FeatureSwitch recognition = FeatureSwitch::kOn;
+  uint8_t model = 0;
+  std::array<uint8_t, kClassSlots> classes{};
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    static constexpr const char* kClassNames[kClassSlots] = {
+        "class_1", "class_2", "class_3", "class_4", "class_5",
+        "class_6", "class_7", "class_8", "class_9", "class_10"};
+    v("recognition", self.recognition);
+    v("model", self.model);
+    for (size_t i = 0; i < kClassSlots; ++i) v(kClassNames[i], self.classes[i]);
+  }
+};
+
+// 0x000324, section 3.2.4.25: box tracking on (1) / off (2) and the box in stream pixels: x, y
+// of the top-left corner, width, height (uint16), with x + width <= 1920 and y + height <= 1080.
+// The pod needs AI recognition on; the document's table header says "Byte1-2" for the switch but
+// its details and the 10-byte total make it one byte.
+struct BoxTrackingRequest {
+  static constexpr MessageId kId = 0x000324;
+  static constexpr const char* kName = "box_tracking";
+  static constexpr const char* kSection = "3.2.4.25";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 10;
+  static constexpr size_t kMinSize = 9;
+  using Ack = PlainAck;
+
+  FeatureSwitch tracking = FeatureSwitch::kOn;
+  uint16_t x_px = 0;
+  uint16_t y_px = 0;
+  uint16_t width_px = 0;
+  uint16_t height_px = 0;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("tracking", self.tracking);
+    v("x_px", self.x_px);
+    v("y_px", self.y_px);
+    v("width_px", self.width_px);
+    v("height_px", self.height_px);
+  }
+};
+
+}  // namespace k40t::protocol

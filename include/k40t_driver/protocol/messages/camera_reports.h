@@ -1,0 +1,81 @@
+// Periodic reports of the camera (document sections 3.2.1.1 and 3.2.1.4): camera system status
+// 0x000003 and upgrade/repair progress 0x000008, both 1 Hz, camera 0x04/0x01 -> host. Multi-byte
+// fields low byte first (section 2.1); the trailing reserved byte is optional on receive.
+#pragma once
+
+#include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/messages/camera_enums.h"
+
+namespace k40t::protocol {
+
+// One count of the SD capacities of 0x000003 in MB. The document writes the unit as "MB*10"
+// (单位: MB*10), in the same style as "unit 0.1 degC" elsewhere, so one count is 10 MB. Reading
+// it as 0.1 MB would cap a card at 6.5 GB, smaller than the cards the pod takes.
+constexpr double kSdCapacityUnitMb = 10.0;
+constexpr double kSdCapacityMaxMb = 65535 * kSdCapacityUnitMb;
+
+// 0x000003, section 3.2.1.1, 1 Hz: the camera's modes, stream settings and SD card.
+struct CameraSystemStatus {
+  static constexpr MessageId kId = 0x000003;
+  static constexpr const char* kName = "camera_system_status";
+  static constexpr const char* kSection = "3.2.1.1";
+  static constexpr Direction kDirection = Direction::kPodToHost;
+  static constexpr size_t kSize = 16;
+  static constexpr size_t kMinSize = 15;
+
+  CaptureMode capture_mode = CaptureMode::kPhoto;
+  ReportedStreamResolution stream_resolution = ReportedStreamResolution::k1080p30;  // NOTES A6
+  VideoEncoding encoding = VideoEncoding::kH264;
+  ImageMode image_mode = ImageMode::kVisible;  // "stream mode": what the stream shows
+  StreamBitrate bitrate = StreamBitrate::k4Mbps;
+  PhotoMode photo_mode = PhotoMode::kSingle;
+  uint8_t time_lapse_interval_s = 5;  // 5/7/30/60
+  uint8_t burst_count = 3;            // 3/5
+  SdCardState sd_state = SdCardState::kNormal;
+  double sd_total_mb = 0;  // uint16 counts of kSdCapacityUnitMb on the wire
+  double sd_free_mb = 0;
+  double sd_used_mb = 0;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("capture_mode", self.capture_mode);
+    v("stream_resolution", self.stream_resolution);
+    v("encoding", self.encoding);
+    v("image_mode", self.image_mode);
+    v("bitrate", self.bitrate);
+    v("photo_mode", self.photo_mode);
+    v("time_lapse_interval_s", self.time_lapse_interval_s);
+    v("burst_count", self.burst_count);
+    v("sd_state", self.sd_state);
+    v("sd_total_mb", self.sd_total_mb);
+    v("sd_free_mb", self.sd_free_mb);
+    v("sd_used_mb", self.sd_used_mb);
+  }
+};
+
+// 0x000008, section 3.2.1.4, 1 Hz: camera upgrade or repair state and progress 0..100 %.
+struct CameraUpgradeStatus {
+  static constexpr MessageId kId = 0x000008;
+  static constexpr const char* kName = "camera_upgrade_status";
+  static constexpr const char* kSection = "3.2.1.4";
+  static constexpr Direction kDirection = Direction::kPodToHost;
+  static constexpr size_t kSize = 3;
+  static constexpr size_t kMinSize = 2;
+
+  CameraUpgradeState state = CameraUpgradeState::kSucceeded;
+  uint8_t progress_percent = 0;  // 0 start, 100 complete
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("state", self.state);
+    v("progress_percent", self.progress_percent);
+  }
+};
+
+}  // namespace k40t::protocol
