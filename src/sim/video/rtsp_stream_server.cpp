@@ -45,11 +45,11 @@ namespace {
 std::string launch_line(const RtspServerOptions& options) {
   return "( appsrc name=src is-live=true do-timestamp=true format=time max-bytes=0 "
          "max-buffers=2 leaky-type=downstream "
-         "! x264enc tune=zerolatency speed-preset=ultrafast bitrate=" +
+         "! x264enc tune=zerolatency speed-preset=ultrafast sliced-threads=false threads=1 bitrate=" +
          std::to_string(options.bitrate_kbps) +
          " key-int-max=" + std::to_string(options.key_frame_interval) +
          " ! video/x-h264,profile=constrained-baseline "
-         "! rtph264pay name=pay0 pt=96 config-interval=-1 )";
+         "! rtph264pay name=pay0 pt=96 config-interval=-1 aggregate-mode=none )";
 }
 
 Status check_elements() {
