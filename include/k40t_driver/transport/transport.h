@@ -7,9 +7,13 @@
 //   pty:///tmp/k40t_pod                 creates a pseudo-terminal and a symlink to its slave at
 //                                       the path (simulator side; the driver opens it as serial)
 //
+// Servers: a tcp-server is kConnecting/kReconnecting while no client is attached and kConnected
+// with one; a udp-server is kConnected once bound, and send() fails until a peer has spoken.
+//
 // A transport owns one I/O thread. open() returns at once; the thread connects, delivers bytes to
-// the receive callback, and on loss (unplugged adapter, TCP reset, pty closed) reports kReconnecting
-// and retries with exponential back-off until close(). Callbacks run on the I/O thread.
+// the receive callback, and on loss (unplugged adapter, TCP reset, pty closed) reports
+// kReconnecting and retries with exponential back-off until close(). Callbacks run on the I/O
+// thread.
 #pragma once
 
 #include <chrono>
@@ -18,14 +22,15 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "k40t_driver/protocol/result.h"
 
 namespace k40t::transport {
 
 enum class LinkState {
-  kClosed,        // not opened, or close() called
-  kConnecting,    // first attempt under way
+  kClosed,      // not opened, or close() called
+  kConnecting,  // first attempt under way
   kConnected,
   kReconnecting,  // lost; waiting for the next attempt (see LinkStats::last_error)
 };
@@ -37,9 +42,9 @@ struct LinkStats {
   uint64_t writes = 0;
   uint64_t reads = 0;
   uint64_t send_errors = 0;
-  uint64_t connects = 0;       // successful (re)connections
-  uint64_t disconnects = 0;    // losses of an established link
-  std::string last_error;      // human-readable, names the device
+  uint64_t connects = 0;     // successful (re)connections
+  uint64_t disconnects = 0;  // losses of an established link
+  std::string last_error;    // human-readable, names the device
 };
 
 struct ReconnectPolicy {
@@ -83,5 +88,8 @@ class Transport {
 // Creates the transport for `url`; a malformed URL or unknown scheme fails with a message naming
 // the URL and what is wrong. Schemes are looked up in a table, not an if/else chain.
 Result<std::unique_ptr<Transport>> make_transport(const std::string& url);
+
+// The schemes make_transport() knows, in table order (for help texts and error messages).
+std::vector<std::string> known_schemes();
 
 }  // namespace k40t::transport

@@ -1,7 +1,376 @@
-// visible messages — see the family comment at the top once written.
+// Visible-light (zoom) camera messages (document sections 3.2.1.3 and 3.2.3, system 0x04): the
+// 5 Hz status report 0x000005, the settings read 0x000200 with its data ACK 0x010200, and the
+// setting requests 0x000201..0x00020B (ACK: response code only). Every setting request starts
+// with the byte 0x00 "start setting"; 0x000205 (EV) and 0x000206 (white balance) exist only in
+// the Chinese original. Switches coded 0x01 on / 0x02 off are bools here.
+// Ambiguities and decisions: docs/protocol/thermal_visible.md.
 #pragma once
 
 #include "k40t_driver/protocol/message.h"
 #include "k40t_driver/protocol/messages/ack.h"
+#include "k40t_driver/protocol/messages/setting_request.h"
 
-namespace k40t::protocol {}  // namespace k40t::protocol
+namespace k40t::protocol {
+
+// Section 3.2.3.2 (recording resolution).
+enum class VideoResolution : uint8_t { k1920x1080 = 0x08, k3840x2160 = 0x26, k4000x3000 = 0x36 };
+const char* to_string(VideoResolution resolution);
+
+// Section 3.2.3.1 byte 3; 0x000202 (section 3.2.3.3) can set only 0x14 and 0x15.
+enum class PhotoResolution : uint8_t { k8000x6000 = 0x14, k4000x3000 = 0x15, k5160x3870 = 0x16 };
+const char* to_string(PhotoResolution resolution);
+
+// Section 3.2.3.4.
+enum class Iso : uint8_t {
+  kAuto = 0x00,
+  k100 = 0x01,
+  k200 = 0x02,
+  k400 = 0x03,
+  k800 = 0x04,
+  k1600 = 0x05,
+  k3200 = 0x06,
+  k6400 = 0x07,
+};
+const char* to_string(Iso iso);
+
+// Section 3.2.3.5; the document gives 0x0C twice, NOTES A7 makes 0x0D = 1/6000.
+enum class Shutter : uint8_t {
+  kAuto = 0x00,
+  k1_4 = 0x01,
+  k1_8 = 0x02,
+  k1_15 = 0x03,
+  k1_30 = 0x04,
+  k1_60 = 0x05,
+  k1_125 = 0x06,
+  k1_250 = 0x07,
+  k1_500 = 0x08,
+  k1_1000 = 0x09,
+  k1_2000 = 0x0A,
+  k1_4000 = 0x0B,
+  k1_5000 = 0x0C,
+  k1_6000 = 0x0D,
+  k1_8000 = 0x0E,
+};
+const char* to_string(Shutter shutter);
+
+// Sections 3.2.1.3 byte 6 and 3.2.3.6: exposure compensation codes.
+enum class ExposureValue : uint8_t {
+  kAuto = 0x00,
+  kPlus2 = 0x0A,
+  kPlus1 = 0x10,
+  kZero = 0x16,
+  kMinus1 = 0x1C,
+  kMinus2 = 0x23,
+};
+const char* to_string(ExposureValue ev);
+
+// Section 3.2.3.7 (bits 3..0 of the byte; bits 7..4 reserved).
+enum class WhiteBalance : uint8_t {
+  kAuto = 1,
+  kIncandescent = 2,
+  kFluorescent = 3,
+  kWarmFluorescent = 4,
+  kDaylight = 5,
+  kCloudy = 6,
+  kDusk = 7,
+  kDark = 8,
+};
+const char* to_string(WhiteBalance white_balance);
+
+// Section 3.2.3.8.
+enum class AntiFlicker : uint8_t { kOff = 1, k50Hz = 2, k60Hz = 3, kAuto = 4 };
+const char* to_string(AntiFlicker anti_flicker);
+
+// Section 3.2.3.12.
+enum class MeteringMode : uint8_t { kCenterWeighted = 1, kArea = 2, kAverage = 3 };
+const char* to_string(MeteringMode mode);
+
+// Section 3.2.3.1 byte 5: the recording bitrate in Mbit/s that a code 0..3 stands for, which
+// depends on the recording resolution and the encoder (H.265 is the pod's default). 0 for a
+// combination the document does not list.
+double video_bitrate_mbps(uint8_t code, VideoResolution resolution, bool h265);
+
+constexpr int kVisibleBitrateCodeMax = 3;
+constexpr int kVisibleLevelMax = 100;  // zoom fine-tune, backlight, strong-light values
+
+// ---- 0x000005, section 3.2.1.3, 5 Hz ---------------------------------------------------------
+struct VisibleStatus {
+  static constexpr MessageId kId = 0x000005;
+  static constexpr const char* kName = "visible_status";
+  static constexpr const char* kSection = "3.2.1.3";
+  static constexpr Direction kDirection = Direction::kPodToHost;
+  static constexpr size_t kSize = 15;
+  static constexpr size_t kMinSize = 14;  // the reserved last byte is optional on receive
+
+  bool zooming = false;        // 0x00 zoom done, 0x01 zooming
+  double focal_length_mm = 0;  // uint16 x0.01 mm
+  double zoom_x = 0;           // uint16 x0.1, optical and digital combined (digital above 11x)
+  ExposureValue ev = ExposureValue::kAuto;
+  double iso_db = 0;  // uint16 x0.1 dB
+  uint16_t shutter_us = 0;
+  bool ae_lock_on = false;                  // 0x01 on, 0x02 off
+  bool focusing = false;                    // 0x00 focus done, 0x01 focusing
+  double precise_shot_focal_length_mm = 0;  // uint16, unit not given: read as 0.01 mm
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("zooming", self.zooming);
+    v("focal_length_mm", self.focal_length_mm);
+    v("zoom_x", self.zoom_x);
+    v("ev", self.ev);
+    v("iso_db", self.iso_db);
+    v("shutter_us", self.shutter_us);
+    v("ae_lock_on", self.ae_lock_on);
+    v("focusing", self.focusing);
+    v("precise_shot_focal_length_mm", self.precise_shot_focal_length_mm);
+  }
+};
+
+// ---- 0x010200, section 3.2.3.1: every visible-camera setting ---------------------------------
+// Response code (byte order NOTES A2), then 15 bytes. A refusal may carry the response code only.
+struct VisibleSettingsAck {
+  static constexpr MessageId kId = 0x010200;
+  static constexpr const char* kName = "visible_read_settings_ack";
+  static constexpr const char* kSection = "3.2.3.1";
+  static constexpr Direction kDirection = Direction::kPodToHost;
+  static constexpr size_t kSize = 17;
+  static constexpr size_t kMinSize = 2;
+  static constexpr size_t kSettingsSize = 15;  // after the code
+
+  ResponseCode code = ResponseCode::kOk;
+  PhotoResolution photo_resolution = PhotoResolution::k4000x3000;
+  VideoResolution video_resolution = VideoResolution::k1920x1080;
+  uint8_t video_bitrate_code = 0;  // 0..3, see video_bitrate_mbps()
+  WhiteBalance white_balance = WhiteBalance::kAuto;
+  ExposureValue ev = ExposureValue::kAuto;
+  Iso iso = Iso::kAuto;
+  Shutter shutter = Shutter::kAuto;
+  uint8_t zoom_fine_tune = 0;      // 0..100
+  bool backlight_on = false;       // byte 13 bit 7
+  uint8_t backlight_value = 0;     // byte 13 bits 6..0
+  bool strong_light_on = false;    // byte 14 bit 7
+  uint8_t strong_light_value = 0;  // byte 14 bits 6..0
+  bool ae_lock_on = false;
+  bool watermark_on = false;                      // byte 16 bits 3..0
+  AntiFlicker anti_flicker = AntiFlicker::kAuto;  // byte 16 bits 7..4
+  MeteringMode metering = MeteringMode::kArea;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("code", self.code);
+    v("photo_resolution", self.photo_resolution);
+    v("video_resolution", self.video_resolution);
+    v("video_bitrate_code", self.video_bitrate_code);
+    v("white_balance", self.white_balance);
+    v("ev", self.ev);
+    v("iso", self.iso);
+    v("shutter", self.shutter);
+    v("zoom_fine_tune", self.zoom_fine_tune);
+    v("backlight_on", self.backlight_on);
+    v("backlight_value", self.backlight_value);
+    v("strong_light_on", self.strong_light_on);
+    v("strong_light_value", self.strong_light_value);
+    v("ae_lock_on", self.ae_lock_on);
+    v("watermark_on", self.watermark_on);
+    v("anti_flicker", self.anti_flicker);
+    v("metering", self.metering);
+  }
+};
+
+// ---- 0x000200, section 3.2.3.1: byte 1 = 0x01 "read all settings", byte 2 reserved -----------
+struct VisibleReadSettingsRequest : ReadAllSettingsRequest<VisibleSettingsAck> {
+  static constexpr MessageId kId = 0x000200;
+  static constexpr const char* kName = "visible_read_settings";
+  static constexpr const char* kSection = "3.2.3.1";
+};
+
+// ---- 0x000201, section 3.2.3.2: 0x00 start setting, resolution ------------------------------
+struct VisibleVideoResolutionRequest
+    : ByteSettingRequest<VisibleVideoResolutionRequest, SettingPrefix::kStartSetting, 0> {
+  static constexpr MessageId kId = 0x000201;
+  static constexpr const char* kName = "visible_set_video_resolution";
+  static constexpr const char* kSection = "3.2.3.2";
+
+  VideoResolution video_resolution = VideoResolution::k1920x1080;
+  static constexpr auto kValue = &VisibleVideoResolutionRequest::video_resolution;
+  static constexpr const char* kValueName = "video_resolution";
+};
+
+// ---- 0x000202, section 3.2.3.3: 0x00 start setting, 0x14 or 0x15 ----------------------------
+struct VisiblePhotoResolutionRequest
+    : ByteSettingRequest<VisiblePhotoResolutionRequest, SettingPrefix::kStartSetting, 0> {
+  static constexpr MessageId kId = 0x000202;
+  static constexpr const char* kName = "visible_set_photo_resolution";
+  static constexpr const char* kSection = "3.2.3.3";
+
+  PhotoResolution photo_resolution = PhotoResolution::k4000x3000;
+  static constexpr auto kValue = &VisiblePhotoResolutionRequest::photo_resolution;
+  static constexpr const char* kValueName = "photo_resolution";
+
+  Status validate() const;  // 0x16 (5160x3870) is reported by 0x010200 but cannot be set
+};
+
+// ---- 0x000203, section 3.2.3.4: 0x00 start setting, ISO code --------------------------------
+struct VisibleIsoRequest : ByteSettingRequest<VisibleIsoRequest, SettingPrefix::kStartSetting, 0> {
+  static constexpr MessageId kId = 0x000203;
+  static constexpr const char* kName = "visible_set_iso";
+  static constexpr const char* kSection = "3.2.3.4";
+
+  Iso iso = Iso::kAuto;
+  static constexpr auto kValue = &VisibleIsoRequest::iso;
+  static constexpr const char* kValueName = "iso";
+};
+
+// ---- 0x000204, section 3.2.3.5: 0x00 start setting, shutter code ----------------------------
+struct VisibleShutterRequest
+    : ByteSettingRequest<VisibleShutterRequest, SettingPrefix::kStartSetting, 0> {
+  static constexpr MessageId kId = 0x000204;
+  static constexpr const char* kName = "visible_set_shutter";
+  static constexpr const char* kSection = "3.2.3.5";
+
+  Shutter shutter = Shutter::kAuto;
+  static constexpr auto kValue = &VisibleShutterRequest::shutter;
+  static constexpr const char* kValueName = "shutter";
+};
+
+// ---- 0x000205, section 3.2.3.6 (Chinese original only): 0x00 start setting, EV code ---------
+struct VisibleEvRequest : ByteSettingRequest<VisibleEvRequest, SettingPrefix::kStartSetting, 0> {
+  static constexpr MessageId kId = 0x000205;
+  static constexpr const char* kName = "visible_set_ev";
+  static constexpr const char* kSection = "3.2.3.6";
+
+  ExposureValue ev = ExposureValue::kAuto;
+  static constexpr auto kValue = &VisibleEvRequest::ev;
+  static constexpr const char* kValueName = "ev";
+};
+
+// ---- 0x000206, section 3.2.3.7 (Chinese original only): 0x00 start setting, white balance in
+// bits 3..0 (bits 7..4 reserved), 2 reserved bytes -----------------------------------------------
+struct VisibleWhiteBalanceRequest
+    : ByteSettingRequest<VisibleWhiteBalanceRequest, SettingPrefix::kStartSetting, 2> {
+  static constexpr MessageId kId = 0x000206;
+  static constexpr const char* kName = "visible_set_white_balance";
+  static constexpr const char* kSection = "3.2.3.7";
+  static constexpr uint8_t kValueMask = 0x0F;  // bits 7..4 reserved
+
+  WhiteBalance white_balance = WhiteBalance::kAuto;
+  static constexpr auto kValue = &VisibleWhiteBalanceRequest::white_balance;
+  static constexpr const char* kValueName = "white_balance";
+};
+
+// ---- 0x000207, section 3.2.3.8: 0x00 start setting, anti-flicker code -----------------------
+struct VisibleAntiFlickerRequest
+    : ByteSettingRequest<VisibleAntiFlickerRequest, SettingPrefix::kStartSetting, 0> {
+  static constexpr MessageId kId = 0x000207;
+  static constexpr const char* kName = "visible_set_anti_flicker";
+  static constexpr const char* kSection = "3.2.3.8";
+
+  AntiFlicker anti_flicker = AntiFlicker::kAuto;
+  static constexpr auto kValue = &VisibleAntiFlickerRequest::anti_flicker;
+  static constexpr const char* kValueName = "anti_flicker";
+};
+
+// "0x00 start setting, 0x01 on / 0x02 off, value 0..100": strong-light suppression (3.2.3.9)
+// and backlight compensation (3.2.3.10). A request derives from SwitchAndValueRequest<Self> and
+// names its two fields with kOn/kOnName and kValue/kValueName (see setting_request.h).
+template <class Derived>
+struct SwitchAndValueRequest {
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 3;
+  static constexpr size_t kMinSize = 3;
+  using Ack = PlainAck;
+
+  Status validate() const {
+    return check_range(Derived::kValueName, static_cast<int64_t>(derived().*Derived::kValue), 0,
+                       kVisibleLevelMax);
+  }
+  void encode(ByteWriter& w, const CodecOptions&) const {
+    w.u8(kStartSettingByte);
+    w.u8(derived().*Derived::kOn ? kOnCode : kOffCode);
+    w.u8(derived().*Derived::kValue);
+  }
+  Status decode(ByteReader& r, const CodecOptions&) {
+    const Status start = detail::expect_command_byte(r, kStartSettingByte, "start setting");
+    const Status on =
+        detail::read_switch(r, Derived::kOnName, kOnCode, kOffCode, &(derived().*Derived::kOn));
+    derived().*Derived::kValue = r.u8();
+    return first_failure(start, on);
+  }
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v(Derived::kOnName, self.*Derived::kOn);
+    v(Derived::kValueName, self.*Derived::kValue);
+  }
+
+ private:
+  static constexpr uint8_t kOnCode = 0x01;
+  static constexpr uint8_t kOffCode = 0x02;
+  const Derived& derived() const { return static_cast<const Derived&>(*this); }
+  Derived& derived() { return static_cast<Derived&>(*this); }
+};
+
+// ---- 0x000208, section 3.2.3.9: 0x00 start setting, 0x01 on / 0x02 off, value 0..100 --------
+// The pod cannot have strong-light suppression and backlight compensation on at once (note of
+// 3.2.3.9/3.2.3.10): that depends on the pod's state, so the session or the simulator enforces
+// it, not this struct.
+struct VisibleStrongLightRequest : SwitchAndValueRequest<VisibleStrongLightRequest> {
+  static constexpr MessageId kId = 0x000208;
+  static constexpr const char* kName = "visible_set_strong_light";
+  static constexpr const char* kSection = "3.2.3.9";
+
+  bool strong_light_on = false;
+  uint8_t strong_light_value = 0;
+  static constexpr auto kOn = &VisibleStrongLightRequest::strong_light_on;
+  static constexpr const char* kOnName = "strong_light_on";
+  static constexpr auto kValue = &VisibleStrongLightRequest::strong_light_value;
+  static constexpr const char* kValueName = "strong_light_value";
+};
+
+// ---- 0x000209, section 3.2.3.10: 0x00 start setting, 0x01 on / 0x02 off, value 0..100 -------
+// Not together with strong-light suppression (see VisibleStrongLightRequest).
+struct VisibleBacklightRequest : SwitchAndValueRequest<VisibleBacklightRequest> {
+  static constexpr MessageId kId = 0x000209;
+  static constexpr const char* kName = "visible_set_backlight";
+  static constexpr const char* kSection = "3.2.3.10";
+
+  bool backlight_on = false;
+  uint8_t backlight_value = 0;
+  static constexpr auto kOn = &VisibleBacklightRequest::backlight_on;
+  static constexpr const char* kOnName = "backlight_on";
+  static constexpr auto kValue = &VisibleBacklightRequest::backlight_value;
+  static constexpr const char* kValueName = "backlight_value";
+};
+
+// ---- 0x00020A, section 3.2.3.11: 0x00 start setting, 0x01 on / 0x02 off --------------------
+struct VisibleAeLockRequest
+    : ByteSettingRequest<VisibleAeLockRequest, SettingPrefix::kStartSetting, 0> {
+  static constexpr MessageId kId = 0x00020A;
+  static constexpr const char* kName = "visible_set_ae_lock";
+  static constexpr const char* kSection = "3.2.3.11";
+  static constexpr uint8_t kOnCode = 0x01;
+  static constexpr uint8_t kOffCode = 0x02;
+
+  bool ae_lock_on = false;
+  static constexpr auto kValue = &VisibleAeLockRequest::ae_lock_on;
+  static constexpr const char* kValueName = "ae_lock_on";
+};
+
+// ---- 0x00020B, section 3.2.3.12: 0x00 start setting, metering mode --------------------------
+struct VisibleMeteringRequest
+    : ByteSettingRequest<VisibleMeteringRequest, SettingPrefix::kStartSetting, 0> {
+  static constexpr MessageId kId = 0x00020B;
+  static constexpr const char* kName = "visible_set_metering";
+  static constexpr const char* kSection = "3.2.3.12";
+
+  MeteringMode metering = MeteringMode::kArea;
+  static constexpr auto kValue = &VisibleMeteringRequest::metering;
+  static constexpr const char* kValueName = "metering";
+};
+
+}  // namespace k40t::protocol

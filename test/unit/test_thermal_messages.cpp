@@ -1,0 +1,408 @@
+// Thermal camera messages (document sections 3.2.1.2 and 3.2.2). The values below are the ones
+// the comments of test/data/golden/thermal_visible.txt spell out for each hand-written frame.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "k40t_driver/protocol/messages/thermal.h"
+#include "message_test_support.h"
+
+namespace k40t::protocol {
+namespace {
+
+using testing::defined_codes;
+using testing::expect_decode_error;
+using testing::expect_matches_golden;
+using testing::expect_range_error;
+using testing::golden_message;
+
+const char kGolden[] = "thermal_visible.txt";
+
+// ---- golden frames ------------------------------------------------------------------------
+
+TEST(ThermalGolden, StatusReport) {  // 3.2.1.2
+  ThermalStatus m;
+  m.max_degC = 52.3;
+  m.min_degC = -12.5;
+  m.center_degC = 20.0;
+  m.point_degC = 36.6;
+  m.average_degC = 18.4;
+  m.max_x_px = 400;
+  m.max_y_px = 300;
+  m.min_x_px = 1200;
+  m.min_y_px = 1000;
+  m.center_x_px = 800;
+  m.center_y_px = 528;
+  m.point_x_px = 960;
+  m.point_y_px = 544;
+  m.high_alarm = true;
+  m.threshold_alarm = true;
+  expect_matches_golden(m, kGolden);
+}
+
+ThermalSettingsAck golden_settings() {  // 3.2.2.1, the comment of the golden frame
+  ThermalSettingsAck m;
+  m.palette = Palette::kIronRed;
+  m.measurement_on = true;
+  m.measurement_type = ThermalMeasurementType::kArea;
+  m.core_type = ThermalCoreType::kRadiometric;
+  m.zoom_x = 2;
+  m.sharpness = 50;
+  m.gain_mode = ThermalGainMode::kAuto;
+  m.brightness = 60;
+  m.contrast = 70;
+  m.denoise_on = true;
+  m.denoise_level = 30;
+  m.enhancement_on = true;
+  m.enhancement_level = 3;
+  m.high_alarm_on = true;
+  m.high_alarm_degC = 120.0;
+  m.difference_alarm_on = true;
+  m.difference_alarm_degC = 15.5;
+  m.threshold_alarm_on = true;
+  m.threshold_reference_degC = -20.0;
+  m.threshold_float_degC = 5.0;
+  return m;
+}
+
+TEST(ThermalGolden, ReadSettingsRequestAndAck) {  // 3.2.2.1
+  expect_matches_golden(ThermalReadSettingsRequest{}, kGolden);
+  expect_matches_golden(golden_settings(), kGolden);
+}
+
+TEST(ThermalGolden, BareRefusalAckKeepsDefaults) {  // 3.2.2.1 + 3.3: code only
+  ThermalSettingsAck refusal;
+  refusal.code = ResponseCode::kBusy;
+  expect_matches_golden(refusal, kGolden, 1);
+}
+
+TEST(ThermalGolden, SettingRequests) {  // 3.2.2.2 .. 3.2.2.15
+  ThermalZoomRequest zoom;
+  zoom.zoom_x = 4;
+  expect_matches_golden(zoom, kGolden);
+
+  ThermalPaletteRequest palette;
+  palette.palette = Palette::kCyanRed;
+  expect_matches_golden(palette, kGolden);
+
+  ThermalMeasurementRequest measurement;
+  measurement.measurement_on = false;
+  expect_matches_golden(measurement, kGolden);
+
+  ThermalSharpnessRequest sharpness;
+  sharpness.sharpness = 75;
+  expect_matches_golden(sharpness, kGolden);
+
+  ThermalBrightnessRequest brightness;
+  brightness.brightness = 100;
+  expect_matches_golden(brightness, kGolden);
+
+  ThermalContrastRequest contrast;
+  contrast.contrast = 40;
+  expect_matches_golden(contrast, kGolden);
+
+  ThermalDenoiseRequest denoise;
+  denoise.denoise_on = true;
+  denoise.denoise_level = 80;
+  expect_matches_golden(denoise, kGolden);
+
+  ThermalEnhancementRequest enhancement;
+  enhancement.enhancement_level = 10;
+  expect_matches_golden(enhancement, kGolden);
+
+  ThermalSpotRequest spot;
+  spot.x_px = 960;
+  spot.y_px = 544;
+  expect_matches_golden(spot, kGolden);
+
+  ThermalAreaRequest area;
+  area.width_px = 200;
+  area.height_px = 100;
+  area.center_x_px = 800;
+  area.center_y_px = 500;
+  expect_matches_golden(area, kGolden);
+
+  ThermalGainModeRequest gain;
+  gain.gain_mode = ThermalGainMode::kLow;
+  expect_matches_golden(gain, kGolden);
+
+  ThermalAlarmsRequest alarms;
+  alarms.high_alarm_on = true;
+  alarms.high_alarm_degC = 80.0;
+  alarms.low_alarm_on = true;
+  alarms.low_alarm_degC = -10.5;
+  alarms.difference_alarm_on = false;
+  expect_matches_golden(alarms, kGolden);
+
+  ThermalOverlayRequest overlay;
+  overlay.overlay_on = true;
+  expect_matches_golden(overlay, kGolden);
+
+  ThermalThresholdAlarmRequest threshold;
+  threshold.threshold_alarm_on = true;
+  threshold.threshold_reference_degC = 25.0;
+  threshold.threshold_float_degC = 3.5;
+  expect_matches_golden(threshold, kGolden);
+}
+
+// ---- wire details -------------------------------------------------------------------------
+
+TEST(ThermalSettingsAck, LittleEndianOptionReadsTheSameBytesSwapped) {  // NOTES A2
+  CodecOptions little;
+  little.ack_byte_order = ByteOrder::kLittle;
+  auto payload = encode_payload(golden_settings(), little);
+  ASSERT_TRUE(payload);
+  // code 00 00; high alarm 1200 = 0x04B0 low byte first at bytes 11-12
+  EXPECT_EQ(payload->bytes[10], 0xB0);
+  EXPECT_EQ(payload->bytes[11], 0x04);
+  auto decoded = decode_payload<ThermalSettingsAck>(payload->data(), payload->size, little);
+  ASSERT_TRUE(decoded);
+  EXPECT_DOUBLE_EQ(decoded->high_alarm_degC, 120.0);
+  auto crossed = decode_payload<ThermalSettingsAck>(payload->data(), payload->size);  // big
+  ASSERT_TRUE(crossed);
+  EXPECT_DOUBLE_EQ(crossed->high_alarm_degC, static_cast<int16_t>(0xB004) / 10.0);
+}
+
+TEST(ThermalSettingsAck, AcceptsSettingsWithoutTheTrailingReservedBytes) {
+  auto payload = encode_payload(golden_settings());
+  ASSERT_TRUE(payload);
+  auto decoded = decode_payload<ThermalSettingsAck>(payload->data(), payload->size - 2);
+  ASSERT_TRUE(decoded) << decoded.error();
+  EXPECT_DOUBLE_EQ(decoded->threshold_float_degC, 5.0);
+}
+
+TEST(ThermalSettingsAck, OkWithTruncatedSettingsIsAnError) {
+  expect_decode_error<ThermalSettingsAck>({0x00, 0x00}, "need 19 bytes, got 0");
+  expect_decode_error<ThermalSettingsAck>({0x00, 0x01, 0x05, 0x16}, "need 19 bytes, got 2");
+  expect_decode_error<ThermalSettingsAck>({0x00}, "too short");
+}
+
+TEST(ThermalSettingsAck, UnpacksEveryBitOfByte4) {  // 3.2.2.1 byte 4
+  std::vector<uint8_t> payload(23, 0);
+  payload[2] = 0x01;
+  payload[3] = 0x41;  // 0b01000001: measurement off, point, sighting core, zoom 8
+  auto decoded = decode_payload<ThermalSettingsAck>(payload.data(), payload.size());
+  ASSERT_TRUE(decoded);
+  EXPECT_FALSE(decoded->measurement_on);
+  EXPECT_EQ(decoded->measurement_type, ThermalMeasurementType::kPoint);
+  EXPECT_EQ(decoded->core_type, ThermalCoreType::kSighting);
+  EXPECT_EQ(decoded->zoom_x, 8);
+  // alarm limit bytes 00 00 are 0.0 degC and on: only -2732 means off
+  EXPECT_TRUE(decoded->high_alarm_on);
+  EXPECT_DOUBLE_EQ(decoded->high_alarm_degC, 0.0);
+}
+
+TEST(ThermalAlarmsRequest, AcceptsSevenBytesOnReceive) {  // NOTES A9
+  const std::vector<uint8_t> seven = {0x54, 0xF5, 0x54, 0xF5, 0x64, 0x00, 0x00};
+  auto decoded = decode_payload<ThermalAlarmsRequest>(seven.data(), seven.size());
+  ASSERT_TRUE(decoded) << decoded.error();
+  EXPECT_FALSE(decoded->high_alarm_on);
+  EXPECT_FALSE(decoded->low_alarm_on);
+  EXPECT_TRUE(decoded->difference_alarm_on);
+  EXPECT_DOUBLE_EQ(decoded->difference_alarm_degC, 10.0);
+  expect_decode_error<ThermalAlarmsRequest>({0x54, 0xF5, 0x54, 0xF5, 0x64, 0x00}, "need 7");
+}
+
+TEST(ThermalAlarmsRequest, OffSendsMinus2732WhateverTheValue) {  // 3.2.2.13
+  ThermalAlarmsRequest alarms;
+  alarms.high_alarm_on = false;
+  alarms.high_alarm_degC = 9999;  // ignored while off, not validated
+  auto payload = encode_payload(alarms);
+  ASSERT_TRUE(payload) << payload.error();
+  const std::vector<uint8_t> off = {0x54, 0xF5, 0x54, 0xF5, 0x54, 0xF5, 0x00, 0x00};
+  EXPECT_EQ(std::vector<uint8_t>(payload->data(), payload->data() + payload->size), off);
+}
+
+TEST(ThermalRequests, DecodeRefusesBytesTheStructCannotHold) {
+  expect_decode_error<ThermalReadSettingsRequest>({0x02, 0x00}, "byte 1 must be 0x01");
+  expect_decode_error<ThermalMeasurementRequest>({0x02, 0x00}, "'measurement_on'");
+  expect_decode_error<ThermalOverlayRequest>({0x07, 0x00}, "'overlay_on'");
+  expect_decode_error<ThermalDenoiseRequest>({0x02, 0x10, 0x00}, "'denoise_on'");
+  expect_decode_error<ThermalThresholdAlarmRequest>({0x05, 0, 0, 0, 0, 0}, "'threshold_alarm_on'");
+}
+
+TEST(ThermalRequests, DecodeReportsOutOfRangeValuesForValidateToRefuse) {
+  // What arrives is reported as it is; the simulator validates and answers with a NACK.
+  auto zoom = decode_payload<ThermalZoomRequest>(std::vector<uint8_t>{0x09, 0x00}.data(), 2);
+  ASSERT_TRUE(zoom);
+  EXPECT_EQ(zoom->zoom_x, 9);
+  EXPECT_FALSE(zoom->validate());
+}
+
+TEST(ThermalStatus, AnyNonZeroFlagIsAnAlarmAndReservedBytesAreOptional) {
+  std::vector<uint8_t> payload(30, 0);
+  payload[26] = 0x02;
+  auto decoded = decode_payload<ThermalStatus>(payload.data(), payload.size());
+  ASSERT_TRUE(decoded) << decoded.error();
+  EXPECT_TRUE(decoded->high_alarm);
+  EXPECT_FALSE(decoded->low_alarm);
+  expect_decode_error<ThermalStatus>(std::vector<uint8_t>(29, 0), "need 30");
+}
+
+// ---- ranges ---------------------------------------------------------------------------------
+
+TEST(ThermalRanges, EveryValidatedFieldIsNamedInItsError) {
+  const auto status = golden_message<ThermalStatus>(kGolden);
+  expect_range_error(status, "max_degC", [](auto& m) { m.max_degC = 3276.8; });
+  expect_range_error(status, "min_degC", [](auto& m) { m.min_degC = -3276.9; });
+  expect_range_error(status, "center_degC", [](auto& m) { m.center_degC = 4000; });
+  expect_range_error(status, "point_degC", [](auto& m) { m.point_degC = -4000; });
+  expect_range_error(status, "average_degC", [](auto& m) { m.average_degC = NAN; });
+
+  const ThermalSettingsAck ack = golden_settings();
+  expect_range_error(ack, "palette", [](auto& m) { m.palette = static_cast<Palette>(21); });
+  expect_range_error(ack, "measurement_type",
+                     [](auto& m) { m.measurement_type = static_cast<ThermalMeasurementType>(2); });
+  expect_range_error(ack, "core_type",
+                     [](auto& m) { m.core_type = static_cast<ThermalCoreType>(2); });
+  expect_range_error(ack, "zoom_x", [](auto& m) { m.zoom_x = 0; });
+  expect_range_error(ack, "sharpness", [](auto& m) { m.sharpness = 101; });
+  expect_range_error(ack, "gain_mode",
+                     [](auto& m) { m.gain_mode = static_cast<ThermalGainMode>(3); });
+  expect_range_error(ack, "brightness", [](auto& m) { m.brightness = 101; });
+  expect_range_error(ack, "contrast", [](auto& m) { m.contrast = 101; });
+  expect_range_error(ack, "denoise_level", [](auto& m) { m.denoise_level = 101; });
+  expect_range_error(ack, "enhancement_level", [](auto& m) { m.enhancement_level = 11; });
+  expect_range_error(ack, "high_alarm_degC", [](auto& m) { m.high_alarm_degC = 500.1; });
+  expect_range_error(ack, "low_alarm_degC", [](auto& m) {
+    m.low_alarm_on = true;
+    m.low_alarm_degC = -100.1;
+  });
+  expect_range_error(ack, "difference_alarm_degC", [](auto& m) { m.difference_alarm_degC = 0.0; });
+  expect_range_error(ack, "threshold_reference_degC",
+                     [](auto& m) { m.threshold_reference_degC = 50.1; });
+  expect_range_error(ack, "threshold_float_degC", [](auto& m) { m.threshold_float_degC = -0.1; });
+
+  expect_range_error(ThermalZoomRequest{}, "zoom_x", [](auto& m) { m.zoom_x = 9; });
+  expect_range_error(ThermalZoomRequest{}, "zoom_x", [](auto& m) { m.zoom_x = 0; });
+  expect_range_error(ThermalPaletteRequest{}, "palette",
+                     [](auto& m) { m.palette = static_cast<Palette>(0); });
+  expect_range_error(ThermalPaletteRequest{}, "palette",
+                     [](auto& m) { m.palette = static_cast<Palette>(21); });
+  expect_range_error(ThermalSharpnessRequest{}, "sharpness", [](auto& m) { m.sharpness = 101; });
+  expect_range_error(ThermalBrightnessRequest{}, "brightness", [](auto& m) { m.brightness = 101; });
+  expect_range_error(ThermalContrastRequest{}, "contrast", [](auto& m) { m.contrast = 255; });
+  expect_range_error(ThermalDenoiseRequest{}, "denoise_level",
+                     [](auto& m) { m.denoise_level = 101; });
+  expect_range_error(ThermalEnhancementRequest{}, "enhancement_level",
+                     [](auto& m) { m.enhancement_level = 11; });
+  expect_range_error(ThermalSpotRequest{}, "x_px", [](auto& m) { m.x_px = 1921; });
+  expect_range_error(ThermalSpotRequest{}, "y_px", [](auto& m) { m.y_px = 1089; });
+  expect_range_error(ThermalGainModeRequest{}, "gain_mode",
+                     [](auto& m) { m.gain_mode = static_cast<ThermalGainMode>(3); });
+
+  const ThermalAlarmsRequest alarms{};
+  expect_range_error(alarms, "high_alarm_degC", [](auto& m) {
+    m.high_alarm_on = true;
+    m.high_alarm_degC = -100.1;
+  });
+  expect_range_error(alarms, "low_alarm_degC", [](auto& m) {
+    m.low_alarm_on = true;
+    m.low_alarm_degC = 500.1;
+  });
+  expect_range_error(alarms, "difference_alarm_degC", [](auto& m) {
+    m.difference_alarm_on = true;
+    m.difference_alarm_degC = 600.1;
+  });
+
+  const ThermalThresholdAlarmRequest threshold{};
+  expect_range_error(threshold, "threshold_reference_degC",
+                     [](auto& m) { m.threshold_reference_degC = -30.1; });
+  expect_range_error(threshold, "threshold_float_degC",
+                     [](auto& m) { m.threshold_float_degC = 80.1; });
+}
+
+TEST(ThermalRanges, BoundsThemselvesAreAccepted) {
+  ThermalAlarmsRequest alarms;
+  alarms.high_alarm_on = alarms.low_alarm_on = alarms.difference_alarm_on = true;
+  alarms.high_alarm_degC = 500.0;
+  alarms.low_alarm_degC = -100.0;
+  alarms.difference_alarm_degC = 0.1;
+  EXPECT_TRUE(alarms.validate()) << alarms.validate().message();
+  alarms.difference_alarm_degC = 600.0;
+  EXPECT_TRUE(alarms.validate()) << alarms.validate().message();
+
+  ThermalSpotRequest spot;
+  spot.x_px = kThermalPictureWidth;
+  spot.y_px = kThermalPictureHeight;
+  EXPECT_TRUE(spot.validate());
+
+  ThermalThresholdAlarmRequest threshold;
+  threshold.threshold_reference_degC = -30.0;
+  threshold.threshold_float_degC = 80.0;
+  EXPECT_TRUE(threshold.validate());
+  ThermalZoomRequest zoom;
+  zoom.zoom_x = 8;
+  EXPECT_TRUE(zoom.validate());
+}
+
+ThermalAreaRequest area(uint16_t w, uint16_t h, uint16_t cx, uint16_t cy) {
+  ThermalAreaRequest a;
+  a.width_px = w;
+  a.height_px = h;
+  a.center_x_px = cx;
+  a.center_y_px = cy;
+  return a;
+}
+
+TEST(ThermalAreaRequest, RectangleMustStayInsideTheMeasurableArea) {  // note of 3.2.2.11
+  EXPECT_TRUE(area(959, 991, 799, 527).validate()) << "x 320..1278, y 32..1022, the largest";
+  EXPECT_TRUE(area(1, 1, 320, 32).validate()) << "one pixel in the corner";
+  EXPECT_TRUE(area(2, 2, 1278, 1022).validate()) << "x 1277..1279, y 1021..1023";
+  EXPECT_FALSE(area(2, 2, 1279, 1022).validate()) << "x 1278..1280";
+  const ThermalAreaRequest valid = area(200, 100, 800, 500);
+  expect_range_error(valid, "width_px", [](auto& m) { m.width_px = 0; });
+  expect_range_error(valid, "height_px", [](auto& m) { m.height_px = 0; });
+  expect_range_error(valid, "center_x_px", [](auto& m) { m.center_x_px = 319; });
+  expect_range_error(valid, "center_y_px", [](auto& m) { m.center_y_px = 1024; });
+  // centre inside, but the rectangle pokes out on the left: x 250..450
+  expect_range_error(valid, "center_x_px", [](auto& m) { m.center_x_px = 350; });
+  expect_range_error(valid, "width_px", [](auto& m) { m.center_x_px = 350; });
+  // and at the bottom: y 1000..1020 is fine, 1004..1024 is not
+  expect_range_error(area(20, 20, 600, 1010), "height_px", [](auto& m) { m.center_y_px = 1014; });
+  const auto refused = encode_payload(area(200, 100, 350, 500));
+  ASSERT_FALSE(refused);
+  EXPECT_NE(refused.error().find("x 250..450"), std::string::npos) << refused.error();
+  EXPECT_NE(refused.error().find("320..1279"), std::string::npos) << refused.error();
+}
+
+// ---- enums ----------------------------------------------------------------------------------
+
+TEST(ThermalEnums, AllTwentyPalettesHaveTheDocumentsNames) {  // 3.2.2.3
+  const char* names[] = {
+      "white_hot",      "black_hot",       "rainbow",       "high_contrast_rainbow",
+      "iron_red",       "magma",           "sky",           "medium_grey",
+      "grey_red",       "purple_orange",   "special_1",     "warning_red",
+      "ice_fire",       "cyan_red",        "special_2",     "gradient_red",
+      "gradient_green", "gradient_yellow", "warning_green", "warning_blue"};
+  for (int code = 1; code <= 20; ++code) {
+    const char* name = to_string(static_cast<Palette>(code));
+    ASSERT_NE(name, nullptr) << code;
+    EXPECT_STREQ(name, names[code - 1]) << code;
+  }
+  EXPECT_EQ(to_string(static_cast<Palette>(0)), nullptr);
+  EXPECT_EQ(to_string(static_cast<Palette>(21)), nullptr);
+  EXPECT_EQ(to_string(static_cast<Palette>(255)), nullptr);
+}
+
+TEST(ThermalEnums, OtherEnumsDefineExactlyTheDocumentsCodes) {
+  EXPECT_EQ(defined_codes<ThermalGainMode>(), (std::set<int>{0, 1, 2}));
+  EXPECT_STREQ(to_string(ThermalGainMode::kAuto), "auto");
+  EXPECT_EQ(defined_codes<ThermalMeasurementType>(), (std::set<int>{0, 1}));
+  EXPECT_STREQ(to_string(ThermalMeasurementType::kArea), "area");
+  EXPECT_EQ(defined_codes<ThermalCoreType>(), (std::set<int>{0, 1}));
+  EXPECT_STREQ(to_string(ThermalCoreType::kRadiometric), "radiometric");
+}
+
+TEST(ThermalEnums, EnumErrorListsTheAllowedCodes) {
+  ThermalGainModeRequest gain;
+  gain.gain_mode = static_cast<ThermalGainMode>(7);
+  const Status status = gain.validate();
+  ASSERT_FALSE(status);
+  EXPECT_NE(status.message().find("0 (high), 1 (low), 2 (auto)"), std::string::npos)
+      << status.message();
+}
+
+}  // namespace
+}  // namespace k40t::protocol

@@ -1,0 +1,144 @@
+// The thermal and visible families as a whole: every hand-written golden frame decodes through
+// the catalogue to its "=" line, every message id of the two families has a golden frame, every
+// struct survives a round trip, and the catalogue entries are consistent.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "k40t_driver/protocol/catalogue.h"
+#include "k40t_driver/protocol/messages/thermal.h"
+#include "k40t_driver/protocol/messages/visible.h"
+#include "message_test_support.h"
+
+namespace k40t::protocol {
+namespace {
+
+const char kGolden[] = "thermal_visible.txt";
+
+bool in_families(MessageId id) {
+  const MessageId request = request_id_of(id);
+  return request == 0x000004 || request == 0x000005 || (request >= 0x000100 && request <= 0x0002FF);
+}
+
+TEST(ThermalVisibleGoldenFile, EveryFrameDecodesToItsExpectedLine) {
+  const std::vector<testing::GoldenFrame> golden =
+      testing::load_golden(testing::golden_path(kGolden));
+  ASSERT_GE(golden.size(), 30u);
+  for (const testing::GoldenFrame& frame : golden) {
+    SCOPED_TRACE(std::string(kGolden) + ":" + std::to_string(frame.line) + " " + frame.name);
+    const testing::SplitFrame split = testing::split_frame(frame);
+    ASSERT_TRUE(split.ok) << "not exactly one frame with a good checksum";
+    const MessageInfo* info = find_message(split.header.message_id);
+    ASSERT_NE(info, nullptr) << "id not in the catalogue";
+    EXPECT_TRUE(in_families(info->id));
+    EXPECT_EQ(frame.name, info->name) << "the comment names another message";
+    EXPECT_EQ(frame.section, info->section) << "the comment cites another section";
+    testing::RecordedFields fields;
+    const Status described = info->describe(split.payload.data(), split.payload.size(), {}, fields);
+    ASSERT_TRUE(described) << described.message();
+    EXPECT_TRUE(testing::fields_match(fields, frame.expected));
+  }
+}
+
+TEST(ThermalVisibleGoldenFile, CoversEveryMessageIdOfBothFamilies) {
+  std::set<MessageId> covered;
+  for (const testing::GoldenFrame& frame : testing::load_golden(testing::golden_path(kGolden))) {
+    covered.insert(testing::split_frame(frame).header.message_id);
+  }
+  size_t plain_acks = 0;
+  size_t family_ids = 0;
+  for (const MessageInfo& info : catalogue()) {
+    if (!in_families(info.id)) continue;
+    ++family_ids;
+    const bool plain_ack = kind_of(info.id) == MessageKind::kAck && info.size == PlainAck::kSize;
+    if (plain_ack) {
+      plain_acks += covered.count(info.id);
+      continue;
+    }
+    EXPECT_EQ(covered.count(info.id), 1u) << info.name << " has no golden frame";
+  }
+  EXPECT_GE(plain_acks, 1u);
+  // 2 reports, 2 read-all requests with 2 data ACKs, 14 + 11 setting requests and their ACKs
+  EXPECT_EQ(family_ids, 2u + 2u + 2u + 2u * 14u + 2u * 11u);
+}
+
+template <class... T>
+struct TypeList {};
+using FamilyTypes =
+    TypeList<ThermalStatus, ThermalReadSettingsRequest, ThermalSettingsAck, ThermalZoomRequest,
+             ThermalPaletteRequest, ThermalMeasurementRequest, ThermalSharpnessRequest,
+             ThermalBrightnessRequest, ThermalContrastRequest, ThermalDenoiseRequest,
+             ThermalEnhancementRequest, ThermalSpotRequest, ThermalAreaRequest,
+             ThermalGainModeRequest, ThermalAlarmsRequest, ThermalOverlayRequest,
+             ThermalThresholdAlarmRequest, VisibleStatus, VisibleReadSettingsRequest,
+             VisibleSettingsAck, VisibleVideoResolutionRequest, VisiblePhotoResolutionRequest,
+             VisibleIsoRequest, VisibleShutterRequest, VisibleEvRequest, VisibleWhiteBalanceRequest,
+             VisibleAntiFlickerRequest, VisibleStrongLightRequest, VisibleBacklightRequest,
+             VisibleAeLockRequest, VisibleMeteringRequest>;
+
+template <class T>
+void round_trip_golden_and_check_entry() {
+  testing::expect_round_trip(testing::golden_message<T>(kGolden));
+  const MessageInfo* info = find_message(T::kId);
+  ASSERT_NE(info, nullptr) << T::kName;
+  EXPECT_STREQ(info->name, T::kName);
+  EXPECT_EQ(info->size, T::kSize) << T::kName;
+  EXPECT_LE(T::kMinSize, T::kSize) << T::kName;
+  EXPECT_EQ(find_message(T::kName), info) << T::kName;
+}
+
+template <class... T>
+void for_each_type(TypeList<T...>) {
+  (round_trip_golden_and_check_entry<T>(), ...);
+}
+
+TEST(ThermalVisibleStructs, EveryStructRoundTripsAndIsInTheCatalogue) {
+  for_each_type(FamilyTypes{});
+}
+
+template <class T>
+void expect_ack_of_request() {
+  const MessageInfo* ack = find_message(ack_id_of(T::kId));
+  ASSERT_NE(ack, nullptr) << T::kName;
+  EXPECT_EQ(ack->direction, Direction::kPodToHost);
+  if constexpr (std::is_same_v<typename T::Ack, PlainAck>) {
+    EXPECT_EQ(std::string(ack->name), std::string(T::kName) + "_ack");
+    EXPECT_EQ(ack->size, PlainAck::kSize);
+  } else {
+    EXPECT_EQ(ack->id, T::Ack::kId);
+    EXPECT_STREQ(ack->name, T::Ack::kName);
+  }
+}
+
+template <class... T>
+void for_each_request(TypeList<T...>) {
+  (
+      [] {
+        if constexpr (T::kDirection == Direction::kHostToPod) expect_ack_of_request<T>();
+      }(),
+      ...);
+}
+
+TEST(ThermalVisibleStructs, EveryRequestHasItsAckInTheCatalogue) {
+  for_each_request(FamilyTypes{});
+}
+
+TEST(ThermalVisibleStructs, ValuesBetweenWireStepsRoundToTheNearestStep) {
+  ThermalThresholdAlarmRequest threshold;
+  threshold.threshold_reference_degC = 12.34;  // -> 123
+  threshold.threshold_float_degC = 0.06;       // -> 1
+  auto payload = encode_payload(threshold);
+  ASSERT_TRUE(payload);
+  EXPECT_EQ(payload->bytes[1], 123);
+  EXPECT_EQ(payload->bytes[3], 1);
+  VisibleStatus status;
+  status.focal_length_mm = 4.567;  // -> 457
+  payload = encode_payload(status);
+  ASSERT_TRUE(payload);
+  EXPECT_EQ(payload->bytes[1] | payload->bytes[2] << 8, 457);
+}
+
+}  // namespace
+}  // namespace k40t::protocol
