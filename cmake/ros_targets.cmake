@@ -29,11 +29,18 @@ install(DIRECTORY include/k40t_driver/ DESTINATION ${CATKIN_PACKAGE_INCLUDE_DEST
 install(FILES nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 install(DIRECTORY launch config urdf rviz DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 
-# rostest programs: test/ros/*.cpp are gtest nodes (one executable each), test/ros/*.py are
-# Python test nodes run by /usr/bin/python3; test/ros/*.test files are run by scripts/run_tests.sh.
+# rostest programs, run by scripts/run_tests.sh through test/ros/*.test:
+#   test/ros/unit/*.cpp  gtest of the ROS layer's own logic (conversions, rate dead-man...), one
+#                        binary k40t_ros_unit_tests;
+#   test/ros/*.cpp       gtest nodes, one executable each;
+#   test/ros/*.py        Python test nodes (/usr/bin/python3, rospy + unittest).
 if(CATKIN_ENABLE_TESTING)
-  find_package(rostest REQUIRED)
   find_package(GTest REQUIRED)
+  file(GLOB K40T_ROS_UNIT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/test/ros/unit/*.cpp)
+  if(K40T_ROS_UNIT_SOURCES)
+    add_executable(k40t_ros_unit_tests ${K40T_ROS_UNIT_SOURCES})
+    target_link_libraries(k40t_ros_unit_tests PRIVATE k40t_ros GTest::gtest GTest::gtest_main)
+  endif()
   file(GLOB K40T_ROSTEST_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/test/ros/*.cpp)
   foreach(source ${K40T_ROSTEST_SOURCES})
     get_filename_component(name ${source} NAME_WE)
@@ -41,3 +48,14 @@ if(CATKIN_ENABLE_TESTING)
     target_link_libraries(${name} PRIVATE k40t_ros GTest::gtest)
   endforeach()
 endif()
+
+# End-to-end benchmarks of the ROS layer (bench/ros/, run by bench/ros/run_ros_bench.sh): the
+# latency probe as a node and as a nodelet (library k40t_bench_nodelets, listed in
+# nodelet_plugins.xml), and the service round-trip client.
+add_library(k40t_bench_nodelets SHARED ${PROJECT_SOURCE_DIR}/bench/ros/latency_probe.cpp
+                                       ${PROJECT_SOURCE_DIR}/bench/ros/latency_probe_nodelet.cpp)
+target_link_libraries(k40t_bench_nodelets PUBLIC k40t_ros)
+add_executable(k40t_latency_probe ${PROJECT_SOURCE_DIR}/bench/ros/latency_probe_node.cpp)
+target_link_libraries(k40t_latency_probe PRIVATE k40t_bench_nodelets)
+add_executable(k40t_service_rtt ${PROJECT_SOURCE_DIR}/bench/ros/service_rtt.cpp)
+target_link_libraries(k40t_service_rtt PRIVATE k40t_ros)

@@ -23,12 +23,14 @@ VARIANTS = {
     "sim.launch": [["manager:=/pod_manager"]],
     "record.launch": [["raw_only:=true", "duration:=5"]],
     "replay.launch": [["sim_time:=true", "rate:=2.0"]],
+    "latency.launch": [["in_manager:=true"]],
 }
 
 
 def launch_files():
     files = sorted(glob.glob(os.path.join(ROOT, "launch", "*.launch")))
     files += sorted(glob.glob(os.path.join(ROOT, "test", "ros", "*.test")))
+    files += sorted(glob.glob(os.path.join(ROOT, "bench", "ros", "*.launch")))
     return files
 
 

@@ -1,0 +1,43 @@
+// What the driver subscribes to:
+//   gimbal/cmd_angle  geometry_msgs/Vector3Stamped  joint angles, rad, REP 103 (y = pitch,
+//                     positive down; z = yaw, positive left; x = roll is ignored: the pod takes no
+//                     roll command) -> 0x000012
+//   gimbal/cmd_rate   geometry_msgs/Twist  angular.y pitch rate, angular.z yaw rate, rad/s, REP 103
+//                     -> 0x000010 + 0x000017 through RateCommander; 0.5 s without one stops the
+//                     gimbal
+//   fix               sensor_msgs/NavSatFix  the vehicle's position }  answers to the pod's GPS
+//   attitude          sensor_msgs/Imu        its orientation (ENU)  }  requests, laser-target
+//   requests
+#pragma once
+
+#include <cmath>
+#include <mutex>
+
+#include <geometry_msgs/Twist.h>
+#include <geometry_msgs/Vector3Stamped.h>
+#include <ros/node_handle.h>
+#include <ros/subscriber.h>
+#include <sensor_msgs/Imu.h>
+#include <sensor_msgs/NavSatFix.h>
+
+#include "k40t_driver/ros/pod_driver.h"
+
+namespace k40t::driver {
+
+class CommandInput {
+ public:
+  CommandInput(ros::NodeHandle nh, PodDriver& driver);
+
+ private:
+  void on_cmd_angle(const geometry_msgs::Vector3Stamped::ConstPtr& msg);
+  void on_cmd_rate(const geometry_msgs::Twist::ConstPtr& msg);
+  void on_fix(const sensor_msgs::NavSatFix::ConstPtr& msg);
+  void on_attitude(const sensor_msgs::Imu::ConstPtr& msg);
+
+  PodDriver& driver_;
+  std::mutex mutex_;
+  double reference_altitude_m_ = std::nan("");
+  ros::Subscriber cmd_angle_, cmd_rate_, fix_, attitude_;
+};
+
+}  // namespace k40t::driver

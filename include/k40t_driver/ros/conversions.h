@@ -1,0 +1,120 @@
+// Protocol structs -> ROS messages, and the vehicle topics -> VehicleState. Pure functions: no
+// node handles, no clocks (the stamp is an argument), so replay regenerates identical messages.
+//
+// Sign conventions. The pod reports pitch positive up and yaw positive right (clockwise seen from
+// above), like its commands (protocol/messages/gimbal.h). ROS uses REP 103 (x forward, y left,
+// z up, right-handed), so:
+//   REP 103 yaw   (about z)  = -pod yaw     positive = turning left
+//   REP 103 pitch (about y)  = -pod pitch   positive = looking down
+//   REP 103 roll  (about x)  =  pod roll    positive = right side down
+// and rates alike. Every joint angle, TF rotation and attitude quaternion goes through
+// rep103_from_pod(); the inverse is used for commands.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <geometry_msgs/QuaternionStamped.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <sensor_msgs/Imu.h>
+#include <sensor_msgs/JointState.h>
+#include <sensor_msgs/NavSatFix.h>
+#include <sensor_msgs/Range.h>
+
+#include "k40t_driver/CameraStatus.h"
+#include "k40t_driver/Frame.h"
+#include "k40t_driver/GimbalStatus.h"
+#include "k40t_driver/PhotoStatus.h"
+#include "k40t_driver/RecordStatus.h"
+#include "k40t_driver/ThermalStats.h"
+#include "k40t_driver/VisibleStatus.h"
+#include "k40t_driver/protocol/frame.h"
+#include "k40t_driver/protocol/messages/camera_reports.h"
+#include "k40t_driver/protocol/messages/camera_status.h"
+#include "k40t_driver/protocol/messages/flight_controller.h"
+#include "k40t_driver/protocol/messages/gimbal.h"
+#include "k40t_driver/protocol/messages/thermal.h"
+#include "k40t_driver/protocol/messages/visible.h"
+#include "k40t_driver/ros/vehicle_state.h"
+
+namespace k40t::driver {
+
+// Gimbal angles or rates in REP 103 convention, radians (per second).
+struct Rep103Angles {
+  double yaw = 0;
+  double roll = 0;
+  double pitch = 0;
+};
+Rep103Angles rep103_from_pod(double yaw_deg, double roll_deg, double pitch_deg);
+
+// Every frame id the driver uses, from ~frame_prefix; the joint names from ~joint_prefix.
+struct FrameIds {
+  explicit FrameIds(const std::string& frame_prefix = "k40t_",
+                    const std::string& joint_prefix = "k40t_");
+  std::string base, yaw, roll, pitch;      // the gimbal chain
+  std::string tele, wide, thermal, laser;  // sensors (optical frames, laser x along the beam)
+  std::string level;                       // gravity-aligned frame of gimbal/attitude
+  std::string yaw_joint, roll_joint, pitch_joint;
+};
+
+// Translations of the gimbal chain (metres, parent frame), the same as urdf/k40t.urdf.
+struct GimbalGeometry {
+  std::array<double, 3> yaw_joint{0, 0, -0.02};    // base -> yaw link
+  std::array<double, 3> roll_joint{0, 0, -0.04};   // yaw -> roll link
+  std::array<double, 3> pitch_joint{0, 0, -0.06};  // roll -> pitch link
+  // Sensor positions in the pitch link (parameters *_offset).
+  std::array<double, 3> tele{0.05, 0.02, 0.015};
+  std::array<double, 3> wide{0.05, -0.02, 0.015};
+  std::array<double, 3> thermal{0.05, 0.02, -0.015};
+  std::array<double, 3> laser{0.05, -0.02, -0.015};
+};
+
+// Limits written into every laser/range message.
+struct RangeLimits {
+  float min_range = 5.0f;
+  float max_range = 1500.0f;
+  float field_of_view = 0.003f;
+};
+
+sensor_msgs::JointState to_joint_state(const protocol::GimbalAttitude& attitude,
+                                       const ros::Time& stamp, const FrameIds& ids);
+// The stabilised attitude (yaw, roll, pitch attitude angles) as a quaternion in ids.level.
+geometry_msgs::QuaternionStamped to_attitude(const protocol::GimbalAttitude& attitude,
+                                             const ros::Time& stamp, const FrameIds& ids);
+// base -> yaw -> roll -> pitch from the joint angles.
+std::vector<geometry_msgs::TransformStamped> gimbal_transforms(
+    const protocol::GimbalAttitude& attitude, const ros::Time& stamp, const FrameIds& ids,
+    const GimbalGeometry& geometry);
+// pitch link -> tele, wide, thermal optical frames and the laser frame.
+std::vector<geometry_msgs::TransformStamped> sensor_transforms(const ros::Time& stamp,
+                                                               const FrameIds& ids,
+                                                               const GimbalGeometry& geometry);
+
+k40t_driver::GimbalStatus to_msg(const protocol::GimbalStatus& status, const ros::Time& stamp);
+k40t_driver::CameraStatus to_msg(const protocol::CameraSystemStatus& status,
+                                 const ros::Time& stamp);
+k40t_driver::VisibleStatus to_msg(const protocol::VisibleStatus& status, const ros::Time& stamp);
+k40t_driver::ThermalStats to_msg(const protocol::ThermalStatus& status, const ros::Time& stamp,
+                                 const FrameIds& ids);
+k40t_driver::PhotoStatus to_msg(const protocol::PhotoStatus& status, const ros::Time& stamp);
+k40t_driver::RecordStatus to_msg(const protocol::RecordStatus& status, const ros::Time& stamp);
+
+// A laser distance (0 = no return, published as +Inf per REP 117).
+sensor_msgs::Range to_range(double distance_m, const ros::Time& stamp, const FrameIds& ids,
+                            const RangeLimits& limits);
+// The laser target's position (0x010320).
+sensor_msgs::NavSatFix to_nav_sat_fix(const protocol::TargetGpsAck& target, const ros::Time& stamp,
+                                      const FrameIds& ids);
+
+k40t_driver::Frame to_frame_msg(const uint8_t* bytes, size_t size, const ros::Time& stamp,
+                                uint8_t direction);
+
+// Vehicle topics -> VehicleState. The first fix with a position sets the reference of
+// relative_altitude_m (the take-off point).
+void update_from_fix(VehicleState& state, const sensor_msgs::NavSatFix& fix,
+                     double* reference_altitude_m);
+// Orientation in ENU (REP 103) -> aviation heading/pitch/roll; the angular velocity is ignored.
+void update_from_imu(VehicleState& state, const sensor_msgs::Imu& imu);
+
+}  // namespace k40t::driver

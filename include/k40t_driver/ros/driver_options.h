@@ -1,0 +1,42 @@
+// Everything the driver needs to know before it starts, in one ROS-free struct. The ROS glue fills
+// it from parameters (ros_params.h); tests and benchmarks fill it directly.
+#pragma once
+
+#include <string>
+
+#include "k40t_driver/session/session.h"
+
+namespace k40t::driver {
+
+struct DriverOptions {
+  // Device URL (transport.h); ignored in replay mode.
+  std::string device;
+  // Appended as ?baud= to serial URLs that carry none.
+  int baud = 115200;
+  // Frames come from replay_frame() instead of a device; nothing is ever sent.
+  bool replay = false;
+  // Longest wait between reconnection attempts (the first is after 50 ms, then doubling): bounds
+  // how long after the pod's return the topics resume.
+  double reconnect_max_delay_s = 1.0;
+
+  // Codec decisions (NOTES A1-A5), ACK timeout and retries.
+  session::SessionOptions session;
+
+  // Seconds between time syncs (0x00030E, NOTES A8); 0 disables.
+  double time_sync_period_s = 10.0;
+  // gimbal/cmd_rate dead-man: no rate command for this long stops the gimbal.
+  double cmd_rate_timeout_s = 0.5;
+  // Answer the pod's GPS requests (0x000310) from set_vehicle_state().
+  bool answer_gps_requests = true;
+  // Seconds between laser-target requests (0x000320); 0 disables. Needs a vehicle fix.
+  double laser_target_period_s = 1.0;
+  // Seconds without a frame before the pod counts as silent; the next frame is a "pod online"
+  // event (settings are re-read).
+  double silence_timeout_s = 0.5;
+};
+
+// The device URL with the baud rate applied: serial URLs without "baud=" get "?baud=N" (or
+// "&baud=N"); other URLs are returned unchanged.
+std::string device_url_with_baud(const std::string& url, int baud);
+
+}  // namespace k40t::driver

@@ -1,0 +1,40 @@
+// The driver's services (srv/ documents each): every call validates its arguments with the
+// message structs' validate() before anything is written (out of range: success=false and a
+// message naming the field and its range, zero bytes sent), then waits for the ACK and turns a
+// NACK or timeout into success=false with the pod's response text.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <ros/node_handle.h>
+#include <ros/service_server.h>
+
+#include "k40t_driver/ros/pod_driver.h"
+
+namespace k40t::driver {
+
+class PodServices {
+ public:
+  PodServices(ros::NodeHandle nh, PodDriver& driver);
+
+ private:
+  // Advertises `name`; `handler(request, response)` fills the response, the service call always
+  // "succeeds" at the ROS level so the caller gets the message.
+  template <class Srv, class Handler>
+  void serve(const std::string& name, Handler handler);
+  // The same for a std_srvs/Trigger service that sends one argument-less request.
+  template <class Req>
+  void serve_trigger(const std::string& name, Req request);
+
+  void advertise_camera();
+  void advertise_gimbal();
+  void advertise_thermal_and_laser();
+  void advertise_system();
+
+  ros::NodeHandle nh_;
+  PodDriver& driver_;
+  std::vector<ros::ServiceServer> servers_;
+};
+
+}  // namespace k40t::driver

@@ -1,0 +1,25 @@
+// Reads the driver's private parameters (config/k40t.yaml documents each) into DriverOptions and
+// the ROS-side settings, checking every value: a bad one fails with a message naming the
+// parameter, what it got and what it accepts.
+#pragma once
+
+#include <ros/node_handle.h>
+
+#include "k40t_driver/protocol/result.h"
+#include "k40t_driver/ros/conversions.h"
+#include "k40t_driver/ros/driver_options.h"
+
+namespace k40t::driver {
+
+struct RosPodConfig {
+  DriverOptions driver;
+  FrameIds ids;
+  GimbalGeometry geometry;
+  RangeLimits range;
+  bool publish_tf = true;
+  double rate_tolerance = 0.5;  // accepted deviation of each report's rate (fraction)
+};
+
+Result<RosPodConfig> read_params(const ros::NodeHandle& private_nh);
+
+}  // namespace k40t::driver

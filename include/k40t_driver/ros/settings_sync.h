@@ -1,0 +1,82 @@
+// dynamic_reconfigure for the pod's settings (cfg/K40t.cfg). Keeps the published configuration
+// equal to what the pod has:
+//   - a change is sent as the one request that sets it; if the pod refuses (validation, NACK,
+//     timeout) the parameter is put back to its previous value, which is what the server then
+//     publishes, and the refusal is logged and kept for diagnostics;
+//   - on every "pod online" event (connect, reconnect, pod back after silence) read_from_pod()
+//     reads 0x000100 and 0x000200 and the next camera (0x000003) and gimbal (0x000001) status
+//     reports, and publishes the result as the current configuration.
+// The binding of each parameter to its request and read-back lives in settings_bindings.cpp.
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <dynamic_reconfigure/server.h>
+#include <ros/node_handle.h>
+#include <boost/thread/recursive_mutex.hpp>
+
+#include "k40t_driver/K40tConfig.h"
+#include "k40t_driver/protocol/messages/camera_reports.h"
+#include "k40t_driver/protocol/messages/gimbal.h"
+#include "k40t_driver/ros/pod_driver.h"
+#include "k40t_driver/ros/pod_queries.h"
+
+namespace k40t::driver {
+
+using Config = k40t_driver::K40tConfig;
+
+// One parameter group and the request that sets it (settings_bindings.cpp).
+struct SettingBinding {
+  std::string name;                                                    // e.g. "thermal_denoise"
+  std::function<bool(const Config&, const Config&)> differs;           // any of its fields changed
+  std::function<void(Config& to, const Config& from)> copy;            // copy its fields
+  std::function<session::AckResult(PodDriver&, const Config&)> apply;  // send the request
+};
+const std::vector<SettingBinding>& setting_bindings();
+
+// Read-back: the pod's reports -> the parameters they carry (settings_bindings.cpp).
+void absorb(Config& config, const protocol::ThermalSettingsAck& thermal);
+void absorb(Config& config, const protocol::VisibleSettingsAck& visible);
+void absorb(Config& config, const protocol::CameraSystemStatus& camera);
+void absorb(Config& config, const protocol::GimbalStatus& gimbal);
+
+struct SettingsState {
+  bool read_ok = false;      // the last read-back got both settings ACKs
+  std::string read_message;  // what the last read-back got, or why it failed
+  uint64_t reads = 0;
+  uint64_t changes_applied = 0;
+  uint64_t changes_refused = 0;
+  std::string last_refusal;  // "palette: <why>"; empty when the last change succeeded
+};
+
+class SettingsSync {
+ public:
+  SettingsSync(ros::NodeHandle private_nh, PodDriver& driver);
+
+  // Blocking: call from the driver's online thread.
+  void read_from_pod();
+  SettingsState state() const;
+
+ private:
+  void on_reconfigure(Config& config, uint32_t level);
+
+  PodDriver& driver_;
+  boost::recursive_mutex server_mutex_;
+  std::unique_ptr<dynamic_reconfigure::Server<Config>> server_;
+  Config current_;
+  bool initialised_ = false;
+
+  mutable std::mutex mutex_;  // guards what follows; never held while waiting for the pod
+  std::condition_variable reports_arrived_;
+  std::optional<protocol::CameraSystemStatus> camera_report_;
+  std::optional<protocol::GimbalStatus> gimbal_report_;
+  SettingsState state_;
+};
+
+}  // namespace k40t::driver

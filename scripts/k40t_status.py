@@ -1,0 +1,112 @@
+#!/usr/bin/python3
+"""Live telemetry of the K40T driver on one line, refreshed twice a second: gimbal angles, zoom,
+thermal extremes, laser range, SD card, link health. With --tour it also drives the pod through
+its services (turn, zoom, look down and range, palette, photo) so the numbers move.
+
+  scripts/k40t_status.py [--ns /k40t] [--tour] [--seconds N]"""
+import argparse
+import math
+import sys
+import threading
+import time
+
+import rospy
+from diagnostic_msgs.msg import DiagnosticArray
+from sensor_msgs.msg import JointState, Range
+from std_srvs.srv import Trigger
+
+from k40t_driver.msg import CameraStatus, ThermalStats, VisibleStatus
+from k40t_driver.srv import MeasureRange, SetAngle, SetPalette, SetZoom, TakePhoto
+
+LEVELS = {0: "OK", 1: "WARN", 2: "ERROR", 3: "STALE"}
+
+
+class Status:
+    def __init__(self, ns):
+        self.latest = {}
+        self.link = "no diagnostics yet"
+        for topic, cls in [("joint_states", JointState), ("visible/status", VisibleStatus),
+                           ("thermal/stats", ThermalStats), ("laser/range", Range), ("camera/status", CameraStatus)]:
+            rospy.Subscriber(ns + "/" + topic, cls, self._keep, callback_args=topic, queue_size=1)
+        rospy.Subscriber("/diagnostics", DiagnosticArray, self._diagnostics, queue_size=10)
+
+    def _keep(self, msg, topic):
+        self.latest[topic] = msg
+
+    def _diagnostics(self, array):
+        for s in array.status:
+            if s.name.endswith(": link"):
+                self.link = "%s %s" % (LEVELS.get(s.level, "?"), s.message)
+
+    def line(self):
+        parts = []
+        js = self.latest.get("joint_states")
+        if js:
+            yaw, roll, pitch = (math.degrees(a) for a in js.position)
+            parts.append("yaw %+7.2f° roll %+6.2f° pitch %+6.2f°" % (yaw, roll, pitch))
+        vis = self.latest.get("visible/status")
+        if vis:
+            parts.append("zoom %5.1fx" % vis.zoom_ratio)
+        th = self.latest.get("thermal/stats")
+        if th:
+            parts.append("thermal %.1f..%.1f °C" % (th.min_degC, th.max_degC))
+        rng = self.latest.get("laser/range")
+        if rng:
+            parts.append("laser %s" % ("no return" if math.isinf(rng.range) else "%.1f m" % rng.range))
+        cam = self.latest.get("camera/status")
+        if cam:
+            parts.append("SD %s %.0f/%.0f MB" % (cam.sd_state_text, cam.sd_used_mb, cam.sd_total_mb))
+        parts.append("link %s" % self.link)
+        return " | ".join(parts)
+
+
+def tour(ns):
+    """Drives the pod in a loop so the telemetry changes; prints each call's outcome."""
+    def call(name, cls, **args):
+        try:
+            rospy.wait_for_service(ns + "/" + name, timeout=10.0)
+            r = rospy.ServiceProxy(ns + "/" + name, cls)(**args)
+            extra = " range %.1f m" % r.range if cls is MeasureRange and r.success else ""
+            print("\n  %s(%s): %s%s" % (name, ", ".join("%s=%s" % kv for kv in args.items()), r.message, extra))
+        except (rospy.ROSException, rospy.ServiceException) as e:
+            print("\n  %s: %s" % (name, e))
+
+    steps = [
+        ("gimbal/set_angle", SetAngle, dict(pitch=0.35, yaw=0.8)),
+        ("set_zoom", SetZoom, dict(ratio=10.0)),
+        ("gimbal/look_down", Trigger, {}),
+        ("laser/measure", MeasureRange, {}),
+        ("set_palette", SetPalette, dict(palette=5)),
+        ("take_photo", TakePhoto, dict(lens=0, stop=False, folder="demo", name="")),
+        ("set_zoom", SetZoom, dict(ratio=1.0)),
+        ("gimbal/set_angle", SetAngle, dict(pitch=0.1, yaw=-0.8)),
+        ("gimbal/center", Trigger, {}),
+    ]
+    while not rospy.is_shutdown():
+        for name, cls, args in steps:
+            if rospy.is_shutdown():
+                return
+            call(name, cls, **args)
+            time.sleep(3.0)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--ns", default="/k40t")
+    ap.add_argument("--tour", action="store_true", help="drive the pod through its services")
+    ap.add_argument("--seconds", type=float, default=0, help="stop after this long (0: until Ctrl-C)")
+    args = ap.parse_args(rospy.myargv()[1:])
+    rospy.init_node("k40t_status", anonymous=True, disable_signals=False)
+    status = Status(args.ns.rstrip("/"))
+    if args.tour:
+        threading.Thread(target=tour, args=(args.ns.rstrip("/"),), daemon=True).start()
+    end = time.time() + args.seconds if args.seconds > 0 else None
+    while not rospy.is_shutdown() and (end is None or time.time() < end):
+        sys.stdout.write("\r\033[K" + status.line() if sys.stdout.isatty() else status.line() + "\n")
+        sys.stdout.flush()
+        time.sleep(0.5)
+    print()
+
+
+if __name__ == "__main__":
+    main()

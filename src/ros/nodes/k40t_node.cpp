@@ -1,0 +1,21 @@
+// k40t_node: the driver as a standalone node (the same RosPod as the nodelet).
+#include <ros/ros.h>
+
+#include "k40t_driver/ros/ros_pod.h"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "k40t_driver");
+  ros::NodeHandle nh;
+  ros::NodeHandle private_nh("~");
+  k40t::Result<std::unique_ptr<k40t::driver::RosPod>> pod =
+      k40t::driver::RosPod::create(nh, private_nh);
+  if (!pod) {
+    ROS_FATAL("K40T driver not started: %s", pod.error().c_str());
+    return 1;
+  }
+  // Services block while they wait for an ACK; the other callbacks keep running meanwhile.
+  ros::AsyncSpinner spinner(4);
+  spinner.start();
+  ros::waitForShutdown();
+  return 0;
+}

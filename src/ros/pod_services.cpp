@@ -1,0 +1,321 @@
+#include "k40t_driver/ros/pod_services.h"
+
+#include <cmath>
+#include <limits>
+
+#include <std_srvs/Trigger.h>
+
+#include "k40t_driver/Calibrate.h"
+#include "k40t_driver/Focus.h"
+#include "k40t_driver/GetIp.h"
+#include "k40t_driver/GetSbus.h"
+#include "k40t_driver/GetVersions.h"
+#include "k40t_driver/MeasureRange.h"
+#include "k40t_driver/PointAt.h"
+#include "k40t_driver/Record.h"
+#include "k40t_driver/Send.h"
+#include "k40t_driver/SetAiRecognition.h"
+#include "k40t_driver/SetAngle.h"
+#include "k40t_driver/SetArea.h"
+#include "k40t_driver/SetIp.h"
+#include "k40t_driver/SetPalette.h"
+#include "k40t_driver/SetPhotoMode.h"
+#include "k40t_driver/SetSbus.h"
+#include "k40t_driver/SetSpot.h"
+#include "k40t_driver/SetZoom.h"
+#include "k40t_driver/TakePhoto.h"
+#include "k40t_driver/Track.h"
+#include "k40t_driver/Zoom.h"
+#include "k40t_driver/protocol/messages/camera_capture.h"
+#include "k40t_driver/protocol/messages/camera_imaging.h"
+#include "k40t_driver/protocol/messages/camera_system.h"
+#include "k40t_driver/protocol/messages/gimbal.h"
+#include "k40t_driver/protocol/messages/laser.h"
+#include "k40t_driver/protocol/messages/sbus.h"
+#include "k40t_driver/protocol/messages/thermal.h"
+#include "k40t_driver/ros/pod_queries.h"
+
+namespace k40t::driver {
+
+namespace p = protocol;
+using session::AckResult;
+
+namespace {
+
+constexpr double kRadToDeg = 180.0 / M_PI;
+constexpr double kDegToRad = M_PI / 180.0;
+
+template <class Res>
+void fill(Res& res, const AckResult& result) {
+  res.success = result.ok();
+  res.message = result.ok() ? "ok" : result.message;
+}
+
+template <class Res>
+void fail(Res& res, const std::string& message) {
+  res.success = false;
+  res.message = message;
+}
+
+// take_photo and record: a lens mode, an action and the file's folder and name.
+template <class Req, class SrvReq, class Action>
+Req file_capture(const SrvReq& req, Action action) {
+  Req r;
+  r.lens = static_cast<decltype(r.lens)>(req.lens);
+  r.action = action;
+  r.folder = req.folder;
+  r.name = req.name;
+  return r;
+}
+
+}  // namespace
+
+template <class Srv, class Handler>
+void PodServices::serve(const std::string& name, Handler handler) {
+  using Req = typename Srv::Request;
+  using Res = typename Srv::Response;
+  boost::function<bool(Req&, Res&)> callback = [handler](Req& req, Res& res) {
+    handler(req, res);
+    return true;
+  };
+  servers_.push_back(nh_.advertiseService<Req, Res>(name, callback));
+}
+
+template <class Req>
+void PodServices::serve_trigger(const std::string& name, Req request) {
+  serve<std_srvs::Trigger>(
+      name, [this, request](std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
+        fill(res, driver_.request(request));
+      });
+}
+
+PodServices::PodServices(ros::NodeHandle nh, PodDriver& driver) : nh_(nh), driver_(driver) {
+  advertise_camera();
+  advertise_gimbal();
+  advertise_thermal_and_laser();
+  advertise_system();
+}
+
+void PodServices::advertise_camera() {
+  serve<k40t_driver::SetZoom>("set_zoom", [this](auto& req, auto& res) {
+    p::ZoomRatioRequest r;
+    r.zoom_x = req.ratio;
+    fill(res, driver_.request(r));
+  });
+  serve<k40t_driver::Zoom>("zoom", [this](auto& req, auto& res) {
+    p::ContinuousZoomRequest r;
+    r.command = static_cast<p::ZoomCommand>(req.action);
+    fill(res, driver_.request(r));
+  });
+  serve<k40t_driver::Focus>("focus", [this](auto& req, auto& res) {
+    p::FocusRequest r;
+    r.command = static_cast<p::FocusCommand>(req.mode);
+    r.area_left_px = req.x1;
+    r.area_top_px = req.y1;
+    r.area_right_px = req.x2;
+    r.area_bottom_px = req.y2;
+    fill(res, driver_.request(r));
+  });
+  serve<k40t_driver::TakePhoto>("take_photo", [this](auto& req, auto& res) {
+    const p::PhotoAction action = req.stop ? p::PhotoAction::kStop : p::PhotoAction::kStart;
+    fill(res, driver_.request(file_capture<p::TakePhotoRequest>(req, action)));
+  });
+  serve<k40t_driver::Record>("record", [this](auto& req, auto& res) {
+    const p::RecordAction action = req.start ? p::RecordAction::kStart : p::RecordAction::kStop;
+    fill(res, driver_.request(file_capture<p::RecordRequest>(req, action)));
+  });
+  serve<k40t_driver::SetPhotoMode>("set_photo_mode", [this](auto& req, auto& res) {
+    p::PhotoSettingsRequest r;
+    r.photo_mode = static_cast<p::PhotoMode>(req.mode);
+    r.time_lapse_interval_s = req.timelapse_interval_s;
+    r.burst_count = req.burst_count;
+    fill(res, driver_.request(r));
+  });
+  serve<k40t_driver::SetAiRecognition>("ai/recognition", [this](auto& req, auto& res) {
+    p::AiRecognitionRequest r;
+    if (req.classes.size() > r.classes.size()) {
+      return fail(res, "field 'classes' must hold at most 10 class ids, got " +
+                           std::to_string(req.classes.size()));
+    }
+    r.recognition = req.enable ? p::FeatureSwitch::kOn : p::FeatureSwitch::kOff;
+    r.model = req.model;
+    std::copy(req.classes.begin(), req.classes.end(), r.classes.begin());
+    fill(res, driver_.request(r));
+  });
+  serve<k40t_driver::Track>("ai/track", [this](auto& req, auto& res) {
+    p::BoxTrackingRequest r;
+    r.tracking = req.enable ? p::FeatureSwitch::kOn : p::FeatureSwitch::kOff;
+    r.x_px = req.x;
+    r.y_px = req.y;
+    r.width_px = req.width;
+    r.height_px = req.height;
+    fill(res, driver_.request(r));
+  });
+}
+
+void PodServices::advertise_gimbal() {
+  serve<k40t_driver::SetAngle>("gimbal/set_angle", [this](auto& req, auto& res) {
+    // Checked in the caller's units first (REP 103 signs, radians), so the message speaks them.
+    const Status valid = p::first_failure(
+        p::check_range("pitch", req.pitch, -p::GimbalAngleRequest::kPitchMaxDeg * kDegToRad,
+                       -p::GimbalAngleRequest::kPitchMinDeg * kDegToRad, "rad (positive = down)"),
+        p::check_range("yaw", req.yaw, -p::GimbalAngleRequest::kYawLimitDeg * kDegToRad,
+                       p::GimbalAngleRequest::kYawLimitDeg * kDegToRad, "rad (positive = left)"));
+    if (!valid) return fail(res, valid.message());
+    p::GimbalAngleRequest r;
+    r.pitch_deg = -req.pitch * kRadToDeg;
+    r.yaw_deg = -req.yaw * kRadToDeg;
+    fill(res, driver_.request(r));
+  });
+  p::GimbalControlRequest centre;
+  centre.mode = p::GimbalMode::kCentre;
+  serve_trigger("gimbal/center", centre);
+  p::GimbalControlRequest look_down;
+  look_down.mode = p::GimbalMode::kLookDown;
+  serve_trigger("gimbal/look_down", look_down);
+  serve_trigger("gimbal/restart", p::GimbalRestartRequest{});
+  serve_trigger("gimbal/servo_off", p::GimbalServoOffRequest{});
+  serve<k40t_driver::PointAt>("gimbal/point_at", [this](auto& req, auto& res) {
+    p::GimbalPointAtRequest r;
+    r.lens = static_cast<p::GimbalAimLens>(req.lens);
+    r.zoom_x = req.zoom;
+    r.x_px = req.x;
+    r.y_px = req.y;
+    fill(res, driver_.request(r));
+  });
+  serve<k40t_driver::Calibrate>("gimbal/calibrate", [this](auto& req, auto& res) {
+    switch (req.kind) {
+      case k40t_driver::Calibrate::Request::DRIFT:
+        return fill(res, driver_.request(p::GimbalDriftCalibrationRequest{}));
+      case k40t_driver::Calibrate::Request::LINEAR:
+        return fill(res, driver_.request(p::GimbalLinearCalibrationRequest{}));
+      case k40t_driver::Calibrate::Request::ACCELEROMETER:
+        return fill(res, driver_.request(p::GimbalAccelerationCalibrationRequest{}));
+      default:
+        return fail(res, "field 'kind' must be 0 (drift), 1 (linear) or 2 (accelerometer), got " +
+                             std::to_string(req.kind));
+    }
+  });
+}
+
+void PodServices::advertise_thermal_and_laser() {
+  serve<k40t_driver::SetPalette>("set_palette", [this](auto& req, auto& res) {
+    p::ThermalPaletteRequest r;
+    r.palette = static_cast<p::Palette>(req.palette);
+    fill(res, driver_.request(r));
+  });
+  serve<k40t_driver::SetSpot>("thermal/set_spot", [this](auto& req, auto& res) {
+    p::ThermalSpotRequest r;
+    r.x_px = req.x;
+    r.y_px = req.y;
+    fill(res, driver_.request(r));
+  });
+  serve<k40t_driver::SetArea>("thermal/set_area", [this](auto& req, auto& res) {
+    p::ThermalAreaRequest r;
+    r.width_px = req.width;
+    r.height_px = req.height;
+    r.center_x_px = req.center_x;
+    r.center_y_px = req.center_y;
+    fill(res, driver_.request(r));
+  });
+  serve<k40t_driver::MeasureRange>("laser/measure", [this](auto&, auto& res) {
+    AckResult raw;
+    Result<p::LaserRangeAck> ack = driver_.request_typed(p::LaserRangeRequest{}, &raw);
+    fill(res, raw);
+    if (!ack) {
+      if (raw.ok()) fail(res, ack.error());  // an OK code but an unreadable distance
+      res.range = std::numeric_limits<float>::quiet_NaN();
+      return;
+    }
+    res.range = ack->distance_m > 0 ? static_cast<float>(ack->distance_m)
+                                    : std::numeric_limits<float>::infinity();
+  });
+}
+
+void PodServices::advertise_system() {
+  serve<k40t_driver::GetVersions>("get_versions", [this](auto&, auto& res) {
+    const PodVersions v = read_versions(driver_);
+    res.success = v.ok;
+    res.message = v.message;
+    res.gimbal_hardware = v.gimbal_hardware;
+    res.gimbal_software = v.gimbal_software;
+    res.camera = v.camera;
+  });
+  serve<k40t_driver::GetIp>("get_ip", [this](auto&, auto& res) {
+    AckResult raw;
+    Result<p::GetIpAck> ack = driver_.request_typed(p::GetIpRequest{}, &raw);
+    fill(res, raw);
+    if (!ack) {
+      if (raw.ok()) fail(res, ack.error());
+      return;
+    }
+    res.address = ack->address;
+    res.netmask = ack->netmask;
+    res.gateway = ack->gateway;
+  });
+  serve<k40t_driver::SetIp>("set_ip", [this](auto& req, auto& res) {
+    p::SetIpRequest r;
+    r.mode = req.dhcp ? p::IpMode::kDhcp : p::IpMode::kStatic;
+    r.address = req.address.empty() ? "0.0.0.0" : req.address;
+    r.netmask = req.netmask.empty() ? "0.0.0.0" : req.netmask;
+    r.gateway = req.gateway.empty() ? "0.0.0.0" : req.gateway;
+    fill(res, driver_.request(r));
+  });
+  serve_trigger("format_sd", p::FormatSdRequest{});
+  serve_trigger("factory_reset", p::FactoryResetRequest{});
+  serve_trigger("shutdown", p::ShutdownRequest{});
+  serve<k40t_driver::GetSbus>("sbus/get", [this](auto&, auto& res) {
+    AckResult raw;
+    Result<p::SbusConfigAck> ack = driver_.request_typed(p::SbusConfigRequest{}, &raw);
+    fill(res, raw);
+    if (!ack) {
+      if (raw.ok()) fail(res, ack.error());
+      return;
+    }
+    res.max_value = ack->range.max_value;
+    res.min_value = ack->range.min_value;
+    res.stream_channel = ack->channels.stream_channel;
+    res.zoom_channel = ack->channels.zoom_channel;
+    res.photo_channel = ack->channels.photo_channel;
+    res.record_channel = ack->channels.record_channel;
+    res.pitch_channel = ack->channels.pitch_channel;
+    res.yaw_channel = ack->channels.yaw_channel;
+    res.centre_channel = ack->channels.centre_channel;
+  });
+  serve<k40t_driver::SetSbus>("sbus/set", [this](auto& req, auto& res) {
+    p::SbusRangeRequest range;
+    range.max_value = req.max_value;
+    range.min_value = req.min_value;
+    p::SbusChannelsRequest channels;
+    channels.stream_channel = req.stream_channel;
+    channels.zoom_channel = req.zoom_channel;
+    channels.photo_channel = req.photo_channel;
+    channels.record_channel = req.record_channel;
+    channels.pitch_channel = req.pitch_channel;
+    channels.yaw_channel = req.yaw_channel;
+    channels.centre_channel = req.centre_channel;
+    // Both are checked before either is sent: half a configuration is worse than none.
+    const Status valid = p::first_failure(range.validate(), channels.validate());
+    if (!valid) return fail(res, valid.message());
+    const AckResult first = driver_.request(range);
+    if (!first.ok()) return fail(res, "SBUS value range: " + first.message);
+    fill(res, driver_.request(channels));
+    if (!res.success) res.message = "SBUS channels: " + res.message;
+  });
+  serve<k40t_driver::Send>("send", [this](auto& req, auto& res) {
+    if (req.id == 0 || req.id > 0x00FFFF) {
+      return fail(
+          res, "field 'id' must be a request id 0x000001..0x00FFFF, got " + std::to_string(req.id));
+    }
+    if (req.payload.size() > p::kMaxPayloadSize) {
+      return fail(res, "field 'payload' must be at most 243 bytes, got " +
+                           std::to_string(req.payload.size()));
+    }
+    const AckResult result = driver_.request_raw(req.id, req.payload.data(), req.payload.size());
+    fill(res, result);
+    res.code = static_cast<uint16_t>(result.code);
+    res.ack = result.payload;
+  });
+}
+
+}  // namespace k40t::driver

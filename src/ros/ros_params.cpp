@@ -1,0 +1,105 @@
+#include "k40t_driver/ros/ros_params.h"
+
+#include <sstream>
+#include <vector>
+
+namespace k40t::driver {
+
+namespace {
+
+// Collects the first error so that every parameter is read with one line and checked once.
+class ParamReader {
+ public:
+  explicit ParamReader(const ros::NodeHandle& nh) : nh_(nh) {}
+
+  template <class T>
+  T get(const std::string& name, const T& fallback) {
+    T value = fallback;
+    if (nh_.hasParam(name) && !nh_.getParam(name, value)) fail(name, "has the wrong type");
+    return value;
+  }
+  double number(const std::string& name, double fallback, double lo, double hi) {
+    const double value = get(name, fallback);
+    if (!(value >= lo && value <= hi)) {
+      std::ostringstream why;
+      why << "must be " << lo << ".." << hi << ", got " << value;
+      fail(name, why.str());
+    }
+    return value;
+  }
+  std::array<double, 3> xyz(const std::string& name, const std::array<double, 3>& fallback) {
+    std::vector<double> v = get(name, std::vector<double>(fallback.begin(), fallback.end()));
+    if (v.size() != 3) {
+      fail(name,
+           "must be a list of 3 numbers [x, y, z] in metres, got " + std::to_string(v.size()));
+      return fallback;
+    }
+    return {v[0], v[1], v[2]};
+  }
+  void fail(const std::string& name, const std::string& why) {
+    if (error_.empty()) error_ = "parameter " + nh_.resolveName(name) + " " + why;
+  }
+  const std::string& error() const { return error_; }
+
+ private:
+  const ros::NodeHandle& nh_;
+  std::string error_;
+};
+
+}  // namespace
+
+Result<RosPodConfig> read_params(const ros::NodeHandle& private_nh) {
+  ParamReader p(private_nh);
+  RosPodConfig c;
+  DriverOptions& d = c.driver;
+  d.device = p.get<std::string>("device", "serial:///dev/ttyUSB0");
+  d.baud = static_cast<int>(p.number("baud", 115200, 1200, 4000000));
+  d.replay = p.get("replay", false);
+  d.reconnect_max_delay_s = p.number("reconnect_max_delay", 1.0, 0.05, 60);
+
+  session::SessionOptions& s = d.session;
+  const std::string coverage = p.get<std::string>("crc_coverage", "auto");
+  if (Result<protocol::CrcCoverage> parsed = protocol::parse_crc_coverage(coverage)) {
+    s.crc_coverage = parsed.value();
+  } else {
+    p.fail("crc_coverage", "must be auto, header_excluded or whole_frame, got '" + coverage + "'");
+  }
+  const std::string order = p.get<std::string>("ack_byte_order", "big");
+  if (Result<protocol::ByteOrder> parsed = protocol::parse_byte_order(order)) {
+    s.codec.ack_byte_order = parsed.value();
+  } else {
+    p.fail("ack_byte_order", "must be big or little, got '" + order + "'");
+  }
+  s.codec.gimbal_address.system = static_cast<uint8_t>(p.number("gimbal_system_id", 3, 0, 255));
+  s.codec.camera_address.system = static_cast<uint8_t>(p.number("camera_system_id", 4, 0, 255));
+  s.codec.angle_command_scale = static_cast<int>(p.number("angle_command_scale", 100, 1, 1000));
+  s.ack_timeout = std::chrono::milliseconds(
+      static_cast<int64_t>(1000 * p.number("ack_timeout", 0.3, 0.01, 10)));
+  s.retries = static_cast<int>(p.number("retries", 2, 0, 10));
+
+  d.time_sync_period_s = p.number("time_sync_period", 10.0, 0, 3600);
+  d.cmd_rate_timeout_s = p.number("cmd_rate_timeout", 0.5, 0.05, 10);
+  const std::string gps = p.get<std::string>("gps_provider", "topics");
+  if (gps != "topics" && gps != "none")
+    p.fail("gps_provider", "must be topics or none, got '" + gps + "'");
+  d.answer_gps_requests = gps == "topics";
+  d.laser_target_period_s = p.number("laser_target_period", 1.0, 0, 3600);
+  d.silence_timeout_s = p.number("silence_timeout", 0.5, 0.1, 60);
+
+  c.ids = FrameIds(p.get<std::string>("frame_prefix", "k40t_"),
+                   p.get<std::string>("joint_prefix", "k40t_"));
+  c.publish_tf = p.get("publish_tf", true);
+  c.geometry.tele = p.xyz("tele_offset", c.geometry.tele);
+  c.geometry.wide = p.xyz("wide_offset", c.geometry.wide);
+  c.geometry.thermal = p.xyz("thermal_offset", c.geometry.thermal);
+  c.geometry.laser = p.xyz("laser_offset", c.geometry.laser);
+  c.range.min_range = static_cast<float>(p.number("laser_min_range", 5.0, 0, 1e5));
+  c.range.max_range = static_cast<float>(p.number("laser_max_range", 1500.0, 0, 1e5));
+  c.range.field_of_view = static_cast<float>(p.number("laser_field_of_view", 0.003, 0, 3.2));
+  c.rate_tolerance = p.number("rate_tolerance", 0.5, 0.01, 0.99);
+
+  if (!p.error().empty()) return Result<RosPodConfig>::fail(p.error());
+  return c;
+}
+
+}  // namespace k40t::driver

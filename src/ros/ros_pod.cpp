@@ -1,0 +1,66 @@
+#include "k40t_driver/ros/ros_pod.h"
+
+#include <ros/console.h>
+
+namespace k40t::driver {
+
+Result<std::unique_ptr<RosPod>> RosPod::create(ros::NodeHandle nh, ros::NodeHandle private_nh) {
+  Result<RosPodConfig> config = read_params(private_nh);
+  if (!config) return Result<std::unique_ptr<RosPod>>::fail(config.error());
+  Result<std::unique_ptr<PodDriver>> driver = PodDriver::create(
+      config->driver, [] { return static_cast<StampNs>(ros::Time::now().toNSec()); });
+  if (!driver) return Result<std::unique_ptr<RosPod>>::fail(driver.error());
+  std::unique_ptr<RosPod> pod(
+      new RosPod(nh, private_nh, config.value(), std::move(driver.value())));
+  const Status started = pod->start();
+  if (!started) return Result<std::unique_ptr<RosPod>>::fail(started.message());
+  return pod;
+}
+
+RosPod::RosPod(ros::NodeHandle nh, ros::NodeHandle private_nh, const RosPodConfig& config,
+               std::unique_ptr<PodDriver> driver)
+    : config_(config), driver_(std::move(driver)) {
+  // Every handler is registered before the link starts.
+  topics_ = std::make_unique<TopicPublisher>(nh, *driver_, config_);
+  if (config_.driver.replay) {
+    replay_ = std::make_unique<ReplayInput>(nh, *driver_);
+  } else {
+    settings_ = std::make_unique<SettingsSync>(private_nh, *driver_);
+    commands_ = std::make_unique<CommandInput>(nh, *driver_);
+  }
+  diagnostics_ =
+      std::make_unique<PodDiagnostics>(nh, private_nh, *driver_, config_, settings_.get());
+  services_ = std::make_unique<PodServices>(nh, *driver_);
+  driver_->on_pod_online([this] { on_pod_online(); });
+  driver_->on_link_state([](transport::LinkState state, const std::string& reason) {
+    if (state == transport::LinkState::kConnected) {
+      ROS_INFO("K40T link connected");
+    } else {
+      ROS_WARN("K40T link %s: %s", transport::to_string(state), reason.c_str());
+    }
+  });
+}
+
+RosPod::~RosPod() {
+  // The link stops first so that no handler runs into a half-destroyed glue object.
+  if (driver_) driver_->stop();
+}
+
+Status RosPod::start() {
+  const Status started = driver_->start();
+  if (started && !config_.driver.replay) {
+    ROS_INFO("K40T driver started on %s",
+             device_url_with_baud(config_.driver.device, config_.driver.baud).c_str());
+  }
+  return started;
+}
+
+void RosPod::on_pod_online() {
+  ROS_INFO("K40T pod online: reading versions and settings");
+  const PodVersions versions = read_versions(*driver_);
+  diagnostics_->set_versions(versions);
+  if (!versions.ok) ROS_WARN("K40T versions not read: %s", versions.message.c_str());
+  if (settings_) settings_->read_from_pod();
+}
+
+}  // namespace k40t::driver

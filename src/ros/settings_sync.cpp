@@ -1,0 +1,99 @@
+#include "k40t_driver/ros/settings_sync.h"
+
+#include <ros/console.h>
+
+namespace k40t::driver {
+
+namespace {
+// How long read_from_pod() waits for the periodic camera (1 Hz) and gimbal (2 Hz) reports.
+constexpr std::chrono::milliseconds kReportWait{2500};
+}  // namespace
+
+SettingsSync::SettingsSync(ros::NodeHandle private_nh, PodDriver& driver) : driver_(driver) {
+  // The reports are kept by the I/O thread and absorbed by read_from_pod(): the I/O thread must
+  // never wait for the server's mutex, which a reconfigure callback holds while it waits for an
+  // ACK that only the I/O thread can deliver.
+  driver.on<protocol::CameraSystemStatus>(
+      [this](const protocol::CameraSystemStatus& report, StampNs) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        camera_report_ = report;
+        reports_arrived_.notify_all();
+      });
+  driver.on<protocol::GimbalStatus>([this](const protocol::GimbalStatus& report, StampNs) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    gimbal_report_ = report;
+    reports_arrived_.notify_all();
+  });
+  server_ = std::make_unique<dynamic_reconfigure::Server<Config>>(server_mutex_, private_nh);
+  server_->setCallback([this](Config& config, uint32_t level) { on_reconfigure(config, level); });
+}
+
+void SettingsSync::on_reconfigure(Config& config, uint32_t) {
+  if (!initialised_) {
+    // The server's first call hands over its initial values: nothing to send, the pod's own
+    // settings replace them on connect.
+    initialised_ = true;
+    current_ = config;
+    return;
+  }
+  for (const SettingBinding& binding : setting_bindings()) {
+    if (!binding.differs(config, current_)) continue;
+    const session::AckResult result = binding.apply(driver_, config);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (result.ok()) {
+      ++state_.changes_applied;
+      state_.last_refusal.clear();
+      binding.copy(current_, config);
+    } else {
+      ++state_.changes_refused;
+      state_.last_refusal = binding.name + ": " + result.message;
+      ROS_WARN("K40T setting %s refused, reverted: %s", binding.name.c_str(),
+               result.message.c_str());
+      binding.copy(config, current_);  // what the server publishes after this callback
+    }
+  }
+  current_ = config;
+}
+
+void SettingsSync::read_from_pod() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    camera_report_.reset();  // wait for reports sent after the pod came online
+    gimbal_report_.reset();
+  }
+  const PodSettings settings = read_settings(driver_);
+  std::optional<protocol::CameraSystemStatus> camera;
+  std::optional<protocol::GimbalStatus> gimbal;
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    reports_arrived_.wait_for(lock, kReportWait, [&] { return camera_report_ && gimbal_report_; });
+    camera = camera_report_;
+    gimbal = gimbal_report_;
+  }
+
+  std::string message = settings.error.empty() ? "read 0x000100 and 0x000200" : settings.error;
+  if (!camera) message += "; no camera status report (0x000003) to read modes from";
+  if (!gimbal) message += "; no gimbal status report (0x000001) to read stabilisation from";
+  {
+    boost::recursive_mutex::scoped_lock server_lock(server_mutex_);
+    Config config = current_;
+    if (settings.thermal) absorb(config, *settings.thermal);
+    if (settings.visible) absorb(config, *settings.visible);
+    if (camera) absorb(config, *camera);
+    if (gimbal) absorb(config, *gimbal);
+    current_ = config;
+    server_->updateConfig(config);
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++state_.reads;
+  state_.read_ok = settings.error.empty();
+  state_.read_message = message;
+  if (!state_.read_ok) ROS_WARN("K40T settings read-back incomplete: %s", message.c_str());
+}
+
+SettingsState SettingsSync::state() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return state_;
+}
+
+}  // namespace k40t::driver

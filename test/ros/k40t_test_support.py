@@ -1,0 +1,177 @@
+"""Helpers shared by the rostest nodes of test/ros: the simulator's control socket, topic
+recorders with rates, diagnostics, service calls with waiting. Imported by the test scripts
+(which run from this directory); not a test itself."""
+import socket
+import threading
+import time
+
+import rospy
+from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
+
+DRIVER_NS = "/k40t"
+
+
+def name(relative):
+    """A topic or service name in the driver's namespace."""
+    return DRIVER_NS + "/" + relative
+
+
+def wait_until(predicate, timeout, step=0.02):
+    """Polls predicate() until it is true or timeout (s) passes; returns its last value."""
+    deadline = time.time() + timeout
+    value = predicate()
+    while not value and time.time() < deadline and not rospy.is_shutdown():
+        time.sleep(step)
+        value = predicate()
+    return value
+
+
+class SimControl:
+    """Client of k40t_sim's control socket (--control unix:PATH): one command, one reply line."""
+
+    def __init__(self, path):
+        self.path = path
+
+    def __call__(self, line, timeout=5.0):
+        deadline = time.time() + timeout
+        while True:
+            try:
+                with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as s:
+                    s.settimeout(timeout)
+                    s.connect(self.path)
+                    s.sendall((line + "\n").encode())
+                    reply = b""
+                    while not reply.endswith(b"\n"):
+                        chunk = s.recv(4096)
+                        if not chunk:
+                            break
+                        reply += chunk
+                    return reply.decode().strip()
+            except (FileNotFoundError, ConnectionRefusedError):
+                if time.time() > deadline:
+                    raise
+                time.sleep(0.1)
+
+    def ok(self, line):
+        reply = self(line)
+        if not reply.startswith("ok"):
+            raise AssertionError("simulator refused '%s': %s" % (line, reply))
+        return reply
+
+
+class Recorder:
+    """Keeps every message of a topic with its arrival time (wall clock)."""
+
+    def __init__(self, topic, msg_type, keep=100000):
+        self.topic = topic
+        self.keep = keep
+        self.lock = threading.Lock()
+        self.items = []  # (arrival, msg)
+        self.sub = rospy.Subscriber(topic, msg_type, self._on_msg, queue_size=1000, tcp_nodelay=True)
+
+    def _on_msg(self, msg):
+        with self.lock:
+            self.items.append((time.time(), msg))
+            if len(self.items) > self.keep:
+                del self.items[: len(self.items) - self.keep]
+
+    def count(self):
+        with self.lock:
+            return len(self.items)
+
+    def messages(self, since=0.0):
+        with self.lock:
+            return [m for t, m in self.items if t >= since]
+
+    def latest(self):
+        with self.lock:
+            return self.items[-1][1] if self.items else None
+
+    def last_arrival(self):
+        with self.lock:
+            return self.items[-1][0] if self.items else None
+
+    def wait_for(self, n=1, timeout=10.0, since=0.0):
+        """Waits for n messages that arrived after `since`; returns them (maybe fewer)."""
+        wait_until(lambda: len(self.messages(since)) >= n, timeout)
+        return self.messages(since)
+
+    def wait_for_match(self, predicate, timeout=10.0, since=0.0):
+        """The first message after `since` that satisfies predicate, or None."""
+        found = []
+
+        def check():
+            for m in self.messages(since):
+                if predicate(m):
+                    found.append(m)
+                    return True
+            return False
+
+        wait_until(check, timeout)
+        return found[0] if found else None
+
+    def rate(self, seconds):
+        """Messages per second over the next `seconds`."""
+        start = time.time()
+        before = len(self.messages(start))
+        time.sleep(seconds)
+        return (len(self.messages(start)) - before) / seconds
+
+    def close(self):
+        self.sub.unregister()
+
+
+class Diagnostics:
+    """The latest /diagnostics status of each name (names end with ': <task>')."""
+
+    def __init__(self):
+        self.lock = threading.Lock()
+        self.latest = {}
+        self.history = []  # (arrival, name, level, message)
+        self.sub = rospy.Subscriber("/diagnostics", DiagnosticArray, self._on_msg, queue_size=100)
+
+    def _on_msg(self, array):
+        now = time.time()
+        with self.lock:
+            for status in array.status:
+                self.latest[status.name] = status
+                self.history.append((now, status.name, status.level, status.message))
+
+    def status(self, task):
+        with self.lock:
+            for key, status in self.latest.items():
+                if key.endswith(": " + task):
+                    return status
+        return None
+
+    def value(self, task, key):
+        status = self.status(task)
+        if status is None:
+            return None
+        for kv in status.values:
+            if kv.key == key:
+                return kv.value
+        return None
+
+    def first_level_since(self, task, level, since):
+        """Arrival time of the first status of `task` at `level` after `since`, or None."""
+        with self.lock:
+            for t, n, lv, _ in self.history:
+                if t >= since and n.endswith(": " + task) and lv == level:
+                    return t
+        return None
+
+    def wait_level(self, task, level, timeout):
+        return wait_until(lambda: self.status(task) is not None and self.status(task).level == level, timeout)
+
+
+def service(relative, srv_type, timeout=15.0):
+    """A ServiceProxy for a driver service, after waiting for it."""
+    full = name(relative)
+    rospy.wait_for_service(full, timeout=timeout)
+    return rospy.ServiceProxy(full, srv_type)
+
+
+OK = DiagnosticStatus.OK
+WARN = DiagnosticStatus.WARN
+ERROR = DiagnosticStatus.ERROR

@@ -1,0 +1,179 @@
+// Conversions: REP 103 signs, units, frame ids, and the vehicle topics -> VehicleState.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <tf2/LinearMath/Quaternion.h>
+#include <tf2/LinearMath/Vector3.h>
+
+#include "k40t_driver/ros/conversions.h"
+#include "k40t_driver/ros/driver_options.h"
+
+namespace k40t::driver {
+namespace {
+
+constexpr double kEps = 1e-9;
+
+tf2::Quaternion as_tf(const geometry_msgs::Quaternion& q) {
+  return tf2::Quaternion(q.x, q.y, q.z, q.w);
+}
+
+TEST(Rep103, PodUpAndRightBecomeNegativePitchAndYaw) {
+  const Rep103Angles a = rep103_from_pod(90.0, 10.0, 30.0);  // right 90, roll 10, up 30
+  EXPECT_NEAR(a.yaw, -M_PI / 2, kEps);                       // REP 103: left positive
+  EXPECT_NEAR(a.roll, 10.0 * M_PI / 180, kEps);
+  EXPECT_NEAR(a.pitch, -M_PI / 6, kEps);  // REP 103: down positive
+}
+
+TEST(JointState, NamesPositionsVelocitiesAndStamp) {
+  protocol::GimbalAttitude att;
+  att.joint_yaw_deg = -45.0;  // left 45
+  att.joint_roll_deg = 2.0;
+  att.joint_pitch_deg = -90.0;  // straight down
+  att.yaw_rate_deg_s = 10.0;
+  att.roll_rate_deg_s = 0.0;
+  att.pitch_rate_deg_s = -5.0;
+  const ros::Time stamp(1234, 5678);
+  const sensor_msgs::JointState js = to_joint_state(att, stamp, FrameIds("p_", "j_"));
+  EXPECT_EQ(js.header.stamp, stamp);
+  ASSERT_EQ(js.name.size(), 3u);
+  EXPECT_EQ(js.name[0], "j_yaw_joint");
+  EXPECT_EQ(js.name[1], "j_roll_joint");
+  EXPECT_EQ(js.name[2], "j_pitch_joint");
+  EXPECT_NEAR(js.position[0], M_PI / 4, kEps);
+  EXPECT_NEAR(js.position[1], 2.0 * M_PI / 180, kEps);
+  EXPECT_NEAR(js.position[2], M_PI / 2, kEps);
+  EXPECT_NEAR(js.velocity[0], -10.0 * M_PI / 180, kEps);
+  EXPECT_NEAR(js.velocity[2], 5.0 * M_PI / 180, kEps);
+}
+
+TEST(Transforms, PitchDownTurnsTheCameraAxisDown) {
+  protocol::GimbalAttitude att;
+  att.joint_pitch_deg = -90.0;  // pod: 90 down
+  const FrameIds ids;
+  const auto chain = gimbal_transforms(att, ros::Time(1), ids, GimbalGeometry{});
+  ASSERT_EQ(chain.size(), 3u);
+  EXPECT_EQ(chain[0].header.frame_id, "k40t_base_link");
+  EXPECT_EQ(chain[0].child_frame_id, "k40t_yaw_link");
+  EXPECT_EQ(chain[2].header.frame_id, "k40t_roll_link");
+  EXPECT_EQ(chain[2].child_frame_id, "k40t_pitch_link");
+  const tf2::Vector3 forward =
+      tf2::quatRotate(as_tf(chain[2].transform.rotation), tf2::Vector3(1, 0, 0));
+  EXPECT_NEAR(forward.z(), -1.0, 1e-6);  // the x axis of the pitch link points down
+}
+
+TEST(Transforms, OpticalFramesLookAlongThePitchLinkX) {
+  const FrameIds ids("pod_");
+  const auto sensors = sensor_transforms(ros::Time(1), ids, GimbalGeometry{});
+  ASSERT_EQ(sensors.size(), 4u);
+  for (size_t i = 0; i < 3; ++i) {  // tele, wide, thermal: optical z = link x, optical x = link -y
+    EXPECT_EQ(sensors[i].header.frame_id, "pod_pitch_link");
+    const tf2::Quaternion q = as_tf(sensors[i].transform.rotation);
+    const tf2::Vector3 z = tf2::quatRotate(q, tf2::Vector3(0, 0, 1));
+    const tf2::Vector3 x = tf2::quatRotate(q, tf2::Vector3(1, 0, 0));
+    EXPECT_NEAR(z.x(), 1.0, 1e-6) << sensors[i].child_frame_id;
+    EXPECT_NEAR(x.y(), -1.0, 1e-6) << sensors[i].child_frame_id;
+  }
+  EXPECT_EQ(sensors[0].child_frame_id, "pod_tele_optical_frame");
+  EXPECT_EQ(sensors[3].child_frame_id, "pod_laser_frame");
+  EXPECT_NEAR(sensors[3].transform.rotation.w, 1.0, 1e-9);  // the laser frame is not rotated
+}
+
+TEST(Range, NoReturnIsPlusInfinityInTheLaserFrame) {
+  const RangeLimits limits;
+  const sensor_msgs::Range none = to_range(0.0, ros::Time(2), FrameIds(), limits);
+  EXPECT_TRUE(std::isinf(none.range) && none.range > 0);
+  EXPECT_EQ(none.header.frame_id, "k40t_laser_frame");
+  const sensor_msgs::Range hit = to_range(123.4, ros::Time(2), FrameIds(), limits);
+  EXPECT_FLOAT_EQ(hit.range, 123.4f);
+  EXPECT_FLOAT_EQ(hit.min_range, limits.min_range);
+  EXPECT_FLOAT_EQ(hit.max_range, limits.max_range);
+}
+
+TEST(ThermalStats, DegreesCoordinatesAndAlarms) {
+  protocol::ThermalStatus t;
+  t.max_degC = 85.3;
+  t.min_degC = -12.5;
+  t.center_degC = 20.1;
+  t.max_x_px = 700;
+  t.max_y_px = 500;
+  t.point_x_px = 960;
+  t.high_alarm = true;
+  const k40t_driver::ThermalStats m = to_msg(t, ros::Time(3), FrameIds());
+  EXPECT_FLOAT_EQ(m.max_degC, 85.3f);
+  EXPECT_FLOAT_EQ(m.min_degC, -12.5f);
+  EXPECT_FLOAT_EQ(m.centre_degC, 20.1f);
+  EXPECT_EQ(m.max_x, 700);
+  EXPECT_EQ(m.max_y, 500);
+  EXPECT_EQ(m.point_x, 960);
+  EXPECT_TRUE(m.high_alarm);
+  EXPECT_FALSE(m.low_alarm);
+  EXPECT_EQ(m.header.frame_id, "k40t_thermal_optical_frame");
+}
+
+TEST(VehicleState, ImuEnuBecomesAviationAngles) {
+  VehicleState s;
+  sensor_msgs::Imu imu;
+  tf2::Quaternion q;
+  q.setRPY(0.0, 0.1, M_PI / 2);  // facing north (ENU yaw 90 deg), nose down 0.1 rad
+  imu.orientation.x = q.x();
+  imu.orientation.y = q.y();
+  imu.orientation.z = q.z();
+  imu.orientation.w = q.w();
+  update_from_imu(s, imu);
+  EXPECT_TRUE(s.has_attitude);
+  EXPECT_NEAR(s.heading_deg, 0.0, 1e-6);
+  EXPECT_NEAR(s.pitch_deg, -0.1 * 180 / M_PI, 1e-6);  // nose down is negative in aviation
+  q.setRPY(0.2, 0.0, 0.0);                            // facing east, right side down
+  imu.orientation.x = q.x();
+  imu.orientation.y = q.y();
+  imu.orientation.z = q.z();
+  imu.orientation.w = q.w();
+  update_from_imu(s, imu);
+  EXPECT_NEAR(s.heading_deg, 90.0, 1e-6);
+  EXPECT_NEAR(s.roll_deg, 0.2 * 180 / M_PI, 1e-6);
+}
+
+TEST(VehicleState, ImuWithoutOrientationIsIgnored) {
+  VehicleState s;
+  sensor_msgs::Imu imu;
+  imu.orientation.w = 0.0;  // all zeros: "no orientation"
+  update_from_imu(s, imu);
+  EXPECT_FALSE(s.has_attitude);
+}
+
+TEST(VehicleState, FirstFixIsTheRelativeAltitudeReference) {
+  VehicleState s;
+  double reference = std::nan("");
+  sensor_msgs::NavSatFix fix;
+  fix.status.status = sensor_msgs::NavSatStatus::STATUS_FIX;
+  fix.latitude = 47.1;
+  fix.longitude = 8.5;
+  fix.altitude = 500.0;
+  fix.header.stamp = ros::Time(1700000000, 250000000);
+  update_from_fix(s, fix, &reference);
+  EXPECT_TRUE(s.has_fix);
+  EXPECT_EQ(s.gps_status, 3);
+  EXPECT_EQ(s.utc_ms, 1700000000250);
+  EXPECT_DOUBLE_EQ(s.relative_altitude_m, 0.0);
+  fix.altitude = 530.0;
+  update_from_fix(s, fix, &reference);
+  EXPECT_DOUBLE_EQ(s.relative_altitude_m, 30.0);
+  EXPECT_DOUBLE_EQ(s.altitude_m, 530.0);
+  fix.status.status = sensor_msgs::NavSatStatus::STATUS_NO_FIX;
+  update_from_fix(s, fix, &reference);
+  EXPECT_FALSE(s.has_fix);
+}
+
+TEST(DeviceUrl, BaudIsAddedToSerialUrlsOnly) {
+  EXPECT_EQ(device_url_with_baud("serial:///dev/ttyUSB0", 115200),
+            "serial:///dev/ttyUSB0?baud=115200");
+  EXPECT_EQ(device_url_with_baud("serial:///dev/ttyUSB0?x=1", 9600),
+            "serial:///dev/ttyUSB0?x=1&baud=9600");
+  EXPECT_EQ(device_url_with_baud("serial:///dev/ttyS1?baud=57600", 115200),
+            "serial:///dev/ttyS1?baud=57600");
+  EXPECT_EQ(device_url_with_baud("udp://192.168.144.64:2000", 115200), "udp://192.168.144.64:2000");
+}
+
+}  // namespace
+}  // namespace k40t::driver
