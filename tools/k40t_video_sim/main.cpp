@@ -149,7 +149,8 @@ int main(int argc, char** argv) {
   int signal = 0;
   sigwait(&stop_signals, &signal);
   const auto counters = server.value()->counters();
-  std::cout << "k40t_video_sim: stopping after " << counters.frames_pushed << " frames" << std::endl;
+  std::cout << "k40t_video_sim: stopping after " << counters.frames_pushed << " frames"
+            << std::endl;
   server.value().reset();
   return 0;
 }

@@ -11,8 +11,7 @@ std::optional<std::pair<cv::Point2d, cv::Point2d>> clip_segment(cv::Point2d a, c
   double t1 = 1;
   // For each edge: p * t <= q keeps the point inside.
   const double p[4] = {-d.x, d.x, -d.y, d.y};
-  const double q[4] = {a.x - box.x, box.x + box.width - a.x, a.y - box.y,
-                       box.y + box.height - a.y};
+  const double q[4] = {a.x - box.x, box.x + box.width - a.x, a.y - box.y, box.y + box.height - a.y};
   for (int i = 0; i < 4; ++i) {
     if (p[i] == 0) {
       if (q[i] < 0) return std::nullopt;

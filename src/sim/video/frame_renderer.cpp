@@ -2,20 +2,14 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "k40t_driver/video/stream_view.h"
+
 namespace k40t::sim::video {
 
 cv::Size frame_size(const VideoSnapshot& snapshot) {
   if (snapshot.image_mode == ImageMode::kThermal) return {kThermalWidth, kThermalHeight};
   return snapshot.resolution == StreamResolution::k720p ? cv::Size(1280, 720)
                                                         : cv::Size(1920, 1080);
-}
-
-SplitLayout split_layout(cv::Size frame) {
-  const int half = frame.width / 2;
-  const cv::Size visible(half, frame.height / 2);
-  const cv::Size thermal(half, half * kThermalHeight / kThermalWidth);
-  return {{0, (frame.height - visible.height) / 2, visible.width, visible.height},
-          {half, (frame.height - thermal.height) / 2, thermal.width, thermal.height}};
 }
 
 cv::Mat FrameRenderer::render(const VideoSnapshot& snapshot, const FrameStamp& stamp) {
@@ -27,7 +21,7 @@ cv::Mat FrameRenderer::render(const VideoSnapshot& snapshot, const FrameStamp& s
       break;
     case ImageMode::kSplit: {
       frame = cv::Mat::zeros(size, CV_8UC3);
-      const SplitLayout layout = split_layout(size);
+      const k40t::video::SplitLayout layout = k40t::video::split_layout(size);
       cv::resize(visible_.render(snapshot, size), frame(layout.visible), layout.visible.size(), 0,
                  0, cv::INTER_AREA);
       cv::resize(thermal_.render(snapshot), frame(layout.thermal), layout.thermal.size(), 0, 0,

@@ -45,7 +45,8 @@ namespace {
 std::string launch_line(const RtspServerOptions& options) {
   return "( appsrc name=src is-live=true do-timestamp=true format=time max-bytes=0 "
          "max-buffers=2 leaky-type=downstream "
-         "! x264enc tune=zerolatency speed-preset=ultrafast sliced-threads=false threads=1 bitrate=" +
+         "! x264enc tune=zerolatency speed-preset=ultrafast sliced-threads=false threads=1 "
+         "bitrate=" +
          std::to_string(options.bitrate_kbps) +
          " key-int-max=" + std::to_string(options.key_frame_interval) +
          " ! video/x-h264,profile=constrained-baseline "
@@ -184,9 +185,8 @@ class RtspStreamServer::Impl {
     auto* yuv = new cv::Mat();
     cv::cvtColor(bgr, *yuv, cv::COLOR_BGR2YUV_I420);
     const gsize bytes = yuv->total() * yuv->elemSize();
-    GstBuffer* buffer =
-        gst_buffer_new_wrapped_full(GST_MEMORY_FLAG_READONLY, yuv->data, bytes, 0, bytes, yuv,
-                                    &release_mat);
+    GstBuffer* buffer = gst_buffer_new_wrapped_full(GST_MEMORY_FLAG_READONLY, yuv->data, bytes, 0,
+                                                    bytes, yuv, &release_mat);
     if (gst_app_src_push_buffer(GST_APP_SRC(appsrc), buffer) == GST_FLOW_OK) {
       std::lock_guard<std::mutex> lock(mutex_);
       ++counters_.frames_pushed;

@@ -79,7 +79,8 @@ void SceneCanvas::label(const WorldDirection& anchor, const std::string& text, d
   if (height_px < 6 || height_px > image_.rows) return;
   const double scale = height_px / kHersheyHeightPx;
   const int thickness = std::max(1, static_cast<int>(scale * 2));
-  const cv::Size extent = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, scale, thickness, nullptr);
+  const cv::Size extent =
+      cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, scale, thickness, nullptr);
   if (!cv::Rect2d(-extent.width, 0, image_.cols + extent.width, image_.rows + extent.height)
            .contains(*p)) {
     return;

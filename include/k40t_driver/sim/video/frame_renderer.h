@@ -1,9 +1,9 @@
 // One frame of the simulated pod's stream, as the image mode selects:
 //   thermal (0)          640 x 512, the thermal image;
 //   visible (5, 6)       1920 x 1080 (or 1280 x 720 at the 720p stream resolution), telephoto;
-//   split screen (7)     1920 x 1080 (1280 x 720): the visible image scaled to half size on the
-//                        left half, vertically centred, and the thermal image scaled to the right
-//                        half's width (960 x 768 at 1080p), vertically centred; black elsewhere.
+//   split screen (7)     1920 x 1080 (1280 x 720): the visible image and the thermal image side
+//                        by side as video/stream_view.h's split_layout() places them (the
+//                        client decodes the panels with the same layout); black elsewhere.
 // Every frame carries the frame stamp (frame_stamp.h) in its top-left corner.
 #pragma once
 
@@ -18,13 +18,6 @@ namespace k40t::sim::video {
 
 // Size of the frames streamed in this snapshot's image mode and resolution.
 cv::Size frame_size(const VideoSnapshot& snapshot);
-
-// Where the split screen puts each half inside a frame of `frame`.
-struct SplitLayout {
-  cv::Rect visible;
-  cv::Rect thermal;
-};
-SplitLayout split_layout(cv::Size frame);
 
 class FrameRenderer {
  public:

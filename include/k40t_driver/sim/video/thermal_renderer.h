@@ -8,11 +8,12 @@
 #include <opencv2/core.hpp>
 
 #include "k40t_driver/sim/video/video_snapshot.h"
+#include "k40t_driver/video/stream_view.h"
 
 namespace k40t::sim::video {
 
-constexpr int kThermalWidth = 640;
-constexpr int kThermalHeight = 512;
+using k40t::video::kThermalHeight;
+using k40t::video::kThermalWidth;
 
 class ThermalRenderer {
  public:

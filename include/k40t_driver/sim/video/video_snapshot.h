@@ -29,11 +29,11 @@ enum class StreamResolution : uint8_t { k1080p = 0, k720p = 1 };
 struct VideoSnapshot {
   ImageMode image_mode = ImageMode::kVisible;
   StreamResolution resolution = StreamResolution::k1080p;
-  int palette = 1;           // 1..20 (0x000106)
-  double hybrid_zoom = 1;    // telephoto, 1..160 (0x000005 bytes 4-5)
-  int thermal_zoom = 1;      // thermal digital zoom, 1..8 (0x000105)
-  double yaw_deg = 0;        // boresight heading in the world, positive to the right
-  double pitch_deg = 0;      // boresight elevation, positive up
+  int palette = 1;                 // 1..20 (0x000106)
+  double hybrid_zoom = 1;          // telephoto, 1..160 (0x000005 bytes 4-5)
+  int thermal_zoom = 1;            // thermal digital zoom, 1..8 (0x000105)
+  double yaw_deg = 0;              // boresight heading in the world, positive to the right
+  double pitch_deg = 0;            // boresight elevation, positive up
   TemperatureSampler temperature;  // empty: a uniform 20 degC scene
   // Bumped by the owner whenever what `temperature` returns changes for the same direction, so
   // the renderer knows its cached thermal field is stale.
