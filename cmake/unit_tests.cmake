@@ -14,3 +14,7 @@ target_compile_definitions(k40t_unit_tests PRIVATE
   K40T_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/test/data"
   K40T_BINARY_DIR="${CMAKE_RUNTIME_OUTPUT_DIRECTORY}")
 add_test(NAME k40t_unit_tests COMMAND k40t_unit_tests)
+# The tool tests run the built k40t program (K40T_BINARY_DIR).
+if(TARGET k40t)
+  add_dependencies(k40t_unit_tests k40t)
+endif()

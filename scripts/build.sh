@@ -7,6 +7,7 @@
 set -euo pipefail
 source "$(dirname "$0")/env.sh"
 what="${1:-all}"
+mkdir -p "$K40T_BUILD"
 
 mkdir -p "$K40T_BUILD"
 if [ "$what" = core ] || [ "$what" = all ]; then

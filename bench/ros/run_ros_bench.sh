@@ -7,7 +7,7 @@
 #   3. CPU and RSS of the driver at full telemetry over BENCH_SECONDS (default 60; target <= 1 %
 #      of a core and <= 30 MB)
 # Runs on its own ROS master port. Expects a build (scripts/build.sh ros).
-set -uo pipefail
+set -o pipefail
 source "$(dirname "$0")/../../scripts/ros_env.sh"
 port="${BENCH_ROS_PORT:-11911}"
 export ROS_MASTER_URI="http://127.0.0.1:$port"
@@ -16,26 +16,26 @@ mkdir -p "$out"
 rm -f "$out/latency.txt"
 seconds="${BENCH_SECONDS:-60}"
 
-launch() {  # launch FILE ARGS...: roslaunch in the background on our port; echoes its pid
+launch() {  # launch FILE ARGS...: roslaunch in the background on our port; sets launch_pid
   roslaunch -p "$port" "$@" > "$out/$(basename "$1" .launch).log" 2>&1 &
-  echo $!
+  launch_pid=$!
 }
-stop() { kill -INT "$1" 2>/dev/null; wait "$1" 2>/dev/null; }
+stop() { kill -INT "$launch_pid" 2>/dev/null; wait "$launch_pid" 2>/dev/null; }
 
 echo "== latency: byte on the pty -> joint_states"
-pid=$(launch "$K40T_ROOT/bench/ros/latency.launch" in_manager:=false link:=/tmp/k40t_bench_pty_$$ output:="$out/latency.txt")
-wait "$pid"
-pid=$(launch "$K40T_ROOT/bench/ros/latency.launch" in_manager:=true link:=/tmp/k40t_bench_pty_$$ output:="$out/latency.txt")
+launch "$K40T_ROOT/bench/ros/latency.launch" in_manager:=false link:=/tmp/k40t_bench_pty_$$ output:="$out/latency.txt"
+wait "$launch_pid"
+launch "$K40T_ROOT/bench/ros/latency.launch" in_manager:=true link:=/tmp/k40t_bench_pty_$$ output:="$out/latency.txt"
 for _ in $(seq 1 600); do [ "$(wc -l < "$out/latency.txt" 2>/dev/null || echo 0)" -ge 2 ] && break; sleep 0.1; done
-stop "$pid"
+stop
 cat "$out/latency.txt" 2>/dev/null || echo "no latency result (see $out/latency.log)"
 
 echo "== service round trip"
-pid=$(launch "$K40T_ROOT/bench/ros/service_rtt.launch" link:=/tmp/k40t_bench_rtt_$$)
-wait "$pid"
+launch "$K40T_ROOT/bench/ros/service_rtt.launch" link:=/tmp/k40t_bench_rtt_$$
+wait "$launch_pid"
 grep -A1 "round trip" "$out/service_rtt.log" || echo "no round-trip result (see $out/service_rtt.log)"
 
 echo "== driver CPU and RSS over ${seconds} s at full telemetry"
-pid=$(launch "$K40T_ROOT/launch/sim.launch" sim_link:=/tmp/k40t_bench_res_$$)
+launch "$K40T_ROOT/launch/sim.launch" sim_link:=/tmp/k40t_bench_res_$$
 /usr/bin/python3 "$K40T_ROOT/bench/ros/driver_resources.py" --seconds "$seconds" --node /k40t/driver
-stop "$pid"
+stop

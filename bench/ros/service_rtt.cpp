@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include <ros/ros.h>
@@ -22,23 +23,39 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "service_rtt: %s not available\n", client.getService().c_str());
     return 1;
   }
-  std::vector<double> ms;
-  int failures = 0;
-  for (int i = 0; i < calls + 10 && ros::ok(); ++i) {
+  // Until the pod answers (the driver may still be reading its settings), then 10 warm-up calls.
+  std::string last_failure;
+  auto call = [&](int i, double* elapsed_ms) {
     k40t_driver::SetPalette srv;
     srv.request.palette = static_cast<uint8_t>(1 + i % 20);
+    // A persistent connection (no per-call handshake) is dropped after a failure: make a new one.
+    if (!client.isValid()) client = nh.serviceClient<k40t_driver::SetPalette>("set_palette", true);
     const auto start = std::chrono::steady_clock::now();
     const bool called = client.call(srv);
-    const double elapsed =
+    *elapsed_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (!called || !srv.response.success) {
+    if (!called) last_failure = "the service call itself failed";
+    if (called && !srv.response.success) last_failure = srv.response.message;
+    return called && srv.response.success;
+  };
+  double elapsed = 0;
+  const ros::WallTime ready_deadline = ros::WallTime::now() + ros::WallDuration(20.0);
+  while (ros::ok() && !call(0, &elapsed) && ros::WallTime::now() < ready_deadline) {
+    ros::WallDuration(0.2).sleep();
+  }
+  for (int i = 0; i < 10 && ros::ok(); ++i) call(i, &elapsed);
+  std::vector<double> ms;
+  int failures = 0;
+  for (int i = 0; i < calls && ros::ok(); ++i) {
+    if (call(i, &elapsed)) {
+      ms.push_back(elapsed);
+    } else {
       ++failures;
-      continue;
     }
-    if (i >= 10) ms.push_back(elapsed);  // 10 warm-up calls
   }
   if (ms.empty()) {
-    std::fprintf(stderr, "service_rtt: no successful call (%d failures)\n", failures);
+    std::fprintf(stderr, "service_rtt: no successful call (%d failures; last: %s)\n", failures,
+                 last_failure.c_str());
     return 1;
   }
   std::sort(ms.begin(), ms.end());

@@ -1,6 +1,7 @@
 #include "k40t_driver/protocol/catalogue.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <deque>
 #include <string>
 
@@ -25,18 +26,21 @@ std::vector<MessageInfo> build() {
   for (const MessageInfo& m : all) {
     if (kind_of(m.id) != MessageKind::kRequestOrReport || is_periodic_report(m.id)) continue;
     const MessageId ack = ack_id_of(m.id);
-    const bool has_own = std::any_of(all.begin(), all.end(), [&](const MessageInfo& o) { return o.id == ack; });
+    const bool has_own =
+        std::any_of(all.begin(), all.end(), [&](const MessageInfo& o) { return o.id == ack; });
     if (has_own) continue;
     MessageInfo info = info_of<PlainAck>();
     info.id = ack;
     ack_names.push_back(std::string(m.name) + "_ack");
     info.name = ack_names.back().c_str();
     info.section = m.section;
-    info.direction = m.direction == Direction::kHostToPod ? Direction::kPodToHost : Direction::kHostToPod;
+    info.direction =
+        m.direction == Direction::kHostToPod ? Direction::kPodToHost : Direction::kHostToPod;
     acks.push_back(info);
   }
   all.insert(all.end(), acks.begin(), acks.end());
-  std::sort(all.begin(), all.end(), [](const MessageInfo& a, const MessageInfo& b) { return a.id < b.id; });
+  std::sort(all.begin(), all.end(),
+            [](const MessageInfo& a, const MessageInfo& b) { return a.id < b.id; });
   return all;
 }
 
@@ -61,6 +65,16 @@ const MessageInfo* find_message(const std::string& name) {
   return nullptr;
 }
 
-bool is_known_id(MessageId id) { return find_message(id) != nullptr; }
+bool is_known_id(MessageId id) {
+  return find_message(id) != nullptr;
+}
+
+std::string display_name(MessageId id) {
+  char hex[16];
+  std::snprintf(hex, sizeof(hex), "0x%06X", static_cast<unsigned>(id));
+  const MessageInfo* info = find_message(id);
+  return info != nullptr ? std::string(info->name) + " (" + hex + ")"
+                         : std::string("unknown message ") + hex;
+}
 
 }  // namespace k40t::protocol

@@ -33,10 +33,11 @@ RosPod::RosPod(ros::NodeHandle nh, ros::NodeHandle private_nh, const RosPodConfi
   services_ = std::make_unique<PodServices>(nh, *driver_);
   driver_->on_pod_online([this] { on_pod_online(); });
   driver_->on_link_state([](transport::LinkState state, const std::string& reason) {
-    if (state == transport::LinkState::kConnected) {
-      ROS_INFO("K40T link connected");
+    if (state == transport::LinkState::kReconnecting) {
+      ROS_WARN("K40T link lost, reconnecting: %s", reason.c_str());
     } else {
-      ROS_WARN("K40T link %s: %s", transport::to_string(state), reason.c_str());
+      ROS_INFO("K40T link %s%s%s", transport::to_string(state), reason.empty() ? "" : ": ",
+               reason.c_str());
     }
   });
 }

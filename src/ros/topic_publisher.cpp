@@ -14,7 +14,8 @@ struct Tag {
 
 ros::Time to_ros(StampNs stamp) {
   ros::Time t;
-  t.fromNSec(static_cast<uint64_t>(stamp));
+  // Negative only with sim time before the first /clock (now = 0 minus the wire time).
+  t.fromNSec(stamp > 0 ? static_cast<uint64_t>(stamp) : 0);
   return t;
 }
 }  // namespace

@@ -40,14 +40,17 @@ class Faults(unittest.TestCase):
         discarded_before = self.counter("bytes discarded")
         self.sim.ok("corrupt 0.002")
         self.sim.ok("garbage 0.3 16")
+        window = 6.0
+        start = time.time()
         try:
-            rate = self.joints.rate(5.0)
-            thermal_rate = self.thermal.rate(2.0)
+            time.sleep(window)
         finally:
             self.sim.ok("clear")
-        # Some frames are lost to corruption, most get through.
+        rate = len(self.joints.messages(start)) / window
+        thermal_rate = len(self.thermal.messages(start)) / window
+        # Some frames are lost to corruption (~10 % of thermal frames at this rate), most get through.
         self.assertGreater(rate, 7.0, "joint_states at %.1f Hz under corruption" % rate)
-        self.assertGreater(thermal_rate, 3.0)
+        self.assertGreater(thermal_rate, 3.5, "thermal/stats at %.1f Hz under corruption" % thermal_rate)
         time.sleep(0.5)
         self.assertGreater(self.counter("checksum errors"), errors_before, "corruption not counted")
         self.assertGreater(self.counter("bytes discarded"), discarded_before, "garbage not counted")

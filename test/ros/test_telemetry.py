@@ -11,12 +11,15 @@ import unittest
 import rospy
 import rostest
 import tf2_ros
+from diagnostic_msgs.msg import DiagnosticArray
 from dynamic_reconfigure.client import Client as ReconfigureClient
 from geometry_msgs.msg import QuaternionStamped
-from sensor_msgs.msg import Imu, JointState, NavSatFix, Range
+from sensor_msgs.msg import Imu, JointState, NavSatFix, NavSatStatus, Range
+from std_srvs.srv import Trigger
 
 from k40t_driver.msg import CameraStatus, Frame, GimbalStatus, ThermalStats, VisibleStatus
-from k40t_test_support import ERROR, OK, Diagnostics, Recorder, SimControl, name, wait_until
+from k40t_driver.srv import SetAngle
+from k40t_test_support import ERROR, OK, Diagnostics, Recorder, SimControl, name, service, wait_until
 
 PKG = "k40t_driver"
 
@@ -176,18 +179,25 @@ class Telemetry(unittest.TestCase):
         imu_pub = rospy.Publisher(name("attitude"), Imu, queue_size=1, latch=True)
         fix = NavSatFix()
         fix.header.stamp = rospy.Time.now()
-        fix.status.status = 0
+        fix.status.status = NavSatStatus.STATUS_FIX
         fix.latitude, fix.longitude, fix.altitude = 47.3977, 8.5456, 500.0
         imu = Imu()
         imu.orientation.w = 1.0
         fix_pub.publish(fix)
         imu_pub.publish(imu)
-        target = targets.wait_for(1, timeout=6.0)
-        self.assertTrue(target, "no laser/target after a fix was published (0x000320 every second)")
-        self.assertEqual(target[-1].header.frame_id, "k40t_laser_frame")
-        # The simulator's target is near the vehicle (tens of metres away at most).
-        self.assertAlmostEqual(target[-1].latitude, fix.latitude, delta=0.01)
-        self.assertAlmostEqual(target[-1].longitude, fix.longitude, delta=0.01)
+        # Looking at the horizon the laser has no return: the pod answers with no position.
+        self.assertTrue(service("gimbal/center", Trigger)().success)
+        none = targets.wait_for_match(lambda m: m.status.status == NavSatStatus.STATUS_NO_FIX, 8.0)
+        self.assertIsNotNone(none, "no laser/target answer while looking at the horizon")
+        # Looking down at the ground 30 m below, the target is a few tens of metres away.
+        self.assertTrue(service("gimbal/set_angle", SetAngle)(pitch=0.8, yaw=0.0).success)
+        target = targets.wait_for_match(lambda m: m.status.status == NavSatStatus.STATUS_FIX, 15.0, since=time.time())
+        self.assertIsNotNone(target, "no laser/target with a position after looking down")
+        self.assertEqual(target.header.frame_id, "k40t_laser_frame")
+        self.assertAlmostEqual(target.latitude, fix.latitude, delta=0.001)
+        self.assertAlmostEqual(target.longitude, fix.longitude, delta=0.001)
+        self.assertLess(target.altitude, fix.altitude)  # the ground is below the pod
+        self.assertTrue(service("gimbal/center", Trigger)().success)
         targets.close()
 
     def test_diagnostics_show_a_healthy_link_and_every_report(self):
@@ -200,6 +210,19 @@ class Telemetry(unittest.TestCase):
         self.assertTrue(wait_until(lambda: "gimbal hw" in self.diagnostics.status("link").hardware_id, 5.0),
                         "hardware id without versions: %s" % hardware_id)
         self.assertEqual(self.diagnostics.value("link", "checksum errors"), "0")
+
+    def test_diagnostic_aggregator_groups_the_driver(self):
+        # config/diagnostics.yaml, loaded into diagnostic_aggregator by telemetry.test.
+        aggregated = Recorder("/diagnostics_agg", DiagnosticArray)
+
+        def groups():
+            latest = aggregated.latest()
+            return {s.name: s for s in latest.status} if latest else {}
+
+        expected = ["/K40T pod/Link", "/K40T pod/Periodic reports", "/K40T pod/Sensors"]
+        self.assertTrue(wait_until(lambda: all(g in groups() and groups()[g].level == OK for g in expected), 10.0),
+                        "aggregated groups: %s" % {n: s.level for n, s in groups().items()})
+        aggregated.close()
 
 
 if __name__ == "__main__":

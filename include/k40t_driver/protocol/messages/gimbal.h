@@ -1,14 +1,82 @@
 // Gimbal messages (document section 3.1, system 0x03 per NOTES A3): the periodic reports
-// 0x000001 and 0x000002, the requests 0x000010..0x000033 and their ACKs.
+// 0x000001 and 0x000002, the requests 0x000010..0x000033 and the data-carrying ACK 0x010018.
+// The other requests are acknowledged with the bare response code (PlainAck).
+//
+// Sign conventions of the host-side structs (the wire uses direction bytes instead of signs):
+//   pitch: positive = up (the document's 0 "up"), negative = down;
+//   yaw:   positive = right (the document's 1 "right", clockwise seen from above, like a compass
+//          heading and the gimbal conventions of drone SDKs), negative = LEFT.
+// docs/protocol/gimbal_laser_sbus.md explains this and the other decisions.
 #pragma once
+
+#include <cstdint>
 
 #include "k40t_driver/protocol/message.h"
 #include "k40t_driver/protocol/messages/ack.h"
+#include "k40t_driver/protocol/messages/simple_requests.h"
 
 namespace k40t::protocol {
 
-// 0x000002, section 3.1.1.2, 10 Hz. All angles int16 degrees x100, low byte first. Note the
-// rate order on the wire: yaw, pitch, roll.
+// ---- 0x000001 gimbal status, section 3.1.1.1, 2 Hz ------------------------------------------
+
+// Byte 1: the low nibble is the gimbal's link, the high nibble the camera's.
+enum class GimbalLinkState : uint8_t { kNormal = 0, kAbnormal = 1 };
+const char* to_string(GimbalLinkState state);
+
+// Byte 2.
+enum class GimbalUpgradeState : uint8_t {
+  kNormal = 0x00,
+  kKernelUpgradeIncomplete = 0x01,
+  kFirmwareUpgradeIncomplete = 0x02,
+};
+const char* to_string(GimbalUpgradeState state);
+
+// Byte 4: electronic image stabilisation.
+enum class GimbalStabilisationState : uint8_t {
+  kOff = 0,
+  kStabilising = 1,
+  kFailed = 2,
+  kFeatureLost = 3,
+};
+const char* to_string(GimbalStabilisationState state);
+
+struct GimbalStatus {
+  static constexpr MessageId kId = 0x000001;
+  static constexpr const char* kName = "gimbal_status";
+  static constexpr const char* kSection = "3.1.1.1";
+  static constexpr Direction kDirection = Direction::kPodToHost;
+  static constexpr size_t kSize = 7;
+  static constexpr size_t kMinSize = 4;  // bytes 5..7 are reserved: optional on receive
+
+  GimbalLinkState gimbal_link = GimbalLinkState::kNormal;
+  GimbalLinkState camera_link = GimbalLinkState::kNormal;
+  GimbalUpgradeState upgrade = GimbalUpgradeState::kNormal;
+  // Byte 3, self-test: bit 0 IR core, bit 1 telephoto, bit 2 wide-angle, bit 3 laser (1 = ok).
+  bool ir_ok = true;
+  bool tele_ok = true;
+  bool wide_ok = true;
+  bool laser_ok = true;
+  GimbalStabilisationState stabilisation = GimbalStabilisationState::kOff;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("gimbal_link", self.gimbal_link);
+    v("camera_link", self.camera_link);
+    v("upgrade", self.upgrade);
+    v("ir_ok", self.ir_ok);
+    v("tele_ok", self.tele_ok);
+    v("wide_ok", self.wide_ok);
+    v("laser_ok", self.laser_ok);
+    v("stabilisation", self.stabilisation);
+  }
+};
+
+// ---- 0x000002 gimbal attitude, section 3.1.1.2, 10 Hz ---------------------------------------
+
+// All angles int16 degrees x100, low byte first. Note the rate order on the wire: yaw, pitch, roll.
 struct GimbalAttitude {
   static constexpr MessageId kId = 0x000002;
   static constexpr const char* kName = "gimbal_attitude";
@@ -42,6 +110,238 @@ struct GimbalAttitude {
     v("pitch_rate_deg_s", self.pitch_rate_deg_s);
     v("roll_rate_deg_s", self.roll_rate_deg_s);
   }
+};
+
+// ---- 0x000010 gimbal control, section 3.1.2.1 -----------------------------------------------
+
+// Byte 1, upper nibble (the lower nibble is reserved, sent as zero).
+enum class GimbalMode : uint8_t { kNone = 0, kCentre = 1, kLookDown = 2 };
+const char* to_string(GimbalMode mode);
+// Byte 2: keep turning until told to stop.
+enum class GimbalYawDirection : uint8_t { kLeft = 0, kRight = 1, kStop = 2 };
+const char* to_string(GimbalYawDirection direction);
+// Byte 3.
+enum class GimbalPitchDirection : uint8_t { kUp = 0, kDown = 1, kStop = 2 };
+const char* to_string(GimbalPitchDirection direction);
+
+struct GimbalControlRequest {
+  static constexpr MessageId kId = 0x000010;
+  static constexpr const char* kName = "gimbal_control";
+  static constexpr const char* kSection = "3.1.2.1";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 4;
+  static constexpr size_t kMinSize = 3;
+  using Ack = PlainAck;
+
+  GimbalMode mode = GimbalMode::kNone;
+  GimbalYawDirection yaw = GimbalYawDirection::kStop;
+  GimbalPitchDirection pitch = GimbalPitchDirection::kStop;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("mode", self.mode);
+    v("yaw", self.yaw);
+    v("pitch", self.pitch);
+  }
+};
+
+// ---- 0x000012 gimbal angle, section 3.1.2.2 -------------------------------------------------
+
+// Absolute angles. On the wire each axis is a direction byte (pitch 0 up / 1 down, yaw 0 left /
+// 1 right, 2 = no movement) and a uint16 magnitude in degrees x CodecOptions::angle_command_scale
+// (NOTES A4, default 100). Here: signed degrees (see the sign conventions at the top of this file)
+// and, per axis, `*_move = false` for the document's "no movement" (the angle is then ignored and
+// sent as 0).
+struct GimbalAngleRequest {
+  static constexpr MessageId kId = 0x000012;
+  static constexpr const char* kName = "gimbal_angle";
+  static constexpr const char* kSection = "3.1.2.2";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 7;
+  static constexpr size_t kMinSize = 6;
+  using Ack = PlainAck;
+
+  static constexpr double kPitchMinDeg = -90;  // "down 90 degrees"
+  static constexpr double kPitchMaxDeg = 30;   // "up 30 degrees"
+  static constexpr double kYawLimitDeg = 180;  // "180 degrees left, 180 degrees right"
+
+  bool pitch_move = true;
+  double pitch_deg = 0;  // up positive
+  bool yaw_move = true;
+  double yaw_deg = 0;  // right positive, left negative
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("pitch_move", self.pitch_move);
+    v("pitch_deg", self.pitch_deg);
+    v("yaw_move", self.yaw_move);
+    v("yaw_deg", self.yaw_deg);
+  }
+};
+
+// ---- 0x000013 one-key gyro drift calibration, section 3.1.2.3: byte 1 = 0x01 ----------------
+struct GimbalDriftCalibrationRequest : CommandRequest<0x01> {
+  static constexpr MessageId kId = 0x000013;
+  static constexpr const char* kName = "gimbal_drift_calibration";
+  static constexpr const char* kSection = "3.1.2.3";
+};
+
+// ---- 0x000017 dial (thumb-wheel) speed, section 3.1.2.4 -------------------------------------
+
+// Maximum speed the gimbal turns at when steered with the dial: wire 5..150 = deg/s x5, i.e.
+// 1..30 deg/s. Byte 1 pitch, byte 2 yaw, byte 3 reserved.
+struct GimbalDialSpeedRequest {
+  static constexpr MessageId kId = 0x000017;
+  static constexpr const char* kName = "gimbal_dial_speed";
+  static constexpr const char* kSection = "3.1.2.4";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 3;
+  static constexpr size_t kMinSize = 2;
+  using Ack = PlainAck;
+
+  static constexpr double kMinDegS = 1;
+  static constexpr double kMaxDegS = 30;
+  static constexpr double kWirePerDegS = 5;
+
+  double pitch_speed_deg_s = 6;
+  double yaw_speed_deg_s = 6;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("pitch_speed_deg_s", self.pitch_speed_deg_s);
+    v("yaw_speed_deg_s", self.yaw_speed_deg_s);
+  }
+};
+
+// ---- 0x000018 version, section 3.1.2.5 ------------------------------------------------------
+
+// ACK 0x010018: response code (NOTES A2 byte order), hardware major.minor.patch, software
+// major.minor.patch, 1 reserved byte.
+struct GimbalVersionAck {
+  static constexpr MessageId kId = 0x010018;
+  static constexpr const char* kName = "gimbal_version_ack";
+  static constexpr const char* kSection = "3.1.2.5";
+  static constexpr Direction kDirection = Direction::kPodToHost;
+  static constexpr size_t kSize = 9;
+  static constexpr size_t kMinSize = 2;  // a refusal may carry the code only
+
+  ResponseCode code = ResponseCode::kOk;
+  uint8_t hardware_major = 0;
+  uint8_t hardware_minor = 0;
+  uint8_t hardware_patch = 0;
+  uint8_t software_major = 0;
+  uint8_t software_minor = 0;
+  uint8_t software_patch = 0;
+
+  Status validate() const { return Status::ok(); }
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("code", self.code);
+    v("hardware_major", self.hardware_major);
+    v("hardware_minor", self.hardware_minor);
+    v("hardware_patch", self.hardware_patch);
+    v("software_major", self.software_major);
+    v("software_minor", self.software_minor);
+    v("software_patch", self.software_patch);
+  }
+};
+
+// Byte 1 = 0x01 "get the gimbal version".
+struct GimbalVersionRequest : CommandRequest<0x01, GimbalVersionAck> {
+  static constexpr MessageId kId = 0x000018;
+  static constexpr const char* kName = "gimbal_version";
+  static constexpr const char* kSection = "3.1.2.5";
+};
+
+// ---- 0x00002C point-to-aim, section 3.1.2.6 -------------------------------------------------
+
+// Byte 1: which lens the pixel coordinates and zoom ratio refer to.
+enum class GimbalAimLens : uint8_t { kTele = 0x00, kWide = 0x01, kThermal = 0x02 };
+const char* to_string(GimbalAimLens lens);
+
+// Turn the gimbal so that pixel (x, y) of the given lens's 1920x1080 picture, seen at the given
+// zoom, comes to the centre. Zoom: uint16 x0.1; telephoto 3.5..160 (3.5..11 optical, beyond that
+// digital), wide and thermal 1..8 whole multiples (digital only). x 1..1920, y 1..1080 (centre
+// 960, 540).
+struct GimbalPointAtRequest {
+  static constexpr MessageId kId = 0x00002C;
+  static constexpr const char* kName = "gimbal_point_at";
+  static constexpr const char* kSection = "3.1.2.6";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 7;
+  static constexpr size_t kMinSize = 7;
+  using Ack = PlainAck;
+
+  GimbalAimLens lens = GimbalAimLens::kTele;
+  double zoom_x = 3.5;
+  uint16_t x_px = 960;
+  uint16_t y_px = 540;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("lens", self.lens);
+    v("zoom_x", self.zoom_x);
+    v("x_px", self.x_px);
+    v("y_px", self.y_px);
+  }
+};
+
+// ---- 0x00002D..0x000031: one fixed command byte each ----------------------------------------
+
+// 3.1.2.7: byte 1 = 0x00 "turn off the servo".
+struct GimbalServoOffRequest : CommandRequest<0x00> {
+  static constexpr MessageId kId = 0x00002D;
+  static constexpr const char* kName = "gimbal_servo_off";
+  static constexpr const char* kSection = "3.1.2.7";
+};
+
+// 3.1.2.8: byte 1 = 0x01 "linear calibration".
+struct GimbalLinearCalibrationRequest : CommandRequest<0x01> {
+  static constexpr MessageId kId = 0x00002E;
+  static constexpr const char* kName = "gimbal_linear_calibration";
+  static constexpr const char* kSection = "3.1.2.8";
+};
+
+// 3.1.2.9: byte 1 = 0x01 "soft restart".
+struct GimbalRestartRequest : CommandRequest<0x01> {
+  static constexpr MessageId kId = 0x00002F;
+  static constexpr const char* kName = "gimbal_restart";
+  static constexpr const char* kSection = "3.1.2.9";
+};
+
+// 3.1.2.10: byte 1 = 0x01 "use the flight controller's (fake) attitude".
+struct GimbalUseFlightControllerAttitudeRequest : CommandRequest<0x01> {
+  static constexpr MessageId kId = 0x000030;
+  static constexpr const char* kName = "gimbal_use_flight_controller_attitude";
+  static constexpr const char* kSection = "3.1.2.10";
+};
+
+// 3.1.2.11: byte 1 = 0x01 "calibrate the motion acceleration bias".
+struct GimbalAccelerationCalibrationRequest : CommandRequest<0x01> {
+  static constexpr MessageId kId = 0x000031;
+  static constexpr const char* kName = "gimbal_acceleration_calibration";
+  static constexpr const char* kSection = "3.1.2.11";
+};
+
+// ---- 0x000033 image stabilisation, section 3.1.2.12: byte 1 = 1 on, 0 off -------------------
+struct GimbalStabilisationRequest : SwitchRequest<> {
+  static constexpr MessageId kId = 0x000033;
+  static constexpr const char* kName = "gimbal_stabilisation";
+  static constexpr const char* kSection = "3.1.2.12";
 };
 
 }  // namespace k40t::protocol

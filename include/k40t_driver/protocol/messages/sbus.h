@@ -1,7 +1,120 @@
-// sbus messages — see the family comment at the top once written.
+// SBUS messages (document section 3.2.6, system 0x04): how the pod reads an SBUS remote control
+// plugged into it. 0x000500 sets the channel value range, 0x000501 which channel drives which
+// function, 0x000502 reads both back (data ACK 0x010502). The pod applies changes only after a
+// power cycle (the document's note).
+//
+// Channels: the wire carries 0..15 for channels 1..16; the structs hold the channel NUMBER 1..16,
+// as printed on a remote control.
 #pragma once
 
 #include "k40t_driver/protocol/message.h"
 #include "k40t_driver/protocol/messages/ack.h"
+#include "k40t_driver/protocol/messages/simple_requests.h"
 
-namespace k40t::protocol {}  // namespace k40t::protocol
+namespace k40t::protocol {
+
+// 0x000500, section 3.2.6.1: uint16 maximum, uint16 minimum (both 0..2047, minimum < maximum),
+// 1 reserved byte. Values are raw SBUS channel values (11 bit), no unit.
+struct SbusRangeRequest {
+  static constexpr MessageId kId = 0x000500;
+  static constexpr const char* kName = "sbus_range";
+  static constexpr const char* kSection = "3.2.6.1";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 5;
+  static constexpr size_t kMinSize = 4;
+  using Ack = PlainAck;
+
+  static constexpr int64_t kMaxSbusValue = 2047;
+
+  uint16_t max_value = 1811;  // common SBUS transmitter end points
+  uint16_t min_value = 172;
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("max_value", self.max_value);
+    v("min_value", self.min_value);
+  }
+
+  // The two values alone, in the given byte order (the request is little-endian, the ACK of
+  // 0x000502 follows NOTES A2).
+  void write_values(ByteWriter& w, ByteOrder order) const;
+  void read_values(ByteReader& r, ByteOrder order);
+};
+
+// 0x000501, section 3.2.6.2: one channel per function, bytes 1..7, byte 8 reserved. The document
+// numbers all of bytes 3..8 "Byte3" (a copy-paste slip); the table header gives their order.
+struct SbusChannelsRequest {
+  static constexpr MessageId kId = 0x000501;
+  static constexpr const char* kName = "sbus_channels";
+  static constexpr const char* kSection = "3.2.6.2";
+  static constexpr Direction kDirection = Direction::kHostToPod;
+  static constexpr size_t kSize = 8;
+  static constexpr size_t kMinSize = 7;
+  using Ack = PlainAck;
+
+  static constexpr int kChannelCount = 7;
+  static constexpr int64_t kMaxChannel = 16;
+
+  int stream_channel = 1;  // image mode: thermal / visible / split screen in turn, per switch
+  int zoom_channel = 2;    // centre stops, maximum zooms out, minimum zooms in
+  int photo_channel = 3;   // one photo per switch
+  int record_channel = 4;  // start / stop recording per switch
+  int pitch_channel = 5;   // centre stops; the further from centre, the faster
+  int yaw_channel = 6;
+  int centre_channel = 7;  // one "gimbal back to centre" per switch
+
+  Status validate() const;
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("stream_channel", self.stream_channel);
+    v("zoom_channel", self.zoom_channel);
+    v("photo_channel", self.photo_channel);
+    v("record_channel", self.record_channel);
+    v("pitch_channel", self.pitch_channel);
+    v("yaw_channel", self.yaw_channel);
+    v("centre_channel", self.centre_channel);
+  }
+
+  // The seven channel bytes alone (shared with the ACK of 0x000502).
+  void write_channels(ByteWriter& w) const;
+  void read_channels(ByteReader& r);
+};
+
+// ACK 0x010502, section 3.2.6.3: response code, uint16 maximum, uint16 minimum (NOTES A2 byte
+// order, like the code), the seven channel bytes of 0x000501, 1 reserved byte.
+struct SbusConfigAck {
+  static constexpr MessageId kId = 0x010502;
+  static constexpr const char* kName = "sbus_config_ack";
+  static constexpr const char* kSection = "3.2.6.3";
+  static constexpr Direction kDirection = Direction::kPodToHost;
+  static constexpr size_t kSize = 14;
+  static constexpr size_t kMinSize = 2;  // a refusal may carry the code only
+
+  ResponseCode code = ResponseCode::kOk;
+  SbusRangeRequest range;
+  SbusChannelsRequest channels;
+
+  Status validate() const { return first_failure(range.validate(), channels.validate()); }
+  void encode(ByteWriter& w, const CodecOptions& o) const;
+  Status decode(ByteReader& r, const CodecOptions& o);
+  template <class Self, class V>
+  static void fields(Self& self, V&& v) {
+    v("code", self.code);
+    SbusRangeRequest::fields(self.range, v);
+    SbusChannelsRequest::fields(self.channels, v);
+  }
+};
+
+// 0x000502, section 3.2.6.3: byte 1 = 0x01 "get the SBUS configuration".
+struct SbusConfigRequest : CommandRequest<0x01, SbusConfigAck> {
+  static constexpr MessageId kId = 0x000502;
+  static constexpr const char* kName = "sbus_config";
+  static constexpr const char* kSection = "3.2.6.3";
+};
+
+}  // namespace k40t::protocol

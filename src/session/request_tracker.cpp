@@ -1,0 +1,265 @@
+#include "request_tracker.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <utility>
+
+#include "k40t_driver/protocol/catalogue.h"
+#include "k40t_driver/protocol/messages/ack.h"
+
+namespace k40t::session {
+
+namespace {
+
+std::string code_hex(uint16_t code) {
+  char buffer[16];
+  std::snprintf(buffer, sizeof(buffer), "0x%04X", code);
+  return buffer;
+}
+
+}  // namespace
+
+RequestTracker::RequestTracker(SendAttempt send, std::chrono::milliseconds ack_timeout, int retries,
+                               const protocol::CodecOptions& codec)
+    : send_(std::move(send)),
+      ack_timeout_(ack_timeout),
+      max_attempts_(1 + std::max(retries, 0)),
+      codec_(codec) {}
+
+RequestTracker::~RequestTracker() {
+  stop("session stopped");
+}
+
+void RequestTracker::start() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (running_) return;
+  running_ = true;
+  stopping_ = false;
+  thread_ = std::thread([this] { run(); });
+  thread_id_ = thread_.get_id();
+}
+
+void RequestTracker::stop(const std::string& why) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!running_) return;
+    stopping_ = true;
+    stop_reason_ = why;
+  }
+  wake_.notify_all();
+  if (thread_.joinable()) thread_.join();
+  std::lock_guard<std::mutex> lock(mutex_);
+  running_ = false;
+  thread_id_ = std::thread::id();
+}
+
+void RequestTracker::submit(protocol::MessageId id, const protocol::Payload& payload,
+                            protocol::Address destination, Done done) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  if (!running_ || stopping_) {
+    lock.unlock();
+    done(AckResult::not_sent(protocol::display_name(id) + " not sent: the session is not running"));
+    return;
+  }
+  Pending pending;
+  pending.id = id;
+  pending.payload = payload;
+  pending.destination = destination;
+  pending.done = std::move(done);
+  slots_[protocol::request_id_of(id)].queue.push_back(std::move(pending));
+  lock.unlock();
+  wake_.notify_all();
+}
+
+AckResult RequestTracker::call(protocol::MessageId id, const protocol::Payload& payload,
+                               protocol::Address destination) {
+  if (std::this_thread::get_id() == thread_id_.load()) {
+    return AckResult::not_sent(protocol::display_name(id) +
+                               " not sent: request() called from a request_async() callback would "
+                               "wait on itself; use request_async() there");
+  }
+  struct Waiter {
+    std::mutex mutex;
+    std::condition_variable done_cv;
+    bool done = false;
+    AckResult result;
+  };
+  auto waiter = std::make_shared<Waiter>();
+  submit(id, payload, destination, [waiter](const AckResult& result) {
+    std::lock_guard<std::mutex> lock(waiter->mutex);
+    waiter->result = result;
+    waiter->done = true;
+    waiter->done_cv.notify_all();
+  });
+  std::unique_lock<std::mutex> lock(waiter->mutex);
+  waiter->done_cv.wait(lock, [&] { return waiter->done; });
+  return std::move(waiter->result);
+}
+
+bool RequestTracker::on_ack(protocol::MessageId ack_id, const uint8_t* payload, size_t size) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  const auto found = slots_.find(protocol::request_id_of(ack_id));
+  // kSending counts as outstanding: the pod may answer before send() has returned.
+  if (found == slots_.end() ||
+      (found->second.state != SlotState::kSending && found->second.state != SlotState::kWaiting)) {
+    ++counters_.late_acks;
+    return false;
+  }
+  Slot& slot = found->second;
+  const size_t n = std::min(size, slot.ack.bytes.size());
+  std::copy(payload, payload + n, slot.ack.bytes.begin());
+  slot.ack.size = n;
+  slot.state = SlotState::kAcked;
+  lock.unlock();
+  wake_.notify_all();
+  return true;
+}
+
+RequestTracker::Counters RequestTracker::counters() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return counters_;
+}
+
+void RequestTracker::run() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (!stopping_) {
+    const Clock::time_point now = Clock::now();
+    Clock::time_point next_deadline = Clock::time_point::max();
+    for (auto& entry : slots_) {
+      Slot& slot = entry.second;
+      step(slot, now);
+      if (slot.state == SlotState::kWaiting) next_deadline = std::min(next_deadline, slot.deadline);
+    }
+    if (attempts_.empty() && finished_.empty()) {
+      if (next_deadline == Clock::time_point::max()) {
+        wake_.wait(lock);
+      } else {
+        wake_.wait_until(lock, next_deadline);
+      }
+      continue;
+    }
+    // Callbacks and writes happen without the lock, so ACKs keep flowing meanwhile.
+    lock.unlock();
+    for (Finished& f : finished_) f.done(f.result);
+    for (Attempt& a : attempts_) a.status = send_(a.id, a.payload, a.destination);
+    lock.lock();
+    finished_.clear();
+    const Clock::time_point sent_at = Clock::now();
+    for (const Attempt& a : attempts_) after_attempt(a, sent_at);
+    attempts_.clear();
+  }
+  fail_everything();
+  lock.unlock();
+  for (Finished& f : finished_) f.done(f.result);
+  finished_.clear();
+}
+
+void RequestTracker::step(Slot& slot, Clock::time_point now) {
+  if (slot.state == SlotState::kAcked) {
+    complete_with_ack(slot);
+  } else if (slot.state == SlotState::kWaiting && slot.deadline <= now) {
+    Pending& pending = slot.queue.front();
+    if (pending.result.attempts < max_attempts_) {
+      ++counters_.retries;
+      start_attempt(slot);
+    } else {
+      ++counters_.ack_timeouts;
+      pending.result.received = false;
+      pending.result.code = protocol::ResponseCode::kTimeout;
+      pending.result.message = "no ACK for " + protocol::display_name(pending.id) + " after " +
+                               std::to_string(pending.result.attempts) +
+                               (pending.result.attempts == 1 ? " attempt" : " attempts") +
+                               " (timeout " + std::to_string(ack_timeout_.count()) + " ms each)";
+      finish_front(slot);
+    }
+  }
+  if (slot.state == SlotState::kIdle && !slot.queue.empty()) start_attempt(slot);
+}
+
+void RequestTracker::start_attempt(Slot& slot) {
+  Pending& pending = slot.queue.front();
+  ++pending.result.attempts;
+  slot.state = SlotState::kSending;
+  Attempt attempt;
+  attempt.id = pending.id;
+  attempt.payload = pending.payload;
+  attempt.destination = pending.destination;
+  attempts_.push_back(attempt);
+}
+
+void RequestTracker::after_attempt(const Attempt& attempt, Clock::time_point now) {
+  Slot& slot = slots_[protocol::request_id_of(attempt.id)];
+  Pending& pending = slot.queue.front();
+  if (!attempt.status) {
+    if (slot.state == SlotState::kAcked) return;  // answered anyway; the ACK wins
+    // An earlier attempt may have reached the wire; this one did not, and the link is down.
+    pending.result.sent = pending.result.attempts > 1;
+    pending.result.received = false;
+    pending.result.code = protocol::ResponseCode::kFailure;
+    pending.result.message = "could not send " + protocol::display_name(pending.id) + " (attempt " +
+                             std::to_string(pending.result.attempts) +
+                             "): " + attempt.status.message();
+    finish_front(slot);
+    return;
+  }
+  if (pending.result.attempts == 1) ++counters_.requests;
+  pending.result.sent = true;
+  if (slot.state == SlotState::kSending) {
+    slot.state = SlotState::kWaiting;
+    slot.deadline = now + ack_timeout_;
+  }
+}
+
+void RequestTracker::complete_with_ack(Slot& slot) {
+  Pending& pending = slot.queue.front();
+  AckResult& result = pending.result;
+  result.sent = true;
+  result.received = true;
+  result.payload.assign(slot.ack.bytes.begin(), slot.ack.bytes.begin() + slot.ack.size);
+  result.code = protocol::ack_response_code(slot.ack.data(), slot.ack.size, codec_);
+  ++counters_.acks;
+  if (slot.ack.size < 2) {
+    ++counters_.nacks;
+    result.message = "the ACK of " + protocol::display_name(pending.id) + " has " +
+                     std::to_string(slot.ack.size) + " payload bytes, too few for a response code";
+  } else if (result.code != protocol::ResponseCode::kOk) {
+    ++counters_.nacks;
+    const uint16_t code = static_cast<uint16_t>(result.code);
+    result.message = protocol::display_name(pending.id) +
+                     " refused by the pod: " + protocol::response_text(code) + " (response code " +
+                     code_hex(code) + ")";
+  } else {
+    result.message = protocol::response_text(result.code);
+  }
+  finish_front(slot);
+}
+
+void RequestTracker::finish_front(Slot& slot) {
+  Pending& pending = slot.queue.front();
+  finished_.push_back(Finished{std::move(pending.done), std::move(pending.result)});
+  slot.queue.pop_front();
+  slot.state = SlotState::kIdle;
+}
+
+void RequestTracker::fail_everything() {
+  for (auto& entry : slots_) {
+    Slot& slot = entry.second;
+    while (!slot.queue.empty()) {
+      Pending& pending = slot.queue.front();
+      if (slot.state == SlotState::kAcked) {
+        complete_with_ack(slot);  // the answer is here: deliver it
+        continue;
+      }
+      pending.result.sent = pending.result.attempts > 0;
+      pending.result.received = false;
+      pending.result.code = protocol::ResponseCode::kFailure;
+      pending.result.message =
+          protocol::display_name(pending.id) + ": " + stop_reason_ +
+          (pending.result.attempts > 0 ? " before its ACK came" : " before it was sent");
+      finish_front(slot);
+    }
+  }
+}
+
+}  // namespace k40t::session

@@ -1,0 +1,119 @@
+// The request side of a session (NOTES A5): one outstanding request per message id, the others
+// for that id queued behind it; ACKs matched by id; timeouts and retries; AckResult messages.
+// It owns the thread that writes attempts, watches deadlines and runs completion callbacks, so
+// neither the transport's I/O thread nor a caller's thread ever waits on the link.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <unordered_map>
+#include <vector>
+
+#include "k40t_driver/protocol/codec_options.h"
+#include "k40t_driver/protocol/message.h"
+#include "k40t_driver/session/session.h"
+
+namespace k40t::session {
+
+class RequestTracker {
+ public:
+  using Clock = std::chrono::steady_clock;
+  using Done = std::function<void(const AckResult&)>;
+  // Writes one attempt; called on the tracker's thread with no lock held.
+  using SendAttempt = std::function<Status(protocol::MessageId id, const protocol::Payload& payload,
+                                           protocol::Address destination)>;
+
+  struct Counters {
+    uint64_t requests = 0;
+    uint64_t acks = 0;
+    uint64_t nacks = 0;
+    uint64_t ack_timeouts = 0;
+    uint64_t retries = 0;
+    uint64_t late_acks = 0;
+  };
+
+  RequestTracker(SendAttempt send, std::chrono::milliseconds ack_timeout, int retries,
+                 const protocol::CodecOptions& codec);
+  ~RequestTracker();  // stop()s
+  RequestTracker(const RequestTracker&) = delete;
+  RequestTracker& operator=(const RequestTracker&) = delete;
+
+  void start();
+  // Completes every queued and outstanding request with `why` and joins the thread.
+  void stop(const std::string& why);
+
+  // Queues a request; `done` runs on the tracker's thread (on the caller's, at once, when the
+  // tracker is not running).
+  void submit(protocol::MessageId id, const protocol::Payload& payload,
+              protocol::Address destination, Done done);
+  // Blocking form. Fails at once when called on the tracker's own thread (it would wait on itself).
+  AckResult call(protocol::MessageId id, const protocol::Payload& payload,
+                 protocol::Address destination);
+
+  // An ACK from the link (I/O thread; no allocation): true if it completed an outstanding
+  // request, false if no request for its id was outstanding (counted as late).
+  bool on_ack(protocol::MessageId ack_id, const uint8_t* payload, size_t size);
+
+  Counters counters() const;
+
+ private:
+  struct Pending {
+    protocol::MessageId id = 0;
+    protocol::Payload payload;
+    protocol::Address destination;
+    Done done;
+    AckResult result;
+  };
+  enum class SlotState { kIdle, kSending, kWaiting, kAcked };
+  // One per request id: queue.front() is the outstanding request whenever state != kIdle.
+  struct Slot {
+    std::deque<Pending> queue;
+    SlotState state = SlotState::kIdle;
+    Clock::time_point deadline;
+    protocol::Payload ack;
+  };
+  struct Attempt {
+    protocol::MessageId id = 0;
+    protocol::Payload payload;
+    protocol::Address destination;
+    Status status = Status::ok();
+  };
+  struct Finished {
+    Done done;
+    AckResult result;
+  };
+
+  void run();
+  void step(Slot& slot, Clock::time_point now);
+  void start_attempt(Slot& slot);
+  void after_attempt(const Attempt& attempt, Clock::time_point now);
+  void finish_front(Slot& slot);
+  void complete_with_ack(Slot& slot);
+  void fail_everything();
+
+  const SendAttempt send_;
+  const std::chrono::milliseconds ack_timeout_;
+  const int max_attempts_;
+  const protocol::CodecOptions codec_;
+
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  std::unordered_map<protocol::MessageId, Slot> slots_;
+  bool running_ = false;
+  bool stopping_ = false;
+  std::string stop_reason_;
+  std::thread thread_;
+  std::atomic<std::thread::id> thread_id_{};
+  std::vector<Attempt> attempts_;   // filled under the lock, written without it
+  std::vector<Finished> finished_;  // callbacks to run without the lock
+  Counters counters_;
+};
+
+}  // namespace k40t::session

@@ -1,0 +1,515 @@
+// Gimbal messages (document section 3.1). Golden frames: test/data/golden/gimbal_laser_sbus.txt,
+// written by hand from the document (each entry cites its section and explains every byte).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+#include "k40t_driver/protocol/catalogue.h"
+#include "k40t_driver/protocol/messages/gimbal.h"
+#include "message_test_util.h"
+
+namespace k40t::protocol {
+namespace {
+
+using testing::decode_bytes;
+using testing::decode_golden;
+using testing::expect_decode_error;
+using testing::expect_encodes_to;
+using testing::expect_range_error;
+using testing::expect_round_trip;
+using testing::golden;
+
+// Every request names its ACK type; the data-carrying one is its own struct.
+static_assert(std::is_same_v<GimbalControlRequest::Ack, PlainAck>);
+static_assert(std::is_same_v<GimbalAngleRequest::Ack, PlainAck>);
+static_assert(std::is_same_v<GimbalDriftCalibrationRequest::Ack, PlainAck>);
+static_assert(std::is_same_v<GimbalDialSpeedRequest::Ack, PlainAck>);
+static_assert(std::is_same_v<GimbalVersionRequest::Ack, GimbalVersionAck>);
+static_assert(std::is_same_v<GimbalPointAtRequest::Ack, PlainAck>);
+static_assert(std::is_same_v<GimbalServoOffRequest::Ack, PlainAck>);
+static_assert(std::is_same_v<GimbalLinearCalibrationRequest::Ack, PlainAck>);
+static_assert(std::is_same_v<GimbalRestartRequest::Ack, PlainAck>);
+static_assert(std::is_same_v<GimbalUseFlightControllerAttitudeRequest::Ack, PlainAck>);
+static_assert(std::is_same_v<GimbalAccelerationCalibrationRequest::Ack, PlainAck>);
+static_assert(std::is_same_v<GimbalStabilisationRequest::Ack, PlainAck>);
+
+// ---- golden: 3.1.1.1 status -----------------------------------------------------------------
+TEST(GimbalGolden, StatusNibblesBitsAndStates) {
+  const GimbalStatus m = decode_golden<GimbalStatus>(golden("gimbal_status"));
+  EXPECT_EQ(m.gimbal_link, GimbalLinkState::kNormal);    // low nibble of 0x10
+  EXPECT_EQ(m.camera_link, GimbalLinkState::kAbnormal);  // high nibble of 0x10
+  EXPECT_EQ(m.upgrade, GimbalUpgradeState::kFirmwareUpgradeIncomplete);
+  EXPECT_TRUE(m.ir_ok);
+  EXPECT_TRUE(m.tele_ok);
+  EXPECT_FALSE(m.wide_ok);  // bit 2 of 0x0B is clear
+  EXPECT_TRUE(m.laser_ok);
+  EXPECT_EQ(m.stabilisation, GimbalStabilisationState::kStabilising);
+  // The simulator sends it: encoding gives the document's bytes back.
+  expect_encodes_to(m, golden("gimbal_status"));
+}
+
+TEST(GimbalGolden, StatusAcceptsTheFourMeaningfulBytesAlone) {
+  auto m = decode_bytes<GimbalStatus>({0x01, 0x00, 0x0F, 0x03});
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->gimbal_link, GimbalLinkState::kAbnormal);
+  EXPECT_EQ(m->camera_link, GimbalLinkState::kNormal);
+  EXPECT_TRUE(m->wide_ok);
+  EXPECT_EQ(m->stabilisation, GimbalStabilisationState::kFeatureLost);
+  expect_decode_error<GimbalStatus>({0x01, 0x00, 0x0F}, "too short");
+}
+
+TEST(GimbalGolden, StatusReportsUndefinedCodesWithoutALabel) {
+  auto m = decode_bytes<GimbalStatus>({0x52, 0x07, 0x00, 0x09, 0, 0, 0});
+  ASSERT_TRUE(m);
+  EXPECT_EQ(static_cast<int>(m->gimbal_link), 2);
+  EXPECT_EQ(static_cast<int>(m->camera_link), 5);
+  EXPECT_EQ(to_string(m->gimbal_link), nullptr);
+  EXPECT_EQ(to_string(m->upgrade), nullptr);
+  EXPECT_EQ(to_string(m->stabilisation), nullptr);
+  EXPECT_FALSE(m->ir_ok || m->tele_ok || m->wide_ok || m->laser_ok);
+}
+
+// ---- golden: 3.1.1.2 attitude ---------------------------------------------------------------
+TEST(GimbalGolden, AttitudeCentidegreesAndRateOrder) {
+  const GimbalAttitude m = decode_golden<GimbalAttitude>(golden("gimbal_attitude"));
+  EXPECT_DOUBLE_EQ(m.joint_yaw_deg, 12.34);
+  EXPECT_DOUBLE_EQ(m.joint_roll_deg, -1.5);
+  EXPECT_DOUBLE_EQ(m.joint_pitch_deg, -45.0);
+  EXPECT_DOUBLE_EQ(m.yaw_deg, 90.0);
+  EXPECT_DOUBLE_EQ(m.roll_deg, 0.01);
+  EXPECT_DOUBLE_EQ(m.pitch_deg, -90.0);
+  EXPECT_DOUBLE_EQ(m.yaw_rate_deg_s, 10.5);    // bytes 13-14
+  EXPECT_DOUBLE_EQ(m.pitch_rate_deg_s, -2.0);  // bytes 15-16: pitch before roll
+  EXPECT_DOUBLE_EQ(m.roll_rate_deg_s, 0.0);
+  expect_encodes_to(m, golden("gimbal_attitude"));
+}
+
+// ---- golden: 3.1.2.1 control ----------------------------------------------------------------
+TEST(GimbalGolden, ControlModeInTheUpperNibble) {
+  GimbalControlRequest centre;
+  centre.mode = GimbalMode::kCentre;
+  centre.yaw = GimbalYawDirection::kRight;
+  centre.pitch = GimbalPitchDirection::kStop;
+  expect_encodes_to(centre, golden("gimbal_control", 0));
+
+  GimbalControlRequest look_down;
+  look_down.mode = GimbalMode::kLookDown;
+  look_down.yaw = GimbalYawDirection::kLeft;
+  look_down.pitch = GimbalPitchDirection::kDown;
+  expect_encodes_to(look_down, golden("gimbal_control", 1));
+
+  const auto decoded = decode_golden<GimbalControlRequest>(golden("gimbal_control", 1));
+  EXPECT_EQ(decoded.mode, GimbalMode::kLookDown);
+  EXPECT_EQ(decoded.yaw, GimbalYawDirection::kLeft);
+  EXPECT_EQ(decoded.pitch, GimbalPitchDirection::kDown);
+}
+
+TEST(GimbalGolden, ControlAckIsTheBareResponseCode) {
+  const PlainAck ack = decode_golden<PlainAck>(golden("gimbal_control_ack"));
+  EXPECT_EQ(ack.code, ResponseCode::kOk);
+}
+
+// ---- golden: 3.1.2.2 angle ------------------------------------------------------------------
+TEST(GimbalGolden, AngleDownAndLeftAreNegative) {
+  GimbalAngleRequest m;
+  m.pitch_deg = -45.5;  // direction 1 (down), 4550
+  m.yaw_deg = -120.25;  // direction 0 (left), 12025
+  expect_encodes_to(m, golden("gimbal_angle", 0));
+  const auto d = decode_golden<GimbalAngleRequest>(golden("gimbal_angle", 0));
+  EXPECT_TRUE(d.pitch_move);
+  EXPECT_DOUBLE_EQ(d.pitch_deg, -45.5);
+  EXPECT_TRUE(d.yaw_move);
+  EXPECT_DOUBLE_EQ(d.yaw_deg, -120.25);
+}
+
+TEST(GimbalGolden, AngleUpLimitAndNoYawMovement) {
+  GimbalAngleRequest m;
+  m.pitch_deg = 30;
+  m.yaw_move = false;
+  m.yaw_deg = 77;  // ignored when not moving: sent as 0
+  expect_encodes_to(m, golden("gimbal_angle", 1));
+  const auto d = decode_golden<GimbalAngleRequest>(golden("gimbal_angle", 1));
+  EXPECT_DOUBLE_EQ(d.pitch_deg, 30);
+  EXPECT_FALSE(d.yaw_move);
+  EXPECT_EQ(d.yaw_deg, 0);
+}
+
+TEST(GimbalGolden, AngleRightLimitAndNoPitchMovement) {
+  GimbalAngleRequest m;
+  m.pitch_move = false;
+  m.yaw_deg = 180;  // direction 1 (right)
+  expect_encodes_to(m, golden("gimbal_angle", 2));
+  const auto d = decode_golden<GimbalAngleRequest>(golden("gimbal_angle", 2));
+  EXPECT_FALSE(d.pitch_move);
+  EXPECT_DOUBLE_EQ(d.yaw_deg, 180);
+}
+
+TEST(GimbalGolden, AngleNackIsBigEndianBusy) {
+  EXPECT_EQ(decode_golden<PlainAck>(golden("gimbal_angle_ack")).code, ResponseCode::kBusy);
+}
+
+TEST(GimbalAngle, ScaleComesFromTheCodecOptions) {
+  CodecOptions tenths;
+  tenths.angle_command_scale = 10;  // NOTES A4 alternative: degrees x10
+  GimbalAngleRequest m;
+  m.pitch_deg = -45.5;
+  m.yaw_deg = 90;
+  auto p = encode_payload(m, tenths);
+  ASSERT_TRUE(p);
+  // 455 = 0x01C7, 900 = 0x0384, low byte first.
+  const std::vector<uint8_t> expected = {0x01, 0xC7, 0x01, 0x01, 0x84, 0x03, 0x00};
+  EXPECT_EQ(std::vector<uint8_t>(p->data(), p->data() + p->size), expected);
+  auto back = decode_bytes<GimbalAngleRequest>(expected, tenths);
+  ASSERT_TRUE(back);
+  EXPECT_DOUBLE_EQ(back->pitch_deg, -45.5);
+  EXPECT_DOUBLE_EQ(back->yaw_deg, 90);
+}
+
+TEST(GimbalAngle, RejectsUndefinedDirectionsAndAZeroScale) {
+  expect_decode_error<GimbalAngleRequest>({0x03, 0, 0, 0x00, 0, 0, 0}, "pitch direction byte");
+  expect_decode_error<GimbalAngleRequest>({0x00, 0, 0, 0x07, 0, 0, 0}, "yaw direction byte");
+  CodecOptions zero;
+  zero.angle_command_scale = 0;
+  auto d = decode_bytes<GimbalAngleRequest>({0, 0, 0, 0, 0, 0, 0}, zero);
+  ASSERT_FALSE(d);
+  EXPECT_NE(d.error().find("angle_command_scale"), std::string::npos) << d.error();
+}
+
+// ---- golden: one-byte commands 3.1.2.3, 3.1.2.5, 3.1.2.7..3.1.2.11 --------------------------
+TEST(GimbalGolden, FixedCommandRequests) {
+  expect_encodes_to(GimbalDriftCalibrationRequest{}, golden("gimbal_drift_calibration"));
+  expect_encodes_to(GimbalVersionRequest{}, golden("gimbal_version"));
+  expect_encodes_to(GimbalServoOffRequest{}, golden("gimbal_servo_off"));  // command 0x00
+  expect_encodes_to(GimbalLinearCalibrationRequest{}, golden("gimbal_linear_calibration"));
+  expect_encodes_to(GimbalRestartRequest{}, golden("gimbal_restart"));
+  expect_encodes_to(GimbalUseFlightControllerAttitudeRequest{},
+                    golden("gimbal_use_flight_controller_attitude"));
+  expect_encodes_to(GimbalAccelerationCalibrationRequest{},
+                    golden("gimbal_acceleration_calibration"));
+  decode_golden<GimbalRestartRequest>(golden("gimbal_restart"));
+  decode_golden<GimbalServoOffRequest>(golden("gimbal_servo_off"));
+}
+
+TEST(GimbalCommands, RejectOtherCommandBytes) {
+  expect_decode_error<GimbalRestartRequest>({0x02, 0x00}, "command code 1, got 2");
+  expect_decode_error<GimbalServoOffRequest>({0x01, 0x00}, "command code 0, got 1");
+  expect_decode_error<GimbalRestartRequest>({}, "too short");
+}
+
+// ---- golden: 3.1.2.4 dial speed -------------------------------------------------------------
+TEST(GimbalGolden, DialSpeedIsDegreesPerSecondTimesFive) {
+  GimbalDialSpeedRequest m;
+  m.pitch_speed_deg_s = 20;  // 100
+  m.yaw_speed_deg_s = 1;     // 5, the document's minimum
+  expect_encodes_to(m, golden("gimbal_dial_speed"));
+  const auto d = decode_golden<GimbalDialSpeedRequest>(golden("gimbal_dial_speed"));
+  EXPECT_DOUBLE_EQ(d.pitch_speed_deg_s, 20);
+  EXPECT_DOUBLE_EQ(d.yaw_speed_deg_s, 1);
+}
+
+// ---- golden: 3.1.2.5 version ACK ------------------------------------------------------------
+TEST(GimbalGolden, VersionAck) {
+  const auto v = decode_golden<GimbalVersionAck>(golden("gimbal_version_ack", 0));
+  EXPECT_EQ(v.code, ResponseCode::kOk);
+  EXPECT_EQ(v.hardware_major, 1);
+  EXPECT_EQ(v.hardware_minor, 2);
+  EXPECT_EQ(v.hardware_patch, 3);
+  EXPECT_EQ(v.software_major, 2);
+  EXPECT_EQ(v.software_minor, 10);
+  EXPECT_EQ(v.software_patch, 7);
+  expect_encodes_to(v, golden("gimbal_version_ack", 0));
+}
+
+TEST(GimbalGolden, VersionRefusalCarriesTheCodeAlone) {
+  const auto v = decode_golden<GimbalVersionAck>(golden("gimbal_version_ack", 1));
+  EXPECT_EQ(v.code, ResponseCode::kFailure);  // 00 01, big-endian
+  EXPECT_EQ(v.software_major, 0);
+}
+
+TEST(GimbalVersionAck, ByteOrderOfTheCodeFollowsTheOption) {
+  CodecOptions little;
+  little.ack_byte_order = ByteOrder::kLittle;
+  auto v = decode_bytes<GimbalVersionAck>({0x01, 0x02, 1, 2, 3, 4, 5, 6, 0}, little);
+  ASSERT_TRUE(v);
+  EXPECT_EQ(static_cast<uint16_t>(v->code), 0x0201);  // "recording", read low byte first
+  EXPECT_EQ(v->software_patch, 6);
+  // Some but not all of the version bytes: an error, not silent zeros.
+  expect_decode_error<GimbalVersionAck>({0x00, 0x00, 1, 2, 3}, "too short");
+}
+
+// ---- golden: 3.1.2.6 point at ---------------------------------------------------------------
+TEST(GimbalGolden, PointAtWideLens) {
+  GimbalPointAtRequest m;
+  m.lens = GimbalAimLens::kWide;
+  m.zoom_x = 4;
+  m.x_px = 1600;
+  m.y_px = 300;
+  expect_encodes_to(m, golden("gimbal_point_at", 0));
+  const auto d = decode_golden<GimbalPointAtRequest>(golden("gimbal_point_at", 0));
+  EXPECT_EQ(d.lens, GimbalAimLens::kWide);
+  EXPECT_DOUBLE_EQ(d.zoom_x, 4);
+  EXPECT_EQ(d.x_px, 1600);
+  EXPECT_EQ(d.y_px, 300);
+}
+
+TEST(GimbalGolden, PointAtTelephotoAtTheCorner) {
+  GimbalPointAtRequest m;
+  m.lens = GimbalAimLens::kTele;
+  m.zoom_x = 35.5;
+  m.x_px = 1920;
+  m.y_px = 1;
+  expect_encodes_to(m, golden("gimbal_point_at", 1));
+  EXPECT_DOUBLE_EQ(decode_golden<GimbalPointAtRequest>(golden("gimbal_point_at", 1)).zoom_x, 35.5);
+}
+
+// ---- golden: 3.1.2.12 stabilisation ---------------------------------------------------------
+TEST(GimbalGolden, StabilisationOnAndOff) {
+  GimbalStabilisationRequest on;
+  on.enable = true;
+  expect_encodes_to(on, golden("gimbal_stabilisation", 0));
+  GimbalStabilisationRequest off;
+  off.enable = false;
+  expect_encodes_to(off, golden("gimbal_stabilisation", 1));
+  EXPECT_FALSE(decode_golden<GimbalStabilisationRequest>(golden("gimbal_stabilisation", 1)).enable);
+  expect_decode_error<GimbalStabilisationRequest>({0x02, 0x00}, "0 (off) or 1 (on), got 2");
+}
+
+// ---- round trips ----------------------------------------------------------------------------
+CodecOptions unusual_options() {
+  CodecOptions o;
+  o.ack_byte_order = ByteOrder::kLittle;
+  o.angle_command_scale = 10;
+  return o;
+}
+
+TEST(GimbalRoundTrip, EveryStruct) {
+  GimbalStatus status;
+  status.gimbal_link = GimbalLinkState::kAbnormal;
+  status.upgrade = GimbalUpgradeState::kKernelUpgradeIncomplete;
+  status.ir_ok = false;
+  status.laser_ok = false;
+  status.stabilisation = GimbalStabilisationState::kFailed;
+
+  GimbalAttitude attitude;
+  attitude.joint_yaw_deg = -179.99;
+  attitude.joint_roll_deg = 3.21;
+  attitude.joint_pitch_deg = 25;
+  attitude.yaw_deg = 327.67;
+  attitude.roll_deg = -327.68;
+  attitude.pitch_deg = -0.01;
+  attitude.yaw_rate_deg_s = 100.5;
+  attitude.pitch_rate_deg_s = -60;
+  attitude.roll_rate_deg_s = 1.25;
+
+  GimbalControlRequest control;
+  control.mode = GimbalMode::kNone;
+  control.yaw = GimbalYawDirection::kLeft;
+  control.pitch = GimbalPitchDirection::kUp;
+
+  GimbalAngleRequest angle;
+  angle.pitch_deg = -90;
+  angle.yaw_deg = 12.5;
+
+  GimbalDialSpeedRequest dial;
+  dial.pitch_speed_deg_s = 30;
+  dial.yaw_speed_deg_s = 7.4;  // 37 on the wire
+
+  GimbalVersionAck version;
+  version.code = ResponseCode::kBusy;
+  version.hardware_major = 255;
+  version.software_patch = 9;
+
+  GimbalPointAtRequest point;
+  point.lens = GimbalAimLens::kThermal;
+  point.zoom_x = 8;
+  point.x_px = 1;
+  point.y_px = 1080;
+
+  GimbalStabilisationRequest stabilisation;
+  stabilisation.enable = false;
+
+  for (const CodecOptions& o : {CodecOptions{}, unusual_options()}) {
+    expect_round_trip(status, o);
+    expect_round_trip(attitude, o);
+    expect_round_trip(control, o);
+    expect_round_trip(angle, o);
+    expect_round_trip(dial, o);
+    expect_round_trip(GimbalDriftCalibrationRequest{}, o);
+    expect_round_trip(GimbalVersionRequest{}, o);
+    expect_round_trip(version, o);
+    expect_round_trip(point, o);
+    expect_round_trip(GimbalServoOffRequest{}, o);
+    expect_round_trip(GimbalLinearCalibrationRequest{}, o);
+    expect_round_trip(GimbalRestartRequest{}, o);
+    expect_round_trip(GimbalUseFlightControllerAttitudeRequest{}, o);
+    expect_round_trip(GimbalAccelerationCalibrationRequest{}, o);
+    expect_round_trip(stabilisation, o);
+  }
+}
+
+TEST(GimbalRoundTrip, AngleWithoutMovementOnEitherAxis) {
+  GimbalAngleRequest m;
+  m.pitch_move = false;
+  m.yaw_move = false;
+  expect_round_trip(m);
+}
+
+// ---- range errors: every validated field ----------------------------------------------------
+TEST(GimbalRanges, Status) {
+  GimbalStatus m;
+  m.gimbal_link = static_cast<GimbalLinkState>(2);
+  expect_range_error(m, "gimbal_link");
+  m = {};
+  m.camera_link = static_cast<GimbalLinkState>(16);
+  expect_range_error(m, "camera_link");
+  m = {};
+  m.upgrade = static_cast<GimbalUpgradeState>(3);
+  expect_range_error(m, "upgrade");
+  m = {};
+  m.stabilisation = static_cast<GimbalStabilisationState>(4);
+  expect_range_error(m, "stabilisation");
+}
+
+TEST(GimbalRanges, Attitude) {
+  double GimbalAttitude::*fields[] = {
+      &GimbalAttitude::joint_yaw_deg,   &GimbalAttitude::joint_roll_deg,
+      &GimbalAttitude::joint_pitch_deg, &GimbalAttitude::yaw_deg,
+      &GimbalAttitude::roll_deg,        &GimbalAttitude::pitch_deg,
+      &GimbalAttitude::yaw_rate_deg_s,  &GimbalAttitude::pitch_rate_deg_s,
+      &GimbalAttitude::roll_rate_deg_s};
+  const char* names[] = {"joint_yaw_deg",  "joint_roll_deg",   "joint_pitch_deg",
+                         "yaw_deg",        "roll_deg",         "pitch_deg",
+                         "yaw_rate_deg_s", "pitch_rate_deg_s", "roll_rate_deg_s"};
+  for (size_t i = 0; i < 9; ++i) {
+    GimbalAttitude m;
+    m.*fields[i] = 327.68;  // int16 x100 ends at 327.67
+    expect_range_error(m, names[i]);
+    m.*fields[i] = -327.69;
+    expect_range_error(m, names[i]);
+  }
+}
+
+TEST(GimbalRanges, Control) {
+  GimbalControlRequest m;
+  m.mode = static_cast<GimbalMode>(3);
+  expect_range_error(m, "mode");
+  m = {};
+  m.yaw = static_cast<GimbalYawDirection>(3);
+  expect_range_error(m, "yaw");
+  m = {};
+  m.pitch = static_cast<GimbalPitchDirection>(9);
+  expect_range_error(m, "pitch");
+}
+
+TEST(GimbalRanges, Angle) {
+  for (double bad : {30.01, -90.01, std::nan("")}) {
+    GimbalAngleRequest m;
+    m.pitch_deg = bad;
+    expect_range_error(m, "pitch_deg");
+  }
+  for (double bad : {180.01, -180.01, std::numeric_limits<double>::infinity()}) {
+    GimbalAngleRequest m;
+    m.yaw_deg = bad;
+    expect_range_error(m, "yaw_deg");
+  }
+  GimbalAngleRequest m;
+  m.pitch_deg = 31;
+  auto p = encode_payload(m);
+  ASSERT_FALSE(p);
+  EXPECT_NE(p.error().find("-90..30"), std::string::npos)
+      << "the message gives the range: " << p.error();
+}
+
+TEST(GimbalRanges, DialSpeed) {
+  for (double bad : {0.9, 30.1, 0.0}) {
+    GimbalDialSpeedRequest m;
+    m.pitch_speed_deg_s = bad;
+    expect_range_error(m, "pitch_speed_deg_s");
+    m = {};
+    m.yaw_speed_deg_s = bad;
+    expect_range_error(m, "yaw_speed_deg_s");
+  }
+}
+
+TEST(GimbalRanges, PointAt) {
+  GimbalPointAtRequest m;
+  m.lens = static_cast<GimbalAimLens>(3);
+  expect_range_error(m, "lens");
+
+  for (double bad : {3.4, 160.1}) {
+    m = {};
+    m.lens = GimbalAimLens::kTele;
+    m.zoom_x = bad;
+    expect_range_error(m, "zoom_x");
+  }
+  for (GimbalAimLens lens : {GimbalAimLens::kWide, GimbalAimLens::kThermal}) {
+    for (double bad : {0.0, 9.0, 2.5}) {  // 1..8, whole multiples only
+      m = {};
+      m.lens = lens;
+      m.zoom_x = bad;
+      expect_range_error(m, "zoom_x");
+    }
+  }
+  m = {};
+  m.x_px = 0;
+  expect_range_error(m, "x_px");
+  m.x_px = 1921;
+  expect_range_error(m, "x_px");
+  m = {};
+  m.y_px = 0;
+  expect_range_error(m, "y_px");
+  m.y_px = 1081;
+  expect_range_error(m, "y_px");
+}
+
+// ---- catalogue ------------------------------------------------------------------------------
+TEST(GimbalCatalogue, EveryMessageIsRegisteredWithItsAck) {
+  struct Expected {
+    MessageId id;
+    const char* name;
+  };
+  const Expected expected[] = {
+      {0x000001, "gimbal_status"},
+      {0x000002, "gimbal_attitude"},
+      {0x000010, "gimbal_control"},
+      {0x010010, "gimbal_control_ack"},
+      {0x000012, "gimbal_angle"},
+      {0x010012, "gimbal_angle_ack"},
+      {0x000013, "gimbal_drift_calibration"},
+      {0x010013, "gimbal_drift_calibration_ack"},
+      {0x000017, "gimbal_dial_speed"},
+      {0x010017, "gimbal_dial_speed_ack"},
+      {0x000018, "gimbal_version"},
+      {0x010018, "gimbal_version_ack"},
+      {0x00002C, "gimbal_point_at"},
+      {0x01002C, "gimbal_point_at_ack"},
+      {0x00002D, "gimbal_servo_off"},
+      {0x01002D, "gimbal_servo_off_ack"},
+      {0x00002E, "gimbal_linear_calibration"},
+      {0x01002E, "gimbal_linear_calibration_ack"},
+      {0x00002F, "gimbal_restart"},
+      {0x01002F, "gimbal_restart_ack"},
+      {0x000030, "gimbal_use_flight_controller_attitude"},
+      {0x010030, "gimbal_use_flight_controller_attitude_ack"},
+      {0x000031, "gimbal_acceleration_calibration"},
+      {0x010031, "gimbal_acceleration_calibration_ack"},
+      {0x000033, "gimbal_stabilisation"},
+      {0x010033, "gimbal_stabilisation_ack"},
+  };
+  for (const Expected& e : expected) {
+    const MessageInfo* info = find_message(e.id);
+    ASSERT_NE(info, nullptr) << e.name;
+    EXPECT_STREQ(info->name, e.name);
+    EXPECT_EQ(find_message(e.name), info);
+  }
+  // Periodic reports get no ACK entry.
+  EXPECT_EQ(find_message(0x010001), nullptr);
+  EXPECT_EQ(find_message(0x010002), nullptr);
+  EXPECT_EQ(find_message(0x000010)->direction, Direction::kHostToPod);
+  EXPECT_EQ(find_message(0x010010)->direction, Direction::kPodToHost);
+}
+
+}  // namespace
+}  // namespace k40t::protocol

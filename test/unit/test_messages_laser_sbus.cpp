@@ -1,0 +1,263 @@
+// Laser rangefinder (document section 3.2.5) and SBUS (section 3.2.6) messages. Golden frames:
+// test/data/golden/gimbal_laser_sbus.txt, written by hand from the document.
+#include <gtest/gtest.h>
+
+#include <type_traits>
+
+#include "k40t_driver/protocol/catalogue.h"
+#include "k40t_driver/protocol/messages/laser.h"
+#include "k40t_driver/protocol/messages/sbus.h"
+#include "message_test_util.h"
+
+namespace k40t::protocol {
+namespace {
+
+using testing::decode_bytes;
+using testing::decode_golden;
+using testing::expect_decode_error;
+using testing::expect_encodes_to;
+using testing::expect_range_error;
+using testing::expect_round_trip;
+using testing::golden;
+
+static_assert(std::is_same_v<LaserRangeRequest::Ack, LaserRangeAck>);
+static_assert(std::is_same_v<LaserPeriodicRangeRequest::Ack, PlainAck>);
+static_assert(std::is_same_v<SbusRangeRequest::Ack, PlainAck>);
+static_assert(std::is_same_v<SbusChannelsRequest::Ack, PlainAck>);
+static_assert(std::is_same_v<SbusConfigRequest::Ack, SbusConfigAck>);
+
+CodecOptions little_endian_acks() {
+  CodecOptions o;
+  o.ack_byte_order = ByteOrder::kLittle;
+  return o;
+}
+
+// ---- golden: 3.2.5 laser --------------------------------------------------------------------
+TEST(LaserGolden, SingleRangingRequestAndAck) {
+  LaserRangeRequest request;
+  request.enable = true;
+  expect_encodes_to(request, golden("laser_range"));
+
+  const auto ack = decode_golden<LaserRangeAck>(golden("laser_range_ack"));
+  EXPECT_EQ(ack.code, ResponseCode::kOk);
+  EXPECT_DOUBLE_EQ(ack.distance_m, 1234.5);  // 30 39 read high byte first (NOTES A2)
+  expect_encodes_to(ack, golden("laser_range_ack"));
+}
+
+TEST(LaserGolden, PeriodicRangingRequestAckAndStatusFrames) {
+  LaserPeriodicRangeRequest request;
+  request.enable = true;
+  expect_encodes_to(request, golden("laser_periodic_range"));
+  EXPECT_EQ(decode_golden<PlainAck>(golden("laser_periodic_range_ack")).code, ResponseCode::kOk);
+
+  const auto status =
+      decode_golden<LaserPeriodicRangeStatus>(golden("laser_periodic_range_status", 0));
+  EXPECT_EQ(status.code, ResponseCode::kOk);
+  EXPECT_DOUBLE_EQ(status.distance_m, 87.6);
+  expect_encodes_to(status, golden("laser_periodic_range_status", 0));
+
+  const auto no_return =
+      decode_golden<LaserPeriodicRangeStatus>(golden("laser_periodic_range_status", 1));
+  EXPECT_EQ(no_return.distance_m, 0);
+}
+
+TEST(LaserStatus, ByteOrderFollowsTheAckOption) {
+  // 876 = 0x036C low byte first, for a pod that writes ACK-like payloads little-endian.
+  auto s = decode_bytes<LaserPeriodicRangeStatus>({0x00, 0x00, 0x6C, 0x03}, little_endian_acks());
+  ASSERT_TRUE(s);
+  EXPECT_DOUBLE_EQ(s->distance_m, 87.6);
+  auto a = decode_bytes<LaserRangeAck>({0x00, 0x00, 0x6C, 0x03}, little_endian_acks());
+  ASSERT_TRUE(a);
+  EXPECT_DOUBLE_EQ(a->distance_m, 87.6);
+}
+
+TEST(LaserStatus, NeedsTheDistanceButTheAckMayBeARefusal) {
+  expect_decode_error<LaserPeriodicRangeStatus>({0x00, 0x00}, "too short");
+  auto refusal = decode_bytes<LaserRangeAck>({0x00, 0x08});
+  ASSERT_TRUE(refusal) << refusal.error();
+  EXPECT_EQ(refusal->code, ResponseCode::kBusy);
+  EXPECT_EQ(refusal->distance_m, 0);
+  expect_decode_error<LaserRangeAck>({0x00, 0x00, 0x01}, "too short");  // half a distance
+}
+
+TEST(LaserRequests, RejectUndefinedSwitchValues) {
+  expect_decode_error<LaserPeriodicRangeRequest>({0x02, 0x00}, "0 (off) or 1 (on), got 2");
+  expect_decode_error<LaserRangeRequest>({0xFF, 0x00}, "got 255");
+}
+
+// ---- golden: 3.2.6 SBUS ---------------------------------------------------------------------
+TEST(SbusGolden, RangeRequestIsLittleEndian) {
+  SbusRangeRequest m;
+  m.max_value = 1811;
+  m.min_value = 172;
+  expect_encodes_to(m, golden("sbus_range"));
+  const auto d = decode_golden<SbusRangeRequest>(golden("sbus_range"));
+  EXPECT_EQ(d.max_value, 1811);
+  EXPECT_EQ(d.min_value, 172);
+  EXPECT_EQ(decode_golden<PlainAck>(golden("sbus_range_ack")).code, ResponseCode::kFailure);
+}
+
+TEST(SbusGolden, ChannelsAreNumberedFromOne) {
+  SbusChannelsRequest m;
+  m.stream_channel = 9;
+  m.zoom_channel = 10;
+  m.photo_channel = 11;
+  m.record_channel = 12;
+  m.pitch_channel = 2;
+  m.yaw_channel = 1;      // wire 0
+  m.centre_channel = 16;  // wire 15
+  expect_encodes_to(m, golden("sbus_channels"));
+  const auto d = decode_golden<SbusChannelsRequest>(golden("sbus_channels"));
+  EXPECT_EQ(d.yaw_channel, 1);
+  EXPECT_EQ(d.centre_channel, 16);
+  EXPECT_EQ(d.record_channel, 12);
+}
+
+TEST(SbusGolden, ConfigRequestAndAck) {
+  expect_encodes_to(SbusConfigRequest{}, golden("sbus_config"));
+  const auto ack = decode_golden<SbusConfigAck>(golden("sbus_config_ack"));
+  EXPECT_EQ(ack.code, ResponseCode::kOk);
+  EXPECT_EQ(ack.range.max_value, 2000);  // 07 D0, big-endian (NOTES A2)
+  EXPECT_EQ(ack.range.min_value, 100);
+  EXPECT_EQ(ack.channels.stream_channel, 1);
+  EXPECT_EQ(ack.channels.zoom_channel, 2);
+  EXPECT_EQ(ack.channels.photo_channel, 3);
+  EXPECT_EQ(ack.channels.record_channel, 4);
+  EXPECT_EQ(ack.channels.pitch_channel, 5);
+  EXPECT_EQ(ack.channels.yaw_channel, 6);
+  EXPECT_EQ(ack.channels.centre_channel, 7);
+  expect_encodes_to(ack, golden("sbus_config_ack"));
+}
+
+TEST(SbusConfigAck, RefusalReportsNoConfiguration) {
+  auto ack = decode_bytes<SbusConfigAck>({0x00, 0x01});
+  ASSERT_TRUE(ack);
+  EXPECT_EQ(ack->code, ResponseCode::kFailure);
+  EXPECT_EQ(ack->range.max_value, 0);
+  EXPECT_EQ(ack->channels.stream_channel, 0);
+  expect_decode_error<SbusConfigAck>({0x00, 0x00, 0x07, 0xD0, 0x00}, "too short");
+}
+
+TEST(SbusConfigAck, LittleEndianOption) {
+  auto ack = decode_bytes<SbusConfigAck>({0, 0, 0xD0, 0x07, 0x64, 0x00, 0, 1, 2, 3, 4, 5, 15, 0},
+                                         little_endian_acks());
+  ASSERT_TRUE(ack);
+  EXPECT_EQ(ack->range.max_value, 2000);
+  EXPECT_EQ(ack->range.min_value, 100);
+  EXPECT_EQ(ack->channels.centre_channel, 16);
+}
+
+// ---- round trips ----------------------------------------------------------------------------
+TEST(LaserSbusRoundTrip, EveryStruct) {
+  LaserRangeRequest single;
+  single.enable = false;
+  LaserRangeAck ack;
+  ack.code = ResponseCode::kTimeout;
+  ack.distance_m = 6553.5;
+  LaserPeriodicRangeRequest periodic;
+  periodic.enable = false;
+  LaserPeriodicRangeStatus status;
+  status.distance_m = 0.1;
+
+  SbusRangeRequest range;
+  range.max_value = 2047;
+  range.min_value = 0;
+  SbusChannelsRequest channels;
+  channels.stream_channel = 16;
+  channels.zoom_channel = 15;
+  channels.photo_channel = 14;
+  channels.record_channel = 13;
+  channels.pitch_channel = 12;
+  channels.yaw_channel = 11;
+  channels.centre_channel = 1;
+  SbusConfigAck config;
+  config.code = ResponseCode::kBusy;
+  config.range = range;
+  config.channels = channels;
+
+  for (const CodecOptions& o : {CodecOptions{}, little_endian_acks()}) {
+    expect_round_trip(single, o);
+    expect_round_trip(ack, o);
+    expect_round_trip(periodic, o);
+    expect_round_trip(status, o);
+    expect_round_trip(range, o);
+    expect_round_trip(channels, o);
+    expect_round_trip(SbusConfigRequest{}, o);
+    expect_round_trip(config, o);
+  }
+}
+
+// ---- range errors ---------------------------------------------------------------------------
+TEST(LaserRanges, Distance) {
+  for (double bad : {-0.1, 6553.6}) {
+    LaserRangeAck ack;
+    ack.distance_m = bad;
+    expect_range_error(ack, "distance_m");
+    LaserPeriodicRangeStatus status;
+    status.distance_m = bad;
+    expect_range_error(status, "distance_m");
+  }
+}
+
+TEST(SbusRanges, RangeValues) {
+  SbusRangeRequest m;
+  m.max_value = 2048;
+  expect_range_error(m, "max_value");
+  m = {};
+  m.min_value = 2048;
+  expect_range_error(m, "min_value");
+  m.max_value = 1000;
+  m.min_value = 1000;  // must be strictly less
+  expect_range_error(m, "min_value");
+  m.min_value = 1001;
+  expect_range_error(m, "min_value");
+}
+
+TEST(SbusRanges, EveryChannel) {
+  int SbusChannelsRequest::*fields[] = {
+      &SbusChannelsRequest::stream_channel, &SbusChannelsRequest::zoom_channel,
+      &SbusChannelsRequest::photo_channel,  &SbusChannelsRequest::record_channel,
+      &SbusChannelsRequest::pitch_channel,  &SbusChannelsRequest::yaw_channel,
+      &SbusChannelsRequest::centre_channel};
+  const char* names[] = {"stream_channel", "zoom_channel", "photo_channel", "record_channel",
+                         "pitch_channel",  "yaw_channel",  "centre_channel"};
+  for (size_t i = 0; i < 7; ++i) {
+    for (int bad : {0, 17}) {
+      SbusChannelsRequest m;
+      m.*fields[i] = bad;
+      expect_range_error(m, names[i]);
+      SbusConfigAck ack;
+      ack.channels.*fields[i] = bad;
+      expect_range_error(ack, names[i]);
+    }
+  }
+  SbusConfigAck ack;
+  ack.range.max_value = 5000;
+  expect_range_error(ack, "max_value");
+}
+
+// ---- catalogue ------------------------------------------------------------------------------
+TEST(LaserSbusCatalogue, EveryMessageIsRegistered) {
+  const std::pair<MessageId, const char*> expected[] = {
+      {0x000400, "laser_range"},
+      {0x010400, "laser_range_ack"},
+      {0x000406, "laser_periodic_range"},
+      {0x010406, "laser_periodic_range_ack"},
+      {0x020406, "laser_periodic_range_status"},
+      {0x000500, "sbus_range"},
+      {0x010500, "sbus_range_ack"},
+      {0x000501, "sbus_channels"},
+      {0x010501, "sbus_channels_ack"},
+      {0x000502, "sbus_config"},
+      {0x010502, "sbus_config_ack"},
+  };
+  for (const auto& [id, name] : expected) {
+    const MessageInfo* info = find_message(id);
+    ASSERT_NE(info, nullptr) << name;
+    EXPECT_STREQ(info->name, name);
+  }
+  EXPECT_EQ(find_message(0x020406)->direction, Direction::kPodToHost);
+}
+
+}  // namespace
+}  // namespace k40t::protocol
