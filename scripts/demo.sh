@@ -6,7 +6,7 @@
 #   DEMO_SECONDS=20 scripts/demo.sh  stops by itself (CI: with CI set, 20 s unless DEMO_SECONDS)
 #   DEMO_RVIZ=true scripts/demo.sh   with rviz (needs the rviz package)
 # Expects a build (scripts/build.sh ros, which `make demo` runs first).
-set -euo pipefail
+set -eo pipefail
 source "$(dirname "$0")/ros_env.sh"
 
 seconds="${DEMO_SECONDS:-}"

@@ -42,7 +42,7 @@ class Status:
         parts = []
         js = self.latest.get("joint_states")
         if js:
-            yaw, roll, pitch = (math.degrees(a) for a in js.position)
+            yaw, roll, pitch = (math.degrees(a) if abs(a) > 1e-5 else 0.0 for a in js.position)  # no "-0.00"
             parts.append("yaw %+7.2f° roll %+6.2f° pitch %+6.2f°" % (yaw, roll, pitch))
         vis = self.latest.get("visible/status")
         if vis:
