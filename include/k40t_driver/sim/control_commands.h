@@ -1,0 +1,42 @@
+// The simulator's run-time control language: one command per line, one reply line ("ok ..." or
+// "error: ..."). Sent over the control socket (control_server.h), e.g.
+//   echo "drop-acks 0.5" | socat - TCP:127.0.0.1:5761
+// Commands (also listed by "help"):
+//   help | status | clear
+//   corrupt RATE            bit flips per byte sent, 0..1
+//   garbage RATE [MAX]      random bytes before a frame, per frame, 0..1 (up to MAX bytes, 1..64)
+//   drop-acks RATE          requests left without ACK, 0..1
+//   delay-acks MS [RATE]    ACKs sent MS late (0 = off), with probability RATE (default 1)
+//   silence SECONDS         send nothing for that long
+//   disconnect SECONDS      close the link, reopen it after that long
+//   seq-jump N              skip N sequence numbers (1..255)
+//   sd absent|insert|fill|normal|abnormal|slow|format-error
+//   self-test MASK          0x000001 self-test bits (IR 1, tele 2, wide 4, laser 8)
+//   ground-height METRES    the flat ground below the pod
+//   photos                  the photos on the card, with their GPS answers
+#pragma once
+
+#include <chrono>
+#include <functional>
+#include <string>
+
+#include "k40t_driver/sim/fault_injector.h"
+#include "k40t_driver/sim/pod_model.h"
+
+namespace k40t::sim {
+
+// What the commands act on; the front-end implements it (tests use a fake).
+class ControlTarget {
+ public:
+  virtual ~ControlTarget() = default;
+  virtual FaultInjector& faults() = 0;
+  virtual void disconnect_for(std::chrono::milliseconds duration) = 0;
+  // Runs `change` with the model locked against the simulation thread.
+  virtual void with_model(const std::function<void(PodModel&)>& change) = 0;
+  virtual std::string status() = 0;
+};
+
+std::string execute_control_command(const std::string& line, ControlTarget& target);
+std::string control_help();
+
+}  // namespace k40t::sim

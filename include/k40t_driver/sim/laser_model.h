@@ -1,0 +1,48 @@
+// The laser rangefinder (section 3.2.5): a ray along the gimbal's boresight into the World. Over
+// flat ground `h` metres below, at depression angle d, the range is h / sin(d); aimed at the hot
+// object it is that object's distance; above the horizon (or beyond the maximum range) there is no
+// return and the pod reports 0.
+//
+// It also answers the flight controller's target request (0x000320): where the laser spot is,
+// from the host's own position, its heading, and the gimbal's aim.
+#pragma once
+
+#include <optional>
+
+#include "k40t_driver/sim/world.h"
+
+namespace k40t::sim {
+
+struct LaserConfig {
+  double max_range_m = 3000;
+};
+
+// A WGS-84 position; heights in metres.
+struct GeoPoint {
+  double latitude_deg = 0;
+  double longitude_deg = 0;
+  double relative_height_m = 0;  // above the take-off point
+  double altitude_m = 0;         // above sea level
+};
+
+class LaserModel {
+ public:
+  explicit LaserModel(const LaserConfig& config = {}) : config_(config) {}
+
+  // Distance along heading `yaw_deg`, elevation `pitch_deg` (world frame), or none.
+  std::optional<double> range(const World& world, double yaw_deg, double pitch_deg) const;
+
+  // Where the laser hits, given the pod's own position (the host's fix). Local flat-earth
+  // approximation, good to centimetres at the laser's 3 km.
+  std::optional<GeoPoint> locate_target(const World& world, const GeoPoint& pod, double yaw_deg,
+                                        double pitch_deg) const;
+
+  void set_periodic(bool on) { periodic_ = on; }  // 0x000406
+  bool periodic() const { return periodic_; }
+
+ private:
+  LaserConfig config_;
+  bool periodic_ = false;
+};
+
+}  // namespace k40t::sim

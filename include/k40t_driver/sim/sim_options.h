@@ -1,0 +1,52 @@
+// Command line of k40t_sim: where to serve, the NOTES decisions the pod follows, its world, the
+// faults it starts with, capture and the control socket. Arguments roslaunch adds (__name:=...,
+// __log:=...) are ignored. `--help` prints sim_usage().
+#pragma once
+
+#include <chrono>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "k40t_driver/protocol/codec_options.h"
+#include "k40t_driver/protocol/result.h"
+#include "k40t_driver/sim/fault_injector.h"
+#include "k40t_driver/sim/pod_model.h"
+
+namespace k40t::sim {
+
+// A fault that happens once, `at` after the start.
+struct ScheduledFault {
+  enum class Kind { kSilence, kDisconnect, kSequenceJump } kind = Kind::kSilence;
+  std::chrono::milliseconds at{0};
+  double amount = 0;  // seconds, or frames for a sequence jump
+};
+
+struct SimOptions {
+  std::string link = "pty:///tmp/k40t_pod";  // the transport URL actually opened (server side)
+  protocol::CrcCoverage crc_coverage = protocol::CrcCoverage::kHeaderExcluded;
+  protocol::CodecOptions codec;
+  PodConfig pod;
+  std::optional<std::string> sd_condition;  // "absent", "fill", ...
+  FaultSettings faults;
+  std::vector<ScheduledFault> scheduled;
+  uint32_t seed = 1;
+  std::optional<std::string> capture_prefix;
+  std::optional<std::string> control_endpoint;
+  double tick_s = 0.01;  // model step and report scheduling period
+  bool verbose = false;
+  bool help = false;
+};
+
+// Parses argv (without the program name). Errors name the option and what is wrong.
+Result<SimOptions> parse_sim_options(const std::vector<std::string>& args);
+std::string sim_usage();
+
+// `--link` accepts the host's view of the link and returns the server side the simulator opens:
+//   pty:/path or pty:///path  -> pty:///path
+//   udp://host:port           -> udp-server://host:port
+//   tcp://host:port           -> tcp-server://host:port
+//   udp-server://, tcp-server:// unchanged
+Result<std::string> server_side_url(const std::string& link);
+
+}  // namespace k40t::sim

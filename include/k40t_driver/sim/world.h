@@ -1,0 +1,69 @@
+// The world the simulated pod looks at, fixed in the world frame of geometry.h (so turning the
+// gimbal moves things across the image, zooming magnifies them, and the laser ranges them):
+//   - flat ground `ground_height_m` below the pod, at ~20 degC with a gentle +-2.5 degC texture;
+//   - a hot object: a sphere standing on the ground (a boiler or engine), hottest where it faces
+//     the viewer, so the thermal maximum sits where its centre projects;
+//   - a cold object: a pond on the ground, coldest at its centre;
+//   - the sky: very cold, warmest at the horizon.
+// Everything is analytic and deterministic; there is no randomness in the world.
+#pragma once
+
+#include <optional>
+
+#include "k40t_driver/sim/geometry.h"
+
+namespace k40t::sim {
+
+struct HotObject {
+  double north_m = 80;
+  double east_m = 20;
+  double radius_m = 2;
+  double temperature_degC = 85;  // where the surface faces the viewer
+};
+
+struct ColdObject {
+  double north_m = 60;
+  double east_m = -30;
+  double radius_m = 8;
+  double temperature_degC = 2;  // at the centre; the rim blends into the ground
+};
+
+struct WorldConfig {
+  double ground_height_m = 30;  // the ground is this far below the pod
+  double ground_temperature_degC = 20;
+  double ground_texture_degC = 2.5;  // amplitude of the ground's temperature pattern
+  double sky_zenith_degC = -35;
+  double sky_horizon_degC = -10;
+  HotObject hot;
+  ColdObject cold;
+};
+
+enum class Surface { kSky, kGround, kHotObject, kColdObject };
+const char* to_string(Surface surface);
+
+struct Hit {
+  Surface surface = Surface::kSky;
+  std::optional<double> distance_m;  // none for the sky
+  double temperature_degC = 0;
+};
+
+class World {
+ public:
+  explicit World(const WorldConfig& config = {}) : config_(config) {}
+
+  const WorldConfig& config() const { return config_; }
+  void set_ground_height(double metres) { config_.ground_height_m = metres; }
+
+  // What a ray from the pod (the origin) along the unit vector `dir` sees first.
+  Hit trace(const Vec3& dir) const;
+
+  Vec3 hot_object_centre() const;
+  Vec3 cold_object_centre() const;
+
+ private:
+  double ground_temperature(double north_m, double east_m) const;
+
+  WorldConfig config_;
+};
+
+}  // namespace k40t::sim

@@ -1,0 +1,68 @@
+// The telephoto camera's hybrid zoom (1..160x, optical up to 11x, section 3.2.4.5/3.2.4.6) and its
+// focus (3.2.4.18). Zoom moves over time at a constant rate in log space (a doubling every
+// `doubling_time_s`, as a zoom motor with digital zoom behind it looks to the user), emitting
+// 0x020304 "zooming" when it starts and every `status_period_s` while it moves, and "done" when it
+// stops. After a zoom the camera refocuses (if auto focus after zoom is on), and the focus
+// commands make it busy too.
+#pragma once
+
+#include "k40t_driver/sim/events.h"
+#include "k40t_driver/sim/outcome.h"
+
+namespace k40t::sim {
+
+struct ZoomConfig {
+  double min_zoom = 1;
+  double max_zoom = 160;
+  double doubling_time_s = 0.5;             // 1x -> 160x in ~3.7 s
+  double step_factor = 1.4142135623730951;  // one "zoom in/out" step: half a doubling
+  double status_period_s = 0.2;             // 0x020304 rate while zooming
+  double focus_time_s = 0.6;                // auto focus, one-touch, area, and after a zoom
+};
+
+enum class ContinuousZoom { kIn, kOut, kStop, kStepIn, kStepOut };  // 0x000306 byte 1, 0..4
+enum class FocusCommand {                                           // 0x000313 byte 1, 0..7
+  kAuto,
+  kManualNear,
+  kManualFar,
+  kStopManual,
+  kArea,
+  kOneTouch,
+  kAutoAfterZoomOn,
+  kAutoAfterZoomOff,
+};
+
+class ZoomModel {
+ public:
+  explicit ZoomModel(const ZoomConfig& config = {});
+
+  Outcome set_zoom(double zoom);  // 0x000304: 1..160
+  Outcome zoom_control(ContinuousZoom command);
+  Outcome focus(FocusCommand command);
+
+  void step(double dt_s, EventQueue& events);
+
+  double zoom() const { return zoom_; }
+  double target() const { return target_; }
+  bool zooming() const { return moving_; }
+  bool focusing() const { return manual_focus_ || focus_left_s_ > 0; }
+  bool auto_focus_after_zoom() const { return auto_focus_after_zoom_; }
+  // The telephoto focal length follows the optical part (lens.h).
+  double focal_length_mm() const;
+  void reset();  // factory settings: 1x, no motion
+
+ private:
+  void start(double target);
+
+  ZoomConfig config_;
+  double zoom_;
+  double target_;
+  bool moving_ = false;
+  bool announce_start_ = false;
+  double since_status_s_ = 0;
+  bool manual_focus_ = false;
+  double focus_left_s_ = 0;
+  bool auto_focus_after_zoom_ = true;
+};
+
+}  // namespace k40t::sim

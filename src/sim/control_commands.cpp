@@ -1,0 +1,201 @@
+#include "k40t_driver/sim/control_commands.h"
+
+#include "k40t_driver/sim/number_text.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <vector>
+
+namespace k40t::sim {
+
+namespace {
+
+using Args = std::vector<std::string>;
+
+struct Command {
+  const char* name;
+  const char* usage;
+  size_t min_args;
+  size_t max_args;
+  std::string (*run)(const Args& args, ControlTarget& target);
+};
+
+std::string error(const std::string& why) {
+  return "error: " + why;
+}
+
+Result<double> number(const std::string& text, const char* what, double lo, double hi) {
+  return parse_number_in(text, what, lo, hi);
+}
+
+std::chrono::milliseconds millis(double seconds) {
+  return std::chrono::milliseconds(static_cast<int64_t>(std::llround(seconds * 1000)));
+}
+
+// Changes one fault setting, after checking its argument.
+template <class Change>
+std::string change_faults(ControlTarget& target, Change change) {
+  FaultSettings settings = target.faults().settings();
+  change(settings);
+  target.faults().set_settings(settings);
+  return "ok " + target.faults().describe();
+}
+
+std::string run_help(const Args&, ControlTarget&) {
+  return "ok " + control_help();
+}
+std::string run_status(const Args&, ControlTarget& target) {
+  return "ok " + target.status();
+}
+std::string run_clear(const Args&, ControlTarget& target) {
+  target.faults().clear();
+  return "ok " + target.faults().describe();
+}
+
+std::string run_corrupt(const Args& args, ControlTarget& target) {
+  const auto rate = number(args[0], "RATE", 0, 1);
+  if (!rate) return error(rate.error());
+  return change_faults(target, [&](FaultSettings& s) { s.corrupt_rate = *rate; });
+}
+
+std::string run_garbage(const Args& args, ControlTarget& target) {
+  const auto rate = number(args[0], "RATE", 0, 1);
+  if (!rate) return error(rate.error());
+  const auto max = args.size() > 1 ? number(args[1], "MAX", 1, 64) : Result<double>(16.0);
+  if (!max) return error(max.error());
+  return change_faults(target, [&](FaultSettings& s) {
+    s.garbage_rate = *rate;
+    s.garbage_max_bytes = static_cast<size_t>(*max);
+  });
+}
+
+std::string run_drop_acks(const Args& args, ControlTarget& target) {
+  const auto rate = number(args[0], "RATE", 0, 1);
+  if (!rate) return error(rate.error());
+  return change_faults(target, [&](FaultSettings& s) { s.drop_ack_rate = *rate; });
+}
+
+std::string run_delay_acks(const Args& args, ControlTarget& target) {
+  const auto ms = number(args[0], "MS", 0, 60000);
+  if (!ms) return error(ms.error());
+  const auto rate = args.size() > 1 ? number(args[1], "RATE", 0, 1) : Result<double>(1.0);
+  if (!rate) return error(rate.error());
+  return change_faults(target, [&](FaultSettings& s) {
+    s.delay_ack_ms = *ms;
+    s.delay_ack_rate = *rate;
+  });
+}
+
+std::string run_silence(const Args& args, ControlTarget& target) {
+  const auto seconds = number(args[0], "SECONDS", 0, 3600);
+  if (!seconds) return error(seconds.error());
+  target.faults().silence_for(millis(*seconds));
+  return "ok silent for " + args[0] + " s";
+}
+
+std::string run_disconnect(const Args& args, ControlTarget& target) {
+  const auto seconds = number(args[0], "SECONDS", 0, 3600);
+  if (!seconds) return error(seconds.error());
+  target.disconnect_for(millis(*seconds));
+  return "ok disconnected for " + args[0] + " s";
+}
+
+std::string run_seq_jump(const Args& args, ControlTarget& target) {
+  const auto n = number(args[0], "N", 1, 255);
+  if (!n) return error(n.error());
+  target.faults().jump_sequence(static_cast<int>(*n));
+  return "ok " + target.faults().describe();
+}
+
+std::string run_sd(const Args& args, ControlTarget& target) {
+  bool known = false;
+  std::string state;
+  target.with_model([&](PodModel& pod) {
+    known = set_sd_condition(pod.camera().sd(), args[0]);
+    state = to_string(pod.camera().sd().state());
+  });
+  if (!known)
+    return error("sd: unknown condition '" + args[0] + "' (" + sd_condition_names() + ")");
+  return "ok sd " + state;
+}
+
+std::string run_self_test(const Args& args, ControlTarget& target) {
+  char* end = nullptr;
+  const unsigned long mask = std::strtoul(args[0].c_str(), &end, 0);
+  if (args[0].empty() || *end != '\0' || mask > 0x0F)
+    return error("MASK must be 0..0x0F, got '" + args[0] + "'");
+  target.with_model([&](PodModel& pod) { pod.set_self_test(static_cast<uint8_t>(mask)); });
+  return "ok self-test " + args[0];
+}
+
+std::string run_ground_height(const Args& args, ControlTarget& target) {
+  const auto metres = number(args[0], "METRES", 1, 10000);
+  if (!metres) return error(metres.error());
+  target.with_model([&](PodModel& pod) { pod.world().set_ground_height(*metres); });
+  return "ok ground " + args[0] + " m below the pod";
+}
+
+std::string run_photos(const Args&, ControlTarget& target) {
+  std::ostringstream out;
+  out << "ok";
+  target.with_model([&](PodModel& pod) {
+    out << " " << pod.camera().photos().size() << " photos";
+    for (const PhotoRecord& photo : pod.camera().photos()) {
+      out << "; " << photo.path;
+      if (photo.gps) {
+        out << " lat " << photo.gps->latitude_deg << " lon " << photo.gps->longitude_deg << " alt "
+            << photo.gps->altitude_m;
+      } else {
+        out << " no gps";
+      }
+    }
+  });
+  return out.str();
+}
+
+const std::vector<Command>& commands() {
+  static const std::vector<Command> kCommands = {
+      {"help", "help", 0, 0, run_help},
+      {"status", "status", 0, 0, run_status},
+      {"clear", "clear", 0, 0, run_clear},
+      {"corrupt", "corrupt RATE", 1, 1, run_corrupt},
+      {"garbage", "garbage RATE [MAX]", 1, 2, run_garbage},
+      {"drop-acks", "drop-acks RATE", 1, 1, run_drop_acks},
+      {"delay-acks", "delay-acks MS [RATE]", 1, 2, run_delay_acks},
+      {"silence", "silence SECONDS", 1, 1, run_silence},
+      {"disconnect", "disconnect SECONDS", 1, 1, run_disconnect},
+      {"seq-jump", "seq-jump N", 1, 1, run_seq_jump},
+      {"sd", "sd absent|insert|fill|normal|abnormal|slow|format-error", 1, 1, run_sd},
+      {"self-test", "self-test MASK", 1, 1, run_self_test},
+      {"ground-height", "ground-height METRES", 1, 1, run_ground_height},
+      {"photos", "photos", 0, 0, run_photos},
+  };
+  return kCommands;
+}
+
+}  // namespace
+
+std::string control_help() {
+  std::string text = "commands:";
+  for (const Command& c : commands()) text += std::string(" | ") + c.usage;
+  return text;
+}
+
+std::string execute_control_command(const std::string& line, ControlTarget& target) {
+  std::istringstream in(line);
+  std::string name;
+  in >> name;
+  if (name.empty()) return error("empty command; try 'help'");
+  Args args;
+  for (std::string word; in >> word;) args.push_back(word);
+  for (const Command& c : commands()) {
+    if (name != c.name) continue;
+    if (args.size() < c.min_args || args.size() > c.max_args)
+      return error("usage: " + std::string(c.usage));
+    return c.run(args, target);
+  }
+  return error("unknown command '" + name + "'; try 'help'");
+}
+
+}  // namespace k40t::sim

@@ -1,0 +1,225 @@
+#include "k40t_driver/sim/pod_reports.h"
+
+#include <cmath>
+
+#include "code_mapping.h"
+#include "k40t_driver/protocol/messages/camera.h"
+#include "k40t_driver/protocol/messages/gimbal.h"
+#include "k40t_driver/protocol/messages/laser.h"
+#include "k40t_driver/protocol/messages/thermal.h"
+#include "k40t_driver/protocol/messages/visible.h"
+
+namespace k40t::sim {
+
+namespace {
+
+using handlers::same_code;
+namespace p = protocol;
+
+bool always(const PodModel&) {
+  return true;
+}
+bool camera_up(const PodModel& pod) {
+  return pod.camera_available();
+}
+bool measuring(const PodModel& pod) {
+  return pod.camera_available() && pod.thermal().settings().measurement_on;
+}
+bool ranging(const PodModel& pod) {
+  return pod.camera_available() && pod.laser().periodic();
+}
+
+template <class Msg>
+Result<p::Payload> encode(const Msg& message, const p::CodecOptions& codec) {
+  return p::encode_payload(message, codec);
+}
+
+Result<p::Payload> gimbal_status(const PodModel& pod, const p::CodecOptions& codec) {
+  const auto link = [](bool ok) {
+    return ok ? p::GimbalLinkState::kNormal : p::GimbalLinkState::kAbnormal;
+  };
+  p::GimbalStatus report;
+  report.gimbal_link = link(pod.gimbal_link_ok());
+  report.camera_link = link(pod.camera_link_ok());
+  report.upgrade = same_code<p::GimbalUpgradeState>(pod.upgrade_status());
+  report.ir_ok = pod.self_test() & kSelfTestInfrared;
+  report.tele_ok = pod.self_test() & kSelfTestTele;
+  report.wide_ok = pod.self_test() & kSelfTestWide;
+  report.laser_ok = pod.self_test() & kSelfTestLaser;
+  report.stabilisation = same_code<p::GimbalStabilisationState>(pod.gimbal().stabilisation_state());
+  return encode(report, codec);
+}
+
+Result<p::Payload> gimbal_attitude(const PodModel& pod, const p::CodecOptions& codec) {
+  const GimbalPose pose = pod.gimbal().pose();
+  p::GimbalAttitude report;
+  report.joint_yaw_deg = pose.joint_yaw_deg;
+  report.joint_roll_deg = pose.joint_roll_deg;
+  report.joint_pitch_deg = pose.joint_pitch_deg;
+  report.yaw_deg = pod.attitude_yaw_deg();
+  report.roll_deg = pose.joint_roll_deg;
+  report.pitch_deg = pose.joint_pitch_deg;
+  report.yaw_rate_deg_s = pose.yaw_rate_deg_s;
+  report.pitch_rate_deg_s = pose.pitch_rate_deg_s;
+  report.roll_rate_deg_s = pose.roll_rate_deg_s;
+  return encode(report, codec);
+}
+
+Result<p::Payload> camera_system_status(const PodModel& pod, const p::CodecOptions& codec) {
+  const CameraSettings& s = pod.camera().settings();
+  const SdCard& sd = pod.camera().sd();
+  p::CameraSystemStatus report;
+  report.capture_mode = same_code<p::CaptureMode>(s.capture_mode);
+  report.stream_resolution = same_code<p::ReportedStreamResolution>(s.stream_resolution);
+  report.encoding = same_code<p::VideoEncoding>(s.stream_encoding);
+  report.image_mode = same_code<p::ImageMode>(s.image_mode);
+  report.bitrate = same_code<p::StreamBitrate>(s.stream_bitrate);
+  report.photo_mode = same_code<p::PhotoMode>(s.photo_mode);
+  report.time_lapse_interval_s = s.time_lapse_interval_s;
+  report.burst_count = s.burst_count;
+  report.sd_state = same_code<p::SdCardState>(sd.state());
+  // The wire counts 10 MB; round down so used + free never exceeds total.
+  const auto tens = [](double mb) {
+    return std::floor(mb / p::kSdCapacityUnitMb) * p::kSdCapacityUnitMb;
+  };
+  report.sd_total_mb = tens(sd.capacity_mb());
+  report.sd_free_mb = tens(sd.free_mb());
+  report.sd_used_mb = tens(sd.used_mb());
+  return encode(report, codec);
+}
+
+Result<p::Payload> thermal_status(const PodModel& pod, const p::CodecOptions& codec) {
+  const ThermalStats stats = pod.thermal_stats();
+  p::ThermalStatus report;
+  report.max_degC = stats.max_degC;
+  report.min_degC = stats.min_degC;
+  report.center_degC = stats.centre_degC;
+  report.point_degC = stats.spot_degC;
+  report.average_degC = stats.average_degC;
+  report.max_x_px = static_cast<uint16_t>(stats.max_at.x);
+  report.max_y_px = static_cast<uint16_t>(stats.max_at.y);
+  report.min_x_px = static_cast<uint16_t>(stats.min_at.x);
+  report.min_y_px = static_cast<uint16_t>(stats.min_at.y);
+  report.center_x_px = static_cast<uint16_t>(stats.centre_at.x);
+  report.center_y_px = static_cast<uint16_t>(stats.centre_at.y);
+  report.point_x_px = static_cast<uint16_t>(stats.spot_at.x);
+  report.point_y_px = static_cast<uint16_t>(stats.spot_at.y);
+  report.high_alarm = stats.high_alarm;
+  report.low_alarm = stats.low_alarm;
+  report.difference_alarm = stats.difference_alarm;
+  report.threshold_alarm = stats.threshold_alarm;
+  return encode(report, codec);
+}
+
+Result<p::Payload> visible_status(const PodModel& pod, const p::CodecOptions& codec) {
+  const Exposure exposure = pod.exposure();
+  p::VisibleStatus report;
+  report.zooming = pod.zoom().zooming();
+  report.focal_length_mm = pod.zoom().focal_length_mm();
+  report.zoom_x = pod.zoom().zoom();
+  report.ev = same_code<p::ExposureValue>(exposure.ev_code);
+  report.iso_db = exposure.iso_db;
+  report.shutter_us = static_cast<uint16_t>(std::lround(exposure.shutter_us));
+  report.ae_lock_on = pod.camera().visible().ae_lock;
+  report.focusing = pod.zoom().focusing();
+  // The document gives this field no unit; read as 0.01 mm like the focal length.
+  report.precise_shot_focal_length_mm = pod.camera().settings().precise_focal_length_raw / 100.0;
+  return encode(report, codec);
+}
+
+Result<p::Payload> periodic_range(const PodModel& pod, const p::CodecOptions& codec) {
+  p::LaserPeriodicRangeStatus report;
+  report.distance_m = pod.laser_range().value_or(0.0);  // 0: no return
+  return encode(report, codec);
+}
+
+// One visitor per event kind: the status frame it becomes.
+struct EventEncoder {
+  const p::CodecOptions& codec;
+
+  std::optional<OutgoingMessage> wrap(p::MessageId id, const Result<p::Payload>& payload) const {
+    if (!payload) return std::nullopt;
+    return OutgoingMessage{id, *payload};
+  }
+  std::optional<OutgoingMessage> operator()(const ZoomStatusEvent& e) const {
+    p::ZoomStatus frame;
+    frame.progress = e.zooming ? p::ZoomProgress::kZooming : p::ZoomProgress::kDone;
+    return wrap(p::ZoomStatus::kId, encode(frame, codec));
+  }
+  std::optional<OutgoingMessage> operator()(const PhotoStatusEvent& e) const {
+    if (e.precise) {
+      p::PreciseReshootStatus frame;
+      frame.lens = same_code<p::PhotoLensMode>(e.lens_mode);
+      frame.state = same_code<p::ReshootState>(e.state);
+      return wrap(p::PreciseReshootStatus::kId, encode(frame, codec));
+    }
+    p::PhotoStatus frame;
+    frame.lens = same_code<p::PhotoLensMode>(e.lens_mode);
+    frame.state = same_code<p::PhotoState>(e.state);
+    frame.burst_count = e.count;
+    return wrap(p::PhotoStatus::kId, encode(frame, codec));
+  }
+  std::optional<OutgoingMessage> operator()(const RecordStatusEvent& e) const {
+    p::RecordStatus frame;
+    frame.lens = same_code<p::RecordLensMode>(e.lens_mode);
+    frame.state = same_code<p::RecordState>(e.state);
+    frame.recording_time_s = e.seconds;
+    return wrap(p::RecordStatus::kId, encode(frame, codec));
+  }
+  std::optional<OutgoingMessage> operator()(const FormatStatusEvent& e) const {
+    p::SdFormatStatus frame;
+    frame.state = same_code<p::SdFormatState>(e.state);
+    return wrap(p::SdFormatStatus::kId, encode(frame, codec));
+  }
+  std::optional<OutgoingMessage> operator()(const TfUpgradeStatusEvent& e) const {
+    p::TfCardUpgradeStatus frame;
+    frame.state = same_code<p::TfUpgradeState>(e.state);
+    return wrap(p::TfCardUpgradeStatus::kId, encode(frame, codec));
+  }
+  std::optional<OutgoingMessage> operator()(const MaintenanceEvent& e) const {
+    p::CameraUpgradeStatus report;
+    report.state = same_code<p::CameraUpgradeState>(e.state);
+    report.progress_percent = e.progress;
+    return wrap(p::CameraUpgradeStatus::kId, encode(report, codec));
+  }
+  std::optional<OutgoingMessage> operator()(const GpsRequestEvent&) const { return std::nullopt; }
+};
+
+}  // namespace
+
+const std::vector<PeriodicReport>& periodic_reports() {
+  static const std::vector<PeriodicReport> kReports = {
+      {p::GimbalStatus::kId, 0.5, always, gimbal_status},
+      {p::GimbalAttitude::kId, 0.1, always, gimbal_attitude},
+      {p::CameraSystemStatus::kId, 1.0, camera_up, camera_system_status},
+      {p::ThermalStatus::kId, 0.2, measuring, thermal_status},
+      {p::VisibleStatus::kId, 0.2, camera_up, visible_status},
+      {p::LaserPeriodicRangeStatus::kId, 1.0, ranging, periodic_range},
+  };
+  return kReports;
+}
+
+ReportScheduler::ReportScheduler() : next_due_s_(periodic_reports().size(), 0.0) {}
+
+std::vector<const PeriodicReport*> ReportScheduler::due(const PodModel& pod, double now_s) {
+  std::vector<const PeriodicReport*> out;
+  const auto& reports = periodic_reports();
+  for (size_t i = 0; i < reports.size(); ++i) {
+    if (!reports[i].active(pod)) {
+      next_due_s_[i] = now_s;  // first report as soon as it becomes active
+      continue;
+    }
+    if (now_s + 1e-9 < next_due_s_[i]) continue;
+    out.push_back(&reports[i]);
+    // Keep the cadence; after a stall, skip the missed slots rather than bursting.
+    next_due_s_[i] += reports[i].period_s;
+    if (next_due_s_[i] <= now_s) next_due_s_[i] = now_s + reports[i].period_s;
+  }
+  return out;
+}
+
+std::optional<OutgoingMessage> encode_event(const PodEvent& event, const p::CodecOptions& codec) {
+  return std::visit(EventEncoder{codec}, event);
+}
+
+}  // namespace k40t::sim

@@ -1,0 +1,268 @@
+#include "k40t_driver/sim/pod_server.h"
+
+#include <cstdio>
+#include <sstream>
+
+#include "k40t_driver/protocol/catalogue.h"
+#include "k40t_driver/protocol/messages/flight_controller.h"
+#include "k40t_driver/sim/request_handlers.h"
+
+namespace k40t::sim {
+
+namespace {
+
+// Section 3.1 (gimbal, system 0x03): reports 0x000001-0x000002 and requests 0x000010-0x0000FF.
+// Section 3.2.1's reports 0x000003-0x00000F are the camera's (system 0x04) despite their ids.
+bool is_gimbal_message(protocol::MessageId id) {
+  const protocol::MessageId base = id & 0xFFFF;
+  return base == 0x000001 || base == 0x000002 || (base >= 0x000010 && base <= 0x0000FF);
+}
+
+void print_frame(const char* direction, const protocol::FrameView& frame) {
+  const protocol::MessageInfo* info = protocol::find_message(frame.header.message_id);
+  std::printf("%s seq %3u %02X/%02X->%02X/%02X 0x%06X %-28s %zu B\n", direction,
+              frame.header.sequence, frame.header.source.system, frame.header.source.component,
+              frame.header.destination.system, frame.header.destination.component,
+              frame.header.message_id, info ? info->name : "?", frame.payload_size);
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+PodServer::PodServer(SimOptions options)
+    : options_(std::move(options)),
+      faults_(options_.seed, options_.crc_coverage),
+      pod_(options_.pod) {
+  faults_.set_settings(options_.faults);
+  if (options_.sd_condition) set_sd_condition(pod_.camera().sd(), *options_.sd_condition);
+}
+
+PodServer::~PodServer() {
+  stop();
+}
+
+Status PodServer::start() {
+  if (running_) return Status::ok();
+  if (options_.capture_prefix) {
+    auto capture = CaptureWriter::open(*options_.capture_prefix);
+    if (!capture) return capture.status();
+    capture_ = std::move(capture).value();
+  }
+  // Fail now on a URL no retry can fix; the real link is made again after each disconnect.
+  {
+    auto probe = transport::make_transport(options_.link);
+    if (!probe) return probe.status();
+  }
+  const std::string url = options_.link;
+  auto link = std::make_unique<FaultyTransport>([url] { return transport::make_transport(url); },
+                                                url, faults_, capture_.get());
+  link_ = link.get();
+
+  session::SessionOptions session_options;
+  session_options.codec = options_.codec;
+  session_options.crc_coverage = options_.crc_coverage;
+  session_options.own_address = options_.codec.camera_address;
+  session_ = std::make_unique<session::Session>(std::move(link), session_options);
+  for (const HandlerEntry& entry : request_handlers()) {
+    session_->set_request_handler(entry.id,
+                                  [this](const protocol::FrameView& f) { return on_request(f); });
+  }
+  if (options_.verbose) {
+    session_->dispatcher().on_frame([](const protocol::FrameView& f) { print_frame("rx", f); });
+    session_->on_frame_sent([](const protocol::FrameView& f) { print_frame("tx", f); });
+  }
+  const Status opened = session_->start();
+  if (!opened) return opened;
+
+  if (options_.control_endpoint) {
+    const Status control = control_.start(
+        *options_.control_endpoint,
+        [this](const std::string& line) { return execute_control_command(line, *this); });
+    if (!control) {
+      session_->stop();
+      return control;
+    }
+  }
+  pending_faults_ = options_.scheduled;
+  started_at_ = SteadyClock::now();
+  running_ = true;
+  thread_ = std::thread([this] { run(); });
+  return Status::ok();
+}
+
+void PodServer::stop() {
+  if (running_.exchange(false)) {
+    {
+      std::lock_guard<std::mutex> lock(wake_mutex_);
+      wake_.notify_all();
+    }
+    thread_.join();
+  }
+  control_.stop();
+  if (session_) session_->stop();
+}
+
+std::optional<protocol::Payload> PodServer::on_request(const protocol::FrameView& request) {
+  std::optional<protocol::Payload> ack;
+  {
+    std::lock_guard<std::mutex> lock(model_mutex_);
+    ack = answer_request(pod_, options_.codec, request);
+  }
+  if (!ack) return std::nullopt;
+  // The pod did what was asked; only its answer is lost or late.
+  if (faults_.drop_ack()) return std::nullopt;
+  const std::chrono::milliseconds delay = faults_.ack_delay();
+  if (delay.count() > 0) {
+    std::lock_guard<std::mutex> lock(delayed_mutex_);
+    delayed_.push_back({SteadyClock::now() + delay, request.header, *ack});
+    return std::nullopt;
+  }
+  return ack;
+}
+
+void PodServer::advance_model(double dt_s, std::vector<Outgoing>& out,
+                              std::vector<GpsRequestEvent>& gps) {
+  std::lock_guard<std::mutex> lock(model_mutex_);
+  pod_.step(dt_s);
+  for (const PodEvent& event : pod_.take_events()) {
+    if (const auto* request = std::get_if<GpsRequestEvent>(&event)) {
+      gps.push_back(*request);
+    } else if (auto message = encode_event(event, options_.codec)) {
+      out.push_back({options_.codec.camera_address, *message});
+    }
+  }
+  for (const PeriodicReport* report : scheduler_.due(pod_, pod_.now_s())) {
+    Result<protocol::Payload> payload = report->encode(pod_, options_.codec);
+    if (!payload) continue;  // a model value the field cannot carry: skip this one report
+    const protocol::Address source = is_gimbal_message(report->id) ? options_.codec.gimbal_address
+                                                                   : options_.codec.camera_address;
+    out.push_back({source, OutgoingMessage{report->id, *payload}});
+  }
+}
+
+void PodServer::send(const std::vector<Outgoing>& out) {
+  for (const Outgoing& o : out) {
+    session_->send_frame_from(o.source, o.message.id, o.message.payload.data(),
+                              o.message.payload.size, protocol::kHostAddress);
+  }
+}
+
+void PodServer::ask_for_gps(const GpsRequestEvent& event) {
+  protocol::CameraGpsRequest request;
+  request.hour = event.time.hour;
+  request.minute = event.time.minute;
+  request.second = event.time.second;
+  request.millisecond = event.time.millisecond;
+  Result<protocol::Payload> payload = protocol::encode_payload(request, options_.codec);
+  if (!payload) return;
+  const uint64_t photo_id = event.photo_id;
+  session_->request_async(protocol::CameraGpsRequest::kId, *payload,
+                          protocol::kFlightControllerAddress,
+                          [this, photo_id](const session::AckResult& result) {
+                            if (!result.ok()) return;  // no GPS: the photo keeps no position
+                            auto ack = protocol::decode_payload<protocol::CameraGpsAck>(
+                                result.payload.data(), result.payload.size(), options_.codec);
+                            if (!ack) return;
+                            GpsAnswer answer;
+                            answer.echoed = {ack->hour, ack->minute, ack->second, ack->millisecond};
+                            answer.longitude_deg = ack->longitude_deg;
+                            answer.latitude_deg = ack->latitude_deg;
+                            answer.relative_height_m = ack->relative_height_m;
+                            answer.altitude_m = ack->altitude_m;
+                            answer.yaw_deg = ack->yaw_deg;
+                            answer.roll_deg = ack->roll_deg;
+                            answer.pitch_deg = ack->pitch_deg;
+                            std::lock_guard<std::mutex> lock(model_mutex_);
+                            pod_.camera().attach_gps(photo_id, answer);
+                          });
+}
+
+void PodServer::fire_scheduled_faults(SteadyClock::time_point now) {
+  for (auto it = pending_faults_.begin(); it != pending_faults_.end();) {
+    if (now < started_at_ + it->at) {
+      ++it;
+      continue;
+    }
+    const auto duration = std::chrono::milliseconds(static_cast<int64_t>(it->amount * 1000));
+    switch (it->kind) {
+      case ScheduledFault::Kind::kSilence:
+        faults_.silence_for(duration, now);
+        break;
+      case ScheduledFault::Kind::kDisconnect:
+        disconnect_for(duration);
+        break;
+      case ScheduledFault::Kind::kSequenceJump:
+        faults_.jump_sequence(static_cast<int>(it->amount));
+        break;
+    }
+    it = pending_faults_.erase(it);
+  }
+}
+
+void PodServer::send_due_acks(SteadyClock::time_point now) {
+  std::vector<DelayedAck> due;
+  {
+    std::lock_guard<std::mutex> lock(delayed_mutex_);
+    while (!delayed_.empty() && delayed_.front().due <= now) {
+      due.push_back(delayed_.front());
+      delayed_.pop_front();
+    }
+  }
+  for (const DelayedAck& ack : due)
+    session_->send_ack(ack.request, ack.payload.data(), ack.payload.size);
+}
+
+void PodServer::run() {
+  const auto tick = std::chrono::duration_cast<SteadyClock::duration>(
+      std::chrono::duration<double>(options_.tick_s));
+  SteadyClock::time_point simulated_until = SteadyClock::now();
+  while (running_) {
+    const SteadyClock::time_point now = SteadyClock::now();
+    std::vector<Outgoing> out;
+    std::vector<GpsRequestEvent> gps;
+    // Model time follows the wall clock in fixed steps, so rates hold whatever the scheduling.
+    while (simulated_until + tick <= now) {
+      advance_model(options_.tick_s, out, gps);
+      simulated_until += tick;
+    }
+    send(out);
+    for (const GpsRequestEvent& request : gps) ask_for_gps(request);
+    fire_scheduled_faults(now);
+    send_due_acks(now);
+    link_->poll(now);
+    std::unique_lock<std::mutex> lock(wake_mutex_);
+    wake_.wait_until(lock, simulated_until + tick, [this] { return !running_; });
+  }
+}
+
+void PodServer::disconnect_for(std::chrono::milliseconds duration) {
+  if (link_) link_->disconnect_for(duration);
+}
+
+void PodServer::with_model(const std::function<void(PodModel&)>& change) {
+  std::lock_guard<std::mutex> lock(model_mutex_);
+  change(pod_);
+}
+
+session::SessionStats PodServer::session_stats() const {
+  return session_ ? session_->stats() : session::SessionStats{};
+}
+
+std::string PodServer::status() {
+  const session::SessionStats s = session_stats();
+  std::ostringstream out;
+  out << "link " << options_.link << " " << transport::to_string(s.link_state) << " | sent "
+      << s.frames_sent << " frames, answered " << s.requests_answered << " requests, received "
+      << s.parser.frames_good << " good frames, " << s.parser.checksum_errors << " checksum errors";
+  with_model([&](PodModel& pod) {
+    const GimbalPose pose = pod.gimbal().pose();
+    out << " | t " << pod.now_s() << " s yaw " << pose.joint_yaw_deg << " pitch "
+        << pose.joint_pitch_deg << " zoom " << pod.zoom().zoom() << "x sd "
+        << to_string(pod.camera().sd().state()) << " camera "
+        << (pod.camera_available() ? "up" : "down");
+  });
+  out << " | faults " << faults_.describe();
+  return out.str();
+}
+
+}  // namespace k40t::sim

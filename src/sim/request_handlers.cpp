@@ -1,0 +1,73 @@
+#include "k40t_driver/sim/request_handlers.h"
+
+#include <algorithm>
+
+#include "handler_support.h"
+
+namespace k40t::sim {
+
+protocol::ResponseCode outcome_code(Outcome outcome) {
+  using protocol::ResponseCode;
+  switch (outcome) {
+    case Outcome::kOk:
+      return ResponseCode::kOk;
+    case Outcome::kFailure:
+      return ResponseCode::kFailure;
+    case Outcome::kBusy:
+      return ResponseCode::kBusy;
+    case Outcome::kNoSpace:
+      return ResponseCode::kNoSpace;
+    case Outcome::kRecording:
+      return ResponseCode::kRecording;
+    case Outcome::kCameraOpenFailed:
+      return ResponseCode::kCameraOpenFailed;
+    case Outcome::kPhotoInProgress:
+      return ResponseCode::kPhotoInProgress;
+    case Outcome::kNoSdCard:
+      return ResponseCode::kNoSdCard;
+  }
+  return ResponseCode::kUnknownError;
+}
+
+namespace handlers {
+protocol::Payload code_ack(protocol::ResponseCode code, const protocol::CodecOptions& codec) {
+  protocol::PlainAck ack;
+  ack.code = code;
+  return *protocol::encode_payload(ack, codec);
+}
+}  // namespace handlers
+
+const std::vector<HandlerEntry>& request_handlers() {
+  static const std::vector<HandlerEntry> kTable = [] {
+    std::vector<HandlerEntry> table;
+    add_gimbal_handlers(table);
+    add_thermal_handlers(table);
+    add_visible_handlers(table);
+    add_camera_handlers(table);
+    add_laser_sbus_handlers(table);
+    std::sort(table.begin(), table.end(),
+              [](const HandlerEntry& a, const HandlerEntry& b) { return a.id < b.id; });
+    return table;
+  }();
+  return kTable;
+}
+
+const HandlerEntry* find_request_handler(protocol::MessageId id) {
+  const auto& table = request_handlers();
+  const auto it =
+      std::lower_bound(table.begin(), table.end(), id,
+                       [](const HandlerEntry& e, protocol::MessageId v) { return e.id < v; });
+  return it != table.end() && it->id == id ? &*it : nullptr;
+}
+
+std::optional<protocol::Payload> answer_request(PodModel& pod, const protocol::CodecOptions& codec,
+                                                const protocol::FrameView& request) {
+  const HandlerEntry* entry = find_request_handler(request.header.message_id);
+  if (!entry) return std::nullopt;
+  const bool gimbal_request = request.header.message_id <= 0x0000FF;
+  if (!gimbal_request && !pod.camera_available()) return std::nullopt;  // nobody home to answer
+  RequestContext ctx{pod, codec};
+  return entry->handle(ctx, request);
+}
+
+}  // namespace k40t::sim

@@ -1,0 +1,79 @@
+#include "k40t_driver/sim/world.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace k40t::sim {
+
+const char* to_string(Surface surface) {
+  switch (surface) {
+    case Surface::kSky:
+      return "sky";
+    case Surface::kGround:
+      return "ground";
+    case Surface::kHotObject:
+      return "hot object";
+    case Surface::kColdObject:
+      return "cold object";
+  }
+  return "?";
+}
+
+Vec3 World::hot_object_centre() const {
+  return {config_.hot.north_m, config_.hot.east_m, -config_.ground_height_m + config_.hot.radius_m};
+}
+
+Vec3 World::cold_object_centre() const {
+  return {config_.cold.north_m, config_.cold.east_m, -config_.ground_height_m};
+}
+
+double World::ground_temperature(double north_m, double east_m) const {
+  return config_.ground_temperature_degC +
+         config_.ground_texture_degC * std::sin(north_m / 37.0) * std::cos(east_m / 23.0);
+}
+
+Hit World::trace(const Vec3& dir) const {
+  const Vec3 origin{};
+  Hit hit;
+  const std::optional<double> sphere =
+      hit_sphere(origin, dir, hot_object_centre(), config_.hot.radius_m);
+  const std::optional<double> ground = hit_horizontal_plane(origin, dir, -config_.ground_height_m);
+
+  if (sphere && (!ground || *sphere <= *ground)) {
+    // Hottest where the surface faces the viewer, falling to ground temperature at the limb.
+    const Vec3 point = dir * *sphere;
+    const Vec3 outward = normalized(point - hot_object_centre());
+    const double facing = std::max(0.0, -dot(outward, dir));
+    const double rim = ground_temperature(point.x, point.y);
+    hit.surface = Surface::kHotObject;
+    hit.distance_m = *sphere;
+    hit.temperature_degC = rim + (config_.hot.temperature_degC - rim) * std::sqrt(facing);
+    return hit;
+  }
+  if (ground) {
+    const Vec3 point = dir * *ground;
+    const double ground_degC = ground_temperature(point.x, point.y);
+    const double from_pond =
+        std::hypot(point.x - config_.cold.north_m, point.y - config_.cold.east_m);
+    hit.distance_m = *ground;
+    if (from_pond < config_.cold.radius_m) {
+      // Coldest at the centre, blending smoothly into the ground at the rim.
+      const double r = from_pond / config_.cold.radius_m;
+      const double blend = r * r * (3 - 2 * r);
+      hit.surface = Surface::kColdObject;
+      hit.temperature_degC =
+          config_.cold.temperature_degC + (ground_degC - config_.cold.temperature_degC) * blend;
+    } else {
+      hit.surface = Surface::kGround;
+      hit.temperature_degC = ground_degC;
+    }
+    return hit;
+  }
+  const double elevation_deg = std::max(0.0, pitch_of(dir));
+  hit.temperature_degC =
+      config_.sky_zenith_degC +
+      (config_.sky_horizon_degC - config_.sky_zenith_degC) * std::exp(-elevation_deg / 10.0);
+  return hit;
+}
+
+}  // namespace k40t::sim

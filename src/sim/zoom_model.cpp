@@ -1,0 +1,107 @@
+#include "k40t_driver/sim/zoom_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "k40t_driver/sim/lens.h"
+
+namespace k40t::sim {
+
+ZoomModel::ZoomModel(const ZoomConfig& config)
+    : config_(config), zoom_(config.min_zoom), target_(config.min_zoom) {}
+
+void ZoomModel::reset() {
+  zoom_ = target_ = config_.min_zoom;
+  moving_ = announce_start_ = manual_focus_ = false;
+  focus_left_s_ = 0;
+  auto_focus_after_zoom_ = true;
+}
+
+void ZoomModel::start(double target) {
+  target_ = std::clamp(target, config_.min_zoom, config_.max_zoom);
+  if (!moving_) {
+    moving_ = true;
+    announce_start_ = true;  // "zooming" goes out at the next step, then every status period
+  }
+}
+
+Outcome ZoomModel::set_zoom(double zoom) {
+  if (!(zoom >= config_.min_zoom && zoom <= config_.max_zoom)) return Outcome::kFailure;
+  start(zoom);
+  return Outcome::kOk;
+}
+
+Outcome ZoomModel::zoom_control(ContinuousZoom command) {
+  switch (command) {
+    case ContinuousZoom::kIn:
+      start(config_.max_zoom);
+      break;
+    case ContinuousZoom::kOut:
+      start(config_.min_zoom);
+      break;
+    case ContinuousZoom::kStop:
+      if (moving_) target_ = zoom_;  // the next step reports "done"
+      break;
+    case ContinuousZoom::kStepIn:
+      start((moving_ ? target_ : zoom_) * config_.step_factor);
+      break;
+    case ContinuousZoom::kStepOut:
+      start((moving_ ? target_ : zoom_) / config_.step_factor);
+      break;
+  }
+  return Outcome::kOk;
+}
+
+Outcome ZoomModel::focus(FocusCommand command) {
+  switch (command) {
+    case FocusCommand::kAuto:
+    case FocusCommand::kArea:
+    case FocusCommand::kOneTouch:
+      manual_focus_ = false;
+      focus_left_s_ = config_.focus_time_s;
+      break;
+    case FocusCommand::kManualNear:
+    case FocusCommand::kManualFar:
+      manual_focus_ = true;
+      break;
+    case FocusCommand::kStopManual:
+      manual_focus_ = false;
+      break;
+    case FocusCommand::kAutoAfterZoomOn:
+      auto_focus_after_zoom_ = true;
+      break;
+    case FocusCommand::kAutoAfterZoomOff:
+      auto_focus_after_zoom_ = false;
+      break;
+  }
+  return Outcome::kOk;
+}
+
+double ZoomModel::focal_length_mm() const {
+  return sim::focal_length_mm(Lens::kTele, zoom_);
+}
+
+void ZoomModel::step(double dt_s, EventQueue& events) {
+  if (focus_left_s_ > 0) focus_left_s_ = std::max(0.0, focus_left_s_ - dt_s);
+  if (!moving_) return;
+  if (announce_start_) {
+    events.push_back(ZoomStatusEvent{true});
+    announce_start_ = false;
+    since_status_s_ = 0;
+  }
+  const double factor = std::exp2(dt_s / config_.doubling_time_s);
+  zoom_ = target_ > zoom_ ? std::min(target_, zoom_ * factor) : std::max(target_, zoom_ / factor);
+  if (zoom_ == target_) {
+    moving_ = false;
+    events.push_back(ZoomStatusEvent{false});
+    if (auto_focus_after_zoom_) focus_left_s_ = config_.focus_time_s;
+    return;
+  }
+  since_status_s_ += dt_s;
+  if (since_status_s_ >= config_.status_period_s) {
+    since_status_s_ -= config_.status_period_s;
+    events.push_back(ZoomStatusEvent{true});
+  }
+}
+
+}  // namespace k40t::sim

@@ -1,0 +1,293 @@
+// The simulated pod's answers to the common camera requests (section 3.2.4) and the resulting
+// state as its reports and status frames show it. Requests are typed structs encoded by the
+// protocol library; what is checked is the simulator's behaviour.
+#include <gtest/gtest.h>
+
+#include "k40t_driver/protocol/messages/camera.h"
+#include "sim_pod_harness.h"
+
+namespace k40t::sim {
+namespace {
+
+namespace p = protocol;
+using p::ResponseCode;
+using testing::PodHarness;
+
+p::TakePhotoRequest photo(p::PhotoAction action = p::PhotoAction::kStart) {
+  p::TakePhotoRequest request;
+  request.lens = p::PhotoLensMode::kVisible;
+  request.action = action;
+  return request;
+}
+
+p::RecordRequest record(p::RecordAction action) {
+  p::RecordRequest request;
+  request.lens = p::RecordLensMode::kVisible;
+  request.action = action;
+  return request;
+}
+
+p::CaptureModeRequest mode(p::CaptureMode m) {
+  p::CaptureModeRequest request;
+  request.mode = m;
+  return request;
+}
+
+TEST(SimCameraRequests, ModesAndPhotoSettingsShowInTheSystemStatus) {
+  PodHarness h;
+  EXPECT_EQ(h.send(mode(p::CaptureMode::kVideo)), ResponseCode::kOk);
+  p::PhotoSettingsRequest settings;
+  settings.photo_mode = p::PhotoMode::kTimeLapse;
+  settings.time_lapse_interval_s = 30;
+  settings.burst_count = 5;
+  EXPECT_EQ(h.send(settings), ResponseCode::kOk);
+  p::StreamBitrateRequest bitrate;
+  bitrate.bitrate = p::StreamBitrate::k12Mbps;
+  EXPECT_EQ(h.send(bitrate), ResponseCode::kOk);
+  p::StreamEncodingRequest encoding;
+  encoding.encoding = p::VideoEncoding::kH265;
+  EXPECT_EQ(h.send(encoding), ResponseCode::kOk);
+  p::ImageModeRequest image;
+  image.mode = p::ImageMode::kSplit;
+  EXPECT_EQ(h.send(image), ResponseCode::kOk);
+
+  const auto status = h.report<p::CameraSystemStatus>();
+  EXPECT_EQ(status.capture_mode, p::CaptureMode::kVideo);
+  EXPECT_EQ(status.photo_mode, p::PhotoMode::kTimeLapse);
+  EXPECT_EQ(status.time_lapse_interval_s, 30);
+  EXPECT_EQ(status.burst_count, 5);
+  EXPECT_EQ(status.bitrate, p::StreamBitrate::k12Mbps);
+  EXPECT_EQ(status.encoding, p::VideoEncoding::kH265);
+  EXPECT_EQ(status.image_mode, p::ImageMode::kSplit);
+  EXPECT_EQ(status.sd_state, p::SdCardState::kNormal);
+  EXPECT_DOUBLE_EQ(status.sd_total_mb, 65530);  // 64 GB in the wire's 10 MB steps
+}
+
+TEST(SimCameraRequests, PhotoAndRecordingRefusalsCarryTheirCodes) {
+  PodHarness h;
+  EXPECT_EQ(h.send(record(p::RecordAction::kStart)), ResponseCode::kFailure);  // photo mode
+  EXPECT_EQ(h.send(mode(p::CaptureMode::kVideo)), ResponseCode::kOk);
+  EXPECT_EQ(h.send(photo()), ResponseCode::kFailure);  // video mode, not recording
+  EXPECT_EQ(h.send(record(p::RecordAction::kStart)), ResponseCode::kOk);
+  EXPECT_EQ(h.send(photo()), ResponseCode::kRecording);
+  EXPECT_EQ(h.send(mode(p::CaptureMode::kPhoto)), ResponseCode::kRecording);
+  EXPECT_EQ(h.send(p::FormatSdRequest{}), ResponseCode::kRecording);
+  EXPECT_EQ(h.send(record(p::RecordAction::kStart)), ResponseCode::kBusy);
+  h.run(2.05);
+  EXPECT_EQ(h.send(record(p::RecordAction::kStop)), ResponseCode::kOk);
+  h.run(0.05);
+  const auto frames = h.status_frames<p::RecordStatus>();
+  ASSERT_EQ(frames.size(), 4u);  // 0 s, 1 s, 2 s, stopped
+  EXPECT_EQ(frames[2].recording_time_s, 2);
+  EXPECT_EQ(frames.back().state, p::RecordState::kStopped);
+  EXPECT_EQ(frames.back().lens, p::RecordLensMode::kVisible);
+
+  EXPECT_EQ(h.send(mode(p::CaptureMode::kPhoto)), ResponseCode::kOk);
+  p::PhotoSettingsRequest burst;
+  burst.photo_mode = p::PhotoMode::kBurst;
+  burst.burst_count = 5;
+  EXPECT_EQ(h.send(burst), ResponseCode::kOk);
+  EXPECT_EQ(h.send(photo()), ResponseCode::kOk);
+  EXPECT_EQ(h.send(photo()), ResponseCode::kPhotoInProgress);
+  EXPECT_EQ(h.send(record(p::RecordAction::kStart)), ResponseCode::kPhotoInProgress);
+  h.run(2.0);
+  const auto photos = h.status_frames<p::PhotoStatus>();
+  ASSERT_EQ(photos.size(), 6u);
+  EXPECT_EQ(photos[4].state, p::PhotoState::kBurst);
+  EXPECT_EQ(photos[4].burst_count, 5);
+  EXPECT_EQ(photos[5].state, p::PhotoState::kDone);
+}
+
+TEST(SimCameraRequests, SdCardConditionsRefuseAndShowInTheStatus) {
+  PodHarness h;
+  h.pod.camera().sd().remove();
+  EXPECT_EQ(h.send(photo()), ResponseCode::kNoSdCard);
+  EXPECT_EQ(h.send(p::FormatSdRequest{}), ResponseCode::kNoSdCard);
+  EXPECT_EQ(h.send(p::TfCardUpgradeRequest{}), ResponseCode::kNoSdCard);
+  EXPECT_EQ(h.report<p::CameraSystemStatus>().sd_state, p::SdCardState::kMissing);
+  EXPECT_DOUBLE_EQ(h.report<p::CameraSystemStatus>().sd_total_mb, 0);
+  h.pod.camera().sd().insert();
+  h.pod.camera().sd().fill();
+  EXPECT_EQ(h.send(photo()), ResponseCode::kNoSpace);
+  EXPECT_EQ(h.report<p::CameraSystemStatus>().sd_state, p::SdCardState::kFull);
+  EXPECT_EQ(h.send(p::FormatSdRequest{}), ResponseCode::kOk);
+  EXPECT_EQ(h.send(p::FormatSdRequest{}), ResponseCode::kBusy);
+  h.run(2.5);
+  const auto format = h.status_frames<p::SdFormatStatus>();
+  ASSERT_FALSE(format.empty());
+  EXPECT_EQ(format.front().state, p::SdFormatState::kFormatting);
+  EXPECT_EQ(format.back().state, p::SdFormatState::kDone);
+  const auto status = h.report<p::CameraSystemStatus>();
+  EXPECT_EQ(status.sd_state, p::SdCardState::kNormal);
+  EXPECT_DOUBLE_EQ(status.sd_used_mb, 0);
+}
+
+TEST(SimCameraRequests, BadPayloadsAreRefusedAndUnknownIdsIgnored) {
+  PodHarness h;
+  // 0x000302 needs 54 bytes.
+  const auto short_ack = h.raw(0x000302, {0x02, 0x00});
+  ASSERT_TRUE(short_ack);
+  EXPECT_EQ(p::ack_response_code(short_ack->data(), short_ack->size, h.codec),
+            ResponseCode::kLengthMismatch);
+  // Lens mode 9 does not exist.
+  std::vector<uint8_t> bad_lens(54, 0);
+  bad_lens[0] = 9;
+  const auto bad_ack = h.raw(0x000302, bad_lens);
+  ASSERT_TRUE(bad_ack);
+  EXPECT_EQ(p::ack_response_code(bad_ack->data(), bad_ack->size, h.codec), ResponseCode::kFailure);
+  // 0x00030A 2 = 720P30 "not supported".
+  const auto unsupported = h.raw(0x00030A, {0x02, 0x00});
+  EXPECT_EQ(p::ack_response_code(unsupported->data(), unsupported->size, h.codec),
+            ResponseCode::kFailure);
+  // Zoom 0.5x is below 1x.
+  const auto low_zoom = h.raw(0x000304, {0x00, 0x05, 0x00});
+  EXPECT_EQ(p::ack_response_code(low_zoom->data(), low_zoom->size, h.codec),
+            ResponseCode::kFailure);
+  EXPECT_FALSE(h.raw(0x0003F0, {0x01, 0x00}));
+  EXPECT_FALSE(h.raw(0x000310, {1, 2, 3, 4, 5, 0}));  // the pod's own request, not answered by it
+}
+
+TEST(SimCameraRequests, ZoomMovesAndReportsItsStatus) {
+  PodHarness h;
+  p::ZoomRatioRequest zoom;
+  zoom.zoom_x = 4.0;
+  EXPECT_EQ(h.send(zoom), ResponseCode::kOk);
+  h.run(1.2);
+  const auto frames = h.status_frames<p::ZoomStatus>();
+  ASSERT_GE(frames.size(), 2u);
+  EXPECT_EQ(frames.front().progress, p::ZoomProgress::kZooming);
+  EXPECT_EQ(frames.back().progress, p::ZoomProgress::kDone);
+  EXPECT_DOUBLE_EQ(h.pod.zoom().zoom(), 4.0);
+  p::ContinuousZoomRequest step;
+  step.command = p::ZoomCommand::kStepOut;
+  EXPECT_EQ(h.send(step), ResponseCode::kOk);
+  h.run(1.0);
+  EXPECT_NEAR(h.pod.zoom().zoom(), 4.0 / std::sqrt(2.0), 1e-9);
+  p::FocusRequest focus;
+  focus.command = p::FocusCommand::kOneShot;
+  EXPECT_EQ(h.send(focus), ResponseCode::kOk);
+  EXPECT_TRUE(h.pod.zoom().focusing());
+}
+
+TEST(SimCameraRequests, PreciseReshootZoomsThenShootsWithItsOwnStatus) {
+  PodHarness h;
+  p::PreciseReshootRequest request;
+  request.lens = p::PhotoLensMode::kVisible;
+  request.zoom_x = 8.0;
+  request.focal_length_raw = 3760;
+  request.name = "pole_17";
+  EXPECT_EQ(h.send(request), ResponseCode::kOk);
+  h.run(3.0);
+  const auto frames = h.status_frames<p::PreciseReshootStatus>();
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_EQ(frames[0].state, p::ReshootState::kReshooting);
+  EXPECT_EQ(frames[1].state, p::ReshootState::kDone);
+  ASSERT_EQ(h.pod.camera().photos().size(), 1u);
+  EXPECT_EQ(h.pod.camera().photos()[0].path, "pole_17.jpg");
+  EXPECT_DOUBLE_EQ(h.pod.zoom().zoom(), 8.0);
+  EXPECT_EQ(h.pod.camera().settings().precise_focal_length_raw, 3760);
+}
+
+TEST(SimCameraRequests, SystemRequestsAnswerWithData) {
+  PodHarness h;
+  const auto version = h.ask(p::CameraVersionRequest{});
+  EXPECT_EQ(version.code, ResponseCode::kOk);
+  EXPECT_EQ(version.version_text(), "2.1.7");
+
+  EXPECT_EQ(h.ask(p::GetIpRequest{}).address, "192.168.144.64");
+  p::SetIpRequest set_ip;
+  set_ip.address = "10.1.2.3";
+  set_ip.netmask = "255.255.0.0";
+  set_ip.gateway = "10.1.0.1";
+  EXPECT_EQ(h.send(set_ip), ResponseCode::kOk);
+  const auto ip = h.ask(p::GetIpRequest{});
+  EXPECT_EQ(ip.address, "10.1.2.3");
+  EXPECT_EQ(ip.netmask, "255.255.0.0");
+  EXPECT_EQ(ip.gateway, "10.1.0.1");
+
+  p::TimeSyncRequest sync;
+  sync.unix_time_ms = 1741064767089;  // 2025-03-04T05:06:07.089Z
+  sync.tz_minutes_west = -480;        // UTC+8
+  EXPECT_EQ(h.send(sync), ResponseCode::kOk);
+  EXPECT_EQ(h.send(photo()), ResponseCode::kOk);
+  h.run(0.01);
+  ASSERT_EQ(h.pod.camera().photos().size(), 1u);
+  EXPECT_EQ(h.pod.camera().photos()[0].path, "IMG_20250304_130607_099.jpg");
+
+  p::OsdWatermarkRequest osd;
+  osd.enabled = true;
+  EXPECT_EQ(h.send(osd), ResponseCode::kOk);
+  EXPECT_TRUE(h.pod.camera().settings().watermark);
+}
+
+TEST(SimCameraRequests, TargetPositionFollowsTheLaser) {
+  PodHarness h;
+  p::TargetGpsRequest request;
+  request.latitude_deg = 47.0;
+  request.longitude_deg = 8.0;
+  request.relative_height_m = 30;
+  request.altitude_m = 530;
+  request.utc_time_ms = 1741064767089;
+  // Gimbal level: the laser sees the horizon, no return.
+  EXPECT_EQ(h.ask(request).code, ResponseCode::kFailure);
+  ASSERT_EQ(h.pod.gimbal().command_angles(-90.0, std::nullopt), Outcome::kOk);
+  h.run(5.0);
+  const auto target = h.ask(request);
+  EXPECT_EQ(target.code, ResponseCode::kOk);
+  EXPECT_NEAR(target.latitude_deg, 47.0, 1e-6);  // straight down
+  EXPECT_NEAR(target.longitude_deg, 8.0, 1e-6);
+  EXPECT_NEAR(target.altitude_m, 500, 0.01);
+  EXPECT_EQ(target.utc_time_ms, request.utc_time_ms);
+}
+
+TEST(SimCameraRequests, AiAndTrackingRules) {
+  PodHarness h;
+  p::BoxTrackingRequest track;
+  track.x_px = 900;
+  track.y_px = 500;
+  track.width_px = 100;
+  track.height_px = 80;
+  EXPECT_EQ(h.send(track), ResponseCode::kFailure);  // AI off
+  p::AiRecognitionRequest ai;
+  ai.recognition = p::FeatureSwitch::kOn;
+  ai.classes = {0, 2, 7};
+  EXPECT_EQ(h.send(ai), ResponseCode::kOk);
+  EXPECT_EQ(h.send(track), ResponseCode::kOk);
+  EXPECT_TRUE(h.pod.ai().tracking);
+  EXPECT_EQ(h.pod.ai().classes[2], 7);
+}
+
+TEST(SimCameraRequests, ShutdownSilencesTheCameraUntilItBoots) {
+  PodConfig config;
+  config.camera_boot_s = 2;
+  PodHarness h(config);
+  EXPECT_EQ(h.send(p::ShutdownRequest{}), ResponseCode::kOk);
+  h.run(0.5);
+  EXPECT_EQ(h.send(p::CameraVersionRequest{}), ResponseCode::kTimeout);  // no answer at all
+  h.run(2.0);
+  EXPECT_EQ(h.send(p::CameraVersionRequest{}), ResponseCode::kOk);
+}
+
+TEST(SimCameraRequests, FactoryResetRestoresSettings) {
+  PodHarness h;
+  EXPECT_EQ(h.send(mode(p::CaptureMode::kVideo)), ResponseCode::kOk);
+  EXPECT_EQ(h.send(p::FactoryResetRequest{}), ResponseCode::kOk);
+  EXPECT_EQ(h.send(p::FactoryResetRequest{}), ResponseCode::kBusy);
+  h.run(1.2);  // the reset happens one second after the ACK
+  EXPECT_EQ(h.report<p::CameraSystemStatus>().capture_mode, p::CaptureMode::kPhoto);
+}
+
+TEST(SimCameraRequests, AckByteOrderFollowsTheOption) {
+  p::CodecOptions little;
+  little.ack_byte_order = p::ByteOrder::kLittle;
+  PodHarness h({}, little);
+  h.pod.camera().sd().remove();
+  const auto ack = h.ack_of(photo());
+  ASSERT_TRUE(ack);
+  ASSERT_EQ(ack->size, 2u);
+  EXPECT_EQ(ack->bytes[0], 0x04);  // 0x0204 low byte first
+  EXPECT_EQ(ack->bytes[1], 0x02);
+}
+
+}  // namespace
+}  // namespace k40t::sim
