@@ -56,7 +56,7 @@ LensModels::LensModels(const ros::NodeHandle& private_nh, const VideoConfig& con
 }
 
 video::Intrinsics LensModels::at_1x(video::Lens lens, cv::Size frame) const {
-  const auto& manager = *managers_[static_cast<size_t>(lens)];
+  auto& manager = *managers_[static_cast<size_t>(lens)];
   if (manager.isCalibrated()) {
     const sensor_msgs::CameraInfo info = manager.getCameraInfo();
     const video::Intrinsics calibrated = from_message(info);
@@ -73,7 +73,7 @@ video::Intrinsics LensModels::at_1x(video::Lens lens, cv::Size frame) const {
 
 sensor_msgs::CameraInfo LensModels::camera_info(const video::StreamView& view, cv::Size frame,
                                                 const ZoomState& zoom) const {
-  const auto& manager = *managers_[static_cast<size_t>(view.lens)];
+  auto& manager = *managers_[static_cast<size_t>(view.lens)];
   video::Intrinsics in = at_1x(view.lens, frame);
   switch (view.lens) {
     case video::Lens::kTele: {
