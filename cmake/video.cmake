@@ -7,7 +7,7 @@
 #                   benchmarks reach k40t_video through k40t_sim_model;
 #   k40t_video_sim  the standalone simulated stream (tools/k40t_video_sim/).
 find_package(PkgConfig REQUIRED)
-pkg_check_modules(K40T_GST REQUIRED IMPORTED_TARGET gstreamer-1.0 gstreamer-app-1.0)
+pkg_check_modules(K40T_GST REQUIRED IMPORTED_TARGET gstreamer-1.0 gstreamer-app-1.0 gstreamer-rtsp-1.0)
 pkg_check_modules(K40T_GST_RTSP_SERVER REQUIRED IMPORTED_TARGET gstreamer-rtsp-server-1.0)
 find_package(OpenCV REQUIRED COMPONENTS core imgproc videoio)
 

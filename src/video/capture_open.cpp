@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "k40t_driver/video/rtsp_probe.h"
 #include "k40t_driver/video/stall_guard.h"
 
 namespace k40t::video {
@@ -64,6 +65,9 @@ bool delivers_i420(const CaptureOptions& options) {
 
 Result<std::shared_ptr<cv::VideoCapture>> open_capture(const CaptureOptions& options) {
   if (Status s = validate(options); !s) return s;
+  if (options.low_latency) {
+    if (Status s = probe_rtsp(options.url, options.open_timeout_s); !s) return s;
+  }
   auto capture = std::make_shared<cv::VideoCapture>();
   bool opened = false;
   try {

@@ -2,6 +2,7 @@
 
 #include <gst/gst.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -67,32 +68,52 @@ GstFlowReturn chain(GstPad*, GstObject* parent, GstBuffer* buffer) {
   return gst_pad_push(self->srcpad, buffer);
 }
 
-// Runs from PLAYING until the element is back in READY; pushes EOS once if the stream goes quiet
-// while PLAYING. The sink pad's stream lock serialises the EOS with the streaming thread's own
-// pushes. The thread holds a reference on the element, so the element outlives it even if a push
-// never returns.
+// Whether the element is still in a pipeline. A pipeline dropped without going back to NULL
+// (OpenCV 4.6 does that when a start fails) unparents its elements as it is disposed; the guard
+// then has nobody to tell and its thread ends.
+bool in_pipeline(StallGuard* self) {
+  GstObject* parent = gst_object_get_parent(GST_OBJECT(self));
+  if (!parent) return false;
+  gst_object_unref(parent);
+  return true;
+}
+
+// Pushes EOS downstream once. The reference on the parent keeps the pipeline, and the peers the
+// event goes through, alive; the sink pad's stream lock serialises it with the streaming thread.
+void end_stream(StallGuard* self) {
+  GstObject* parent = gst_object_get_parent(GST_OBJECT(self));
+  if (!parent) return;
+  GST_PAD_STREAM_LOCK(self->sinkpad);
+  if (!self->ended.exchange(true)) {
+    GST_ELEMENT_WARNING(self, STREAM, FAILED,
+                        ("no video for %" G_GINT64_FORMAT " ms", self->timeout_ms.load()),
+                        (nullptr));
+    gst_pad_push_event(self->srcpad, gst_event_new_eos());
+  }
+  GST_PAD_STREAM_UNLOCK(self->sinkpad);
+  gst_object_unref(parent);
+}
+
+// Runs from PLAYING until the element is back in READY or out of its pipeline; ends the stream
+// if it goes quiet while PLAYING. The thread holds a reference on the element, so the element
+// outlives it even if a push never returns.
 void watch_loop(StallGuard* self) {
+  constexpr auto kPoll = std::chrono::milliseconds(100);
   Watch* watch = self->watch;
   std::unique_lock<std::mutex> lock(watch->mutex);
   while (watch->running) {
     const auto deadline = watch->last_activity + std::chrono::milliseconds(self->timeout_ms.load());
-    if (!watch->armed || self->ended || Clock::now() < deadline) {
-      watch->wake.wait_until(lock, watch->armed && !self->ended
-                                       ? deadline
-                                       : Clock::now() + std::chrono::milliseconds(100));
-      continue;
-    }
+    const bool due = watch->armed && !self->ended && Clock::now() >= deadline;
     lock.unlock();
-    GST_PAD_STREAM_LOCK(self->sinkpad);
-    if (!self->ended.exchange(true)) {
-      GST_ELEMENT_WARNING(self, STREAM, FAILED,
-                          ("no video for %" G_GINT64_FORMAT " ms", self->timeout_ms.load()),
-                          (nullptr));
-      gst_pad_push_event(self->srcpad, gst_event_new_eos());
-    }
-    GST_PAD_STREAM_UNLOCK(self->sinkpad);
+    const bool attached = in_pipeline(self);
+    if (attached && due) end_stream(self);
     lock.lock();
+    if (!attached) break;
+    const bool counting = watch->armed && !self->ended;
+    const auto poll = Clock::now() + kPoll;
+    if (!due) watch->wake.wait_until(lock, counting ? std::min(deadline, poll) : poll);
   }
+  watch->running = false;
   lock.unlock();
   gst_object_unref(self);
 }

@@ -12,17 +12,17 @@ namespace {
 
 TEST(PinholeView, TheCentreRayIsTheBoresight) {
   const PinholeView view(30, -10, 1000, {640, 512});
-  const WorldDirection centre = view.ray(319.5, 255.5);
-  const WorldDirection boresight = direction_of(30, -10);
-  EXPECT_NEAR(centre.north, boresight.north, 1e-12);
-  EXPECT_NEAR(centre.east, boresight.east, 1e-12);
-  EXPECT_NEAR(centre.up, boresight.up, 1e-12);
+  const Vec3 centre = view.ray(319.5, 255.5);
+  const Vec3 boresight = direction(30, -10);
+  EXPECT_NEAR(centre.x, boresight.x, 1e-12);
+  EXPECT_NEAR(centre.y, boresight.y, 1e-12);
+  EXPECT_NEAR(centre.z, boresight.z, 1e-12);
 }
 
 TEST(PinholeView, YawIsPositiveToTheRightAndPitchPositiveUp) {
   const PinholeView view(0, 0, 1000, {640, 512});
-  const auto right = view.project(direction_of(5, 0));
-  const auto up = view.project(direction_of(0, 5));
+  const auto right = view.project(direction(5, 0));
+  const auto up = view.project(direction(0, 5));
   ASSERT_TRUE(right && up);
   EXPECT_NEAR(right->x, 319.5 + 1000 * std::tan(5 * M_PI / 180), 1e-6);
   EXPECT_NEAR(right->y, 255.5, 1e-6);
@@ -43,8 +43,8 @@ TEST(PinholeView, ProjectUndoesRay) {
 
 TEST(PinholeView, NothingBehindTheCamera) {
   const PinholeView view(0, 0, 1000, {640, 512});
-  EXPECT_FALSE(view.project(direction_of(180, 0)));
-  EXPECT_FALSE(view.project(direction_of(95, 0)));
+  EXPECT_FALSE(view.project(direction(180, 0)));
+  EXPECT_FALSE(view.project(direction(95, 0)));
 }
 
 TEST(PinholeView, TheHorizonRowFollowsPitch) {
@@ -54,14 +54,15 @@ TEST(PinholeView, TheHorizonRowFollowsPitch) {
   EXPECT_NEAR(down.horizon_row(), 255.5 - 1000 * std::tan(10 * M_PI / 180), 1e-9);
 }
 
-TEST(LensOptics, FocalLengthInPixelsFollowsZoomWithinItsRange) {
-  const LensOptics tele = tele_optics();
-  const double one = focal_px(tele, 1, 1920);
+TEST(FocalPx, FollowsZoomWithinTheLensRange) {
+  // sim/lens.h: telephoto 4.7 mm on 5.6 mm, 160x hybrid; thermal 13 mm on 640 x 12 um.
+  const double one = focal_px(Lens::kTele, 1, 1920);
   EXPECT_NEAR(one, 1920 * 4.7 / 5.6, 1e-9);
-  EXPECT_NEAR(focal_px(tele, 10, 1920), 10 * one, 1e-9);
-  EXPECT_NEAR(focal_px(tele, 1000, 1920), 160 * one, 1e-9);
-  EXPECT_NEAR(focal_px(tele, 0.1, 1920), one, 1e-9);
-  EXPECT_NEAR(focal_px(thermal_optics(), 1, 640), 640 * 13 / 7.68, 1e-9);
+  EXPECT_NEAR(focal_px(Lens::kTele, 10, 1920), 10 * one, 1e-9);
+  EXPECT_NEAR(focal_px(Lens::kTele, 1000, 1920), 160 * one, 1e-9);
+  EXPECT_NEAR(focal_px(Lens::kTele, 0.1, 1920), one, 1e-9);
+  EXPECT_NEAR(focal_px(Lens::kThermal, 1, 640), 640 * 13 / 7.68, 1e-9);
+  EXPECT_NEAR(focal_px(Lens::kThermal, 8, 640), 8 * 640 * 13 / 7.68, 1e-9);
 }
 
 TEST(Clip, SegmentsAreCutToTheBox) {

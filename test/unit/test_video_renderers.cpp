@@ -15,15 +15,13 @@ namespace k40t::sim::video {
 namespace {
 
 // A scene with one hot spot at heading 10, elevation -5 (a 1 deg cone at 80 degC, 20 elsewhere).
-double hot_spot(const WorldDirection& d) {
-  const WorldDirection spot = direction_of(10, -5);
-  const double cosine = d.north * spot.north + d.east * spot.east + d.up * spot.up;
-  return cosine > std::cos(1.0 * M_PI / 180) ? 80 : 20;
+double hot_spot(const Vec3& d) {
+  return dot(d, direction(10, -5)) > std::cos(1.0 * M_PI / 180) ? 80 : 20;
 }
 
 // The spot on a smooth left-to-right ramp (10..30 degC), so every palette entry is in use.
-double spot_on_a_ramp(const WorldDirection& d) {
-  return std::max(hot_spot(d), 20 + 10 * d.east / std::hypot(d.north, d.east));
+double spot_on_a_ramp(const Vec3& d) {
+  return std::max(hot_spot(d), 20 + 10 * d.y / std::hypot(d.x, d.y));
 }
 
 VideoSnapshot looking_at_the_spot() {
@@ -96,7 +94,7 @@ TEST(ThermalRenderer, TurningTheGimbalMovesTheSpot) {
   renderer.render(s);
   cv::Point hottest;
   cv::minMaxLoc(renderer.temperatures(), nullptr, nullptr, nullptr, &hottest);
-  const double expected_x = 319.5 + focal_px(thermal_optics(), 1, 640) * std::tan(5 * M_PI / 180);
+  const double expected_x = 319.5 + focal_px(Lens::kThermal, 1, 640) * std::tan(5 * M_PI / 180);
   EXPECT_NEAR(hottest.x, expected_x, 8);
 }
 
@@ -120,7 +118,7 @@ TEST(VisibleRenderer, TurningTheGimbalShiftsThePicture) {
   // The scene moves left by focal * tan(2 deg) pixels. Compared on horizontal gradients of the
   // picture's middle, so that neither the row-wise sky/ground shading nor the fixed OSD text
   // (both the same in the two images) pulls the estimate to zero.
-  const double shift = focal_px(tele_optics(), 1, 1280) * std::tan(2 * M_PI / 180);
+  const double shift = focal_px(Lens::kTele, 1, 1280) * std::tan(2 * M_PI / 180);
   auto edges = [](const cv::Mat& bgr) {
     cv::Mat grey, dx;
     cv::cvtColor(bgr(cv::Rect(0, 100, 1280, 512)), grey, cv::COLOR_BGR2GRAY);

@@ -1,6 +1,8 @@
-// k40t_video_sim: the simulated pod's RTSP video on its own, without the pod model — for tests,
-// benchmarks and trying a video client. What it shows is set by options and by control lines on
-// stdin (snapshot_commands.h: mode, palette, zoom, thermal_zoom, gimbal, resolution).
+// k40t_video_sim: the simulated pod's RTSP video on its own, without the pod model (the scene is
+// the model's default world) — for tests, benchmarks and trying a video client. k40t_sim
+// --rtsp-port serves the same stream driven by the live pod model. What it shows is set by options
+// and by control lines on stdin (snapshot_commands.h: mode, palette, zoom, thermal_zoom, gimbal,
+// resolution).
 //
 //   k40t_video_sim --port 8554 --mode 0 --palette 5
 //   echo "zoom 10" > the process's stdin
@@ -12,9 +14,9 @@
 #include <thread>
 #include <vector>
 
-#include "demo_scene.h"
 #include "k40t_driver/sim/video/rtsp_stream_server.h"
 #include "k40t_driver/sim/video/snapshot_commands.h"
+#include "k40t_driver/sim/world.h"
 
 namespace {
 
@@ -107,7 +109,11 @@ int main(int argc, char** argv) {
 
   std::mutex mutex;
   VideoSnapshot snapshot;
-  snapshot.temperature = &k40t::tools::demo_scene_temperature;
+  // The pod model's default world (hot object, cold pond, ground, sky), without the pod model.
+  const k40t::sim::World world;
+  snapshot.temperature = [world](const k40t::sim::Vec3& d) {
+    return world.trace(d).temperature_degC;
+  };
   for (const std::string& line : options.commands) {
     if (k40t::Status s = k40t::sim::video::apply_command(line, snapshot); !s) {
       std::cerr << "k40t_video_sim: " << s.message() << "\n";

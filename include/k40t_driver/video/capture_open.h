@@ -10,7 +10,9 @@
 
 namespace k40t::video {
 
-// An open capture, or an error naming the URL and the back-end. FFmpeg's options travel through
+// An open capture, or an error naming the URL and the back-end. In the low-latency configuration
+// the server is asked first (rtsp_probe.h), so an absent pod costs no OpenCV pipeline. FFmpeg's
+// options travel through
 // the process-wide OPENCV_FFMPEG_CAPTURE_OPTIONS variable: it is set for the duration of the open
 // only, under a lock, and restored afterwards.
 Result<std::shared_ptr<cv::VideoCapture>> open_capture(const CaptureOptions& options);

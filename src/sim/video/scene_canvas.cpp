@@ -18,18 +18,18 @@ cv::Point to_pixel(const cv::Point2d& p) {
   return {static_cast<int>(std::lround(p.x)), static_cast<int>(std::lround(p.y))};
 }
 
-cv::Vec3d vec(const WorldDirection& d) {
-  return {d.north, d.east, d.up};
+cv::Vec3d vec(const Vec3& d) {
+  return {d.x, d.y, d.z};
 }
 }  // namespace
 
 SceneCanvas::SceneCanvas(cv::Mat& image, const PinholeView& view)
     : image_(image), view_(view), bounds_(-2, -2, image.cols + 4, image.rows + 4) {}
 
-void SceneCanvas::polyline(const std::vector<WorldDirection>& points, const cv::Scalar& colour,
+void SceneCanvas::polyline(const std::vector<Vec3>& points, const cv::Scalar& colour,
                            int thickness_px) {
   std::optional<cv::Point2d> previous;
-  for (const WorldDirection& d : points) {
+  for (const Vec3& d : points) {
     const std::optional<cv::Point2d> p = view_.project(d);
     if (p && previous) {
       if (auto piece = clip_segment(*previous, *p, bounds_)) {
@@ -41,9 +41,9 @@ void SceneCanvas::polyline(const std::vector<WorldDirection>& points, const cv::
   }
 }
 
-void SceneCanvas::fill(const std::vector<WorldDirection>& corners, const cv::Scalar& colour) {
+void SceneCanvas::fill(const std::vector<Vec3>& corners, const cv::Scalar& colour) {
   std::vector<cv::Point2d> projected;
-  for (const WorldDirection& d : corners) {
+  for (const Vec3& d : corners) {
     const std::optional<cv::Point2d> p = view_.project(d);
     if (!p) return;
     projected.push_back(*p);
@@ -55,23 +55,23 @@ void SceneCanvas::fill(const std::vector<WorldDirection>& corners, const cv::Sca
   cv::fillPoly(image_, std::vector<std::vector<cv::Point>>{pixels}, colour, cv::LINE_AA);
 }
 
-void SceneCanvas::disc(const WorldDirection& centre, double radius_deg, const cv::Scalar& colour) {
+void SceneCanvas::disc(const Vec3& centre, double radius_deg, const cv::Scalar& colour) {
   const cv::Vec3d c = vec(centre);
   // Two unit vectors perpendicular to the centre direction span the disc's rim.
   const cv::Vec3d helper = std::abs(c[2]) < 0.9 ? cv::Vec3d(0, 0, 1) : cv::Vec3d(1, 0, 0);
   const cv::Vec3d e1 = cv::normalize(c.cross(helper));
   const cv::Vec3d e2 = c.cross(e1);
   const double r = radius_deg * kDegToRad;
-  std::vector<WorldDirection> rim;
+  std::vector<Vec3> rim;
   for (int i = 0; i < kDiscSegments; ++i) {
     const double t = 2 * 3.14159265358979323846 * i / kDiscSegments;
     const cv::Vec3d p = c * std::cos(r) + (e1 * std::cos(t) + e2 * std::sin(t)) * std::sin(r);
-    rim.push_back({p[0], p[1], p[2]});
+    rim.push_back(Vec3{p[0], p[1], p[2]});
   }
   fill(rim, colour);
 }
 
-void SceneCanvas::label(const WorldDirection& anchor, const std::string& text, double height_deg,
+void SceneCanvas::label(const Vec3& anchor, const std::string& text, double height_deg,
                         const cv::Scalar& colour) {
   const std::optional<cv::Point2d> p = view_.project(anchor);
   if (!p) return;

@@ -18,7 +18,7 @@ void ThermalRenderer::sample(const VideoSnapshot& snapshot) {
   const cv::Size size(kThermalWidth, kThermalHeight);
   const int zoom = std::clamp(snapshot.thermal_zoom, 1, 8);
   const PinholeView view(snapshot.yaw_deg, snapshot.pitch_deg,
-                         focal_px(thermal_optics(), zoom, size.width), size);
+                         focal_px(Lens::kThermal, zoom, size.width), size);
   const int step = kSampleStepPx;
   cv::Mat coarse(size.height / step, size.width / step, CV_32F);
   for (int row = 0; row < coarse.rows; ++row) {

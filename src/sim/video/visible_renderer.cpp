@@ -31,7 +31,7 @@ const cv::Scalar kWhite(255, 255, 255);
 void draw_sky_and_ground(cv::Mat& image, const PinholeView& view) {
   const double cx = (image.cols - 1) / 2.0;
   for (int row = 0; row < image.rows; ++row) {
-    const double up = view.ray(cx, row).up;  // sine of the elevation
+    const double up = view.ray(cx, row).z;  // sine of the elevation
     const cv::Scalar colour = up >= 0 ? mix(kSkyHorizon, kSkyZenith, std::sqrt(up))
                                       : mix(kGroundHorizon, kGroundNadir, std::sqrt(-up));
     image.row(row).setTo(colour);
@@ -40,19 +40,19 @@ void draw_sky_and_ground(cv::Mat& image, const PinholeView& view) {
 
 void draw_heading_grid(SceneCanvas& canvas) {
   for (int heading = 0; heading < 360; heading += 10) {
-    std::vector<WorldDirection> line;
+    std::vector<Vec3> line;
     for (double elevation = -0.05; elevation > -89; elevation -= 5) {
-      line.push_back(direction_of(heading, elevation));
+      line.push_back(direction(heading, elevation));
     }
     canvas.polyline(line, kGridLine, heading % 90 == 0 ? 3 : 1);
     char text[8];
     std::snprintf(text, sizeof(text), "%03d", heading);
-    canvas.label(direction_of(heading + 0.2, 0.4), text, 0.8, kBlack);
+    canvas.label(direction(heading + 0.2, 0.4), text, 0.8, kBlack);
   }
   for (double elevation : {-2.0, -5.0, -10.0, -20.0, -30.0, -45.0, -60.0}) {
-    std::vector<WorldDirection> circle;
+    std::vector<Vec3> circle;
     for (double heading = 0; heading <= 360; heading += 0.5) {
-      circle.push_back(direction_of(heading, elevation));
+      circle.push_back(direction(heading, elevation));
     }
     canvas.polyline(circle, kGridLine, 1);
   }
@@ -65,15 +65,15 @@ void draw_towers(SceneCanvas& canvas) {
     const double heading = i * 30 + 5;
     const double width = 2.0;
     const double height = 1.5 + (i % 3) * 1.5;
-    canvas.fill({direction_of(heading, -0.3), direction_of(heading + width, -0.3),
-                 direction_of(heading + width, height), direction_of(heading, height)},
+    canvas.fill({direction(heading, -0.3), direction(heading + width, -0.3),
+                 direction(heading + width, height), direction(heading, height)},
                 colours[i % 4]);
     const double w = width / 10;
     const double x = heading + width / 2 - w / 2;
     const double y = height * 0.7;
-    canvas.fill({direction_of(x, y), direction_of(x + w, y), direction_of(x + w, y + w),
-                 direction_of(x, y + w)},
-                kWhite);
+    canvas.fill(
+        {direction(x, y), direction(x + w, y), direction(x + w, y + w), direction(x, y + w)},
+        kWhite);
   }
 }
 
@@ -81,7 +81,7 @@ void draw_towers(SceneCanvas& canvas) {
 // halving from 1.6 deg down to 0.0125 deg (1.6 deg is ~90 px at 1x, 0.0125 deg ~90 px at 128x).
 void draw_targets(SceneCanvas& canvas) {
   for (int heading = 0; heading < 360; heading += 90) {
-    const WorldDirection centre = direction_of(heading, -4);
+    const Vec3 centre = direction(heading, -4);
     bool white = true;
     for (double radius = 1.6; radius > 0.01; radius /= 2) {
       canvas.disc(centre, radius, white ? kWhite : kBlack);
@@ -108,7 +108,7 @@ const cv::Mat& VisibleRenderer::render(const VideoSnapshot& snapshot, cv::Size s
   if (valid_ && view == view_) return image_;
   image_.create(size, CV_8UC3);
   const PinholeView pinhole(snapshot.yaw_deg, snapshot.pitch_deg,
-                            focal_px(tele_optics(), snapshot.hybrid_zoom, size.width), size);
+                            focal_px(Lens::kTele, snapshot.hybrid_zoom, size.width), size);
   draw_sky_and_ground(image_, pinhole);
   SceneCanvas canvas(image_, pinhole);
   draw_heading_grid(canvas);

@@ -16,15 +16,14 @@ class SceneCanvas {
   SceneCanvas(cv::Mat& image, const PinholeView& view);
 
   // A line through `points` (pieces behind the camera are left out).
-  void polyline(const std::vector<WorldDirection>& points, const cv::Scalar& colour,
-                int thickness_px);
+  void polyline(const std::vector<Vec3>& points, const cv::Scalar& colour, int thickness_px);
   // A filled shape; drawn only when every corner is in front of the camera.
-  void fill(const std::vector<WorldDirection>& corners, const cv::Scalar& colour);
+  void fill(const std::vector<Vec3>& corners, const cv::Scalar& colour);
   // A disc of angular radius `radius_deg` around `centre`.
-  void disc(const WorldDirection& centre, double radius_deg, const cv::Scalar& colour);
+  void disc(const Vec3& centre, double radius_deg, const cv::Scalar& colour);
   // Text whose lower-left corner is at `anchor`, `height_deg` tall; skipped when too small to
   // read or larger than the image.
-  void label(const WorldDirection& anchor, const std::string& text, double height_deg,
+  void label(const Vec3& anchor, const std::string& text, double height_deg,
              const cv::Scalar& colour);
 
   const PinholeView& view() const { return view_; }

@@ -6,21 +6,17 @@
 #include <cstdint>
 #include <functional>
 
+#include "k40t_driver/sim/geometry.h"
+
 namespace k40t::sim::video {
 
 // Content of the stream (0x000318 / 0x000003 byte 4).
 enum class ImageMode : uint8_t { kThermal = 0, kVisible = 5, kVisibleAlt = 6, kSplit = 7 };
 bool is_image_mode(int code);
 
-// A unit direction in the simulator's world frame: x north, y east, z up (sim/geometry.h).
-struct WorldDirection {
-  double north = 1;
-  double east = 0;
-  double up = 0;
-};
-
-// Temperature (degC) of whatever a ray from the pod along `direction` meets first.
-using TemperatureSampler = std::function<double(const WorldDirection& direction)>;
+// Temperature (degC) of whatever a ray from the pod along the unit vector `direction` (world
+// frame of sim/geometry.h: x north, y east, z up) meets first — World::trace() for the pod model.
+using TemperatureSampler = std::function<double(const Vec3& direction)>;
 
 // Stream resolution of the visible and split-screen images (0x000003 byte 2, NOTES A6). The
 // thermal image is always streamed at the core's 640x512.
