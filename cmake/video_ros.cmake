@@ -8,3 +8,8 @@ target_include_directories(k40t_ros SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
 target_link_libraries(k40t_ros PUBLIC k40t_video ${catkin_LIBRARIES})
 set(catkin_INCLUDE_DIRS ${K40T_SAVED_CATKIN_INCLUDE_DIRS})
 set(catkin_LIBRARIES ${K40T_SAVED_CATKIN_LIBRARIES})
+
+# The video benchmark's probe nodelet (bench/video/, run by bench/video/run_video_bench.sh; listed
+# in nodelet_plugins.xml): it reads the simulator's frame stamps.
+add_library(k40t_video_bench SHARED ${PROJECT_SOURCE_DIR}/bench/video/video_latency_probe.cpp)
+target_link_libraries(k40t_video_bench PUBLIC k40t_ros k40t_sim_model)

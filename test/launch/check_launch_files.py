@@ -34,6 +34,7 @@ def launch_files():
     files = sorted(glob.glob(os.path.join(ROOT, "launch", "*.launch")))
     files += sorted(glob.glob(os.path.join(ROOT, "test", "ros", "*.test")))
     files += sorted(glob.glob(os.path.join(ROOT, "bench", "ros", "*.launch")))
+    files += sorted(glob.glob(os.path.join(ROOT, "bench", "video", "*.launch")))
     return files
 
 

@@ -55,11 +55,15 @@ TEST(StampEstimator, WithoutPresentationTimesItSubtractsTheLatency) {
   StampEstimator e(o);
   EXPECT_EQ(e.stamp(1'000'000, std::nullopt), 950'000);
   EXPECT_EQ(e.stamp(1'040'000, std::nullopt), 990'000);
+  // Off by default: presentation times given are not used.
+  EXPECT_EQ(e.stamp(2'000'000, 10.0), 1'950'000);
+  EXPECT_EQ(e.stamp(2'050'000, 10.033), 2'000'000);
 }
 
 TEST(StampEstimator, PresentationTimesTakeOutReceptionJitter) {
   StampOptions o;
   o.latency_s = 0.01;
+  o.use_presentation_time = true;
   StampEstimator e(o);
   // Frames every 33.333 ms; reception delayed by 5, 20, 5, 12 ms.
   const double pts[] = {1000, 1033.333, 1066.667, 1100};
@@ -78,7 +82,9 @@ TEST(StampEstimator, PresentationTimesTakeOutReceptionJitter) {
 }
 
 TEST(StampEstimator, APresentationTimeGoingBackRestartsTheMapping) {
-  StampEstimator e;
+  StampOptions o;
+  o.use_presentation_time = true;
+  StampEstimator e(o);
   e.stamp(10'000'000, 100.0);                   // offset 9.9 s
   const int64_t s = e.stamp(20'000'000, 50.0);  // a new stream: offset 19.95 s
   EXPECT_EQ(s, 20'000'000);

@@ -6,6 +6,7 @@
 //
 //   k40t_video_sim --port 8554 --mode 0 --palette 5
 //   echo "zoom 10" > the process's stdin
+#include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <iostream>
@@ -37,11 +38,13 @@ const char kUsage[] =
     "  --thermal-zoom N   thermal digital zoom 1..8\n"
     "  --resolution R     1080 or 720\n"
     "  --gimbal Y,P       boresight yaw and pitch in degrees\n"
+    "  --sweep D          turn the yaw at D deg/s (every frame differs, like a moving camera)\n"
     "Control lines on stdin take the same settings: 'mode 0', 'palette 3', 'zoom 12.5',\n"
     "'thermal_zoom 2', 'gimbal 30 -10', 'resolution 720'.\n";
 
 struct Options {
   RtspServerOptions server;
+  double sweep_deg_s = 0;
   std::vector<std::string> commands;  // initial settings, as control lines
 };
 
@@ -85,6 +88,13 @@ Options parse(int argc, char** argv) {
       options.server.bitrate_kbps = parse_int(option, value);
     } else if (option == "--key-interval") {
       options.server.key_frame_interval = parse_int(option, value);
+    } else if (option == "--sweep") {
+      try {
+        options.sweep_deg_s = std::stod(value);
+      } catch (const std::exception&) {
+        std::cerr << "k40t_video_sim: --sweep expects degrees per second, got '" << value << "'\n";
+        std::exit(2);
+      }
     } else if (option == "--gimbal") {
       std::string line = "gimbal " + value;
       for (char& c : line) c = c == ',' ? ' ' : c;
@@ -128,9 +138,14 @@ int main(int argc, char** argv) {
   sigaddset(&stop_signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
+  const auto started = std::chrono::steady_clock::now();
   auto server = k40t::sim::video::RtspStreamServer::start(options.server, [&] {
     std::lock_guard<std::mutex> lock(mutex);
-    return snapshot;
+    VideoSnapshot now = snapshot;
+    const double elapsed_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    now.yaw_deg += options.sweep_deg_s * elapsed_s;
+    return now;
   });
   if (!server) {
     std::cerr << "k40t_video_sim: " << server.error() << "\n";

@@ -22,8 +22,8 @@ namespace k40t::video {
 
 struct StampOptions {
   double latency_s = 0.0;
-  double window_s = 10.0;
-  bool use_presentation_time = true;
+  double window_s = 3.0;
+  bool use_presentation_time = false;  // off by default: see config/video.yaml
   double max_pts_jump_s = 2.0;  // larger steps between frames restart the mapping
 };
 

@@ -44,7 +44,7 @@ Result<VideoConfig> read_video_config(const ros::NodeHandle& private_nh) {
   if (Status s = video::validate(capture); !s) p.fail("url", s.message());
 
   c.stamps.latency_s = p.number("latency", 0.075, 0, 5);
-  c.stamps.use_presentation_time = p.get("use_presentation_time", true);
+  c.stamps.use_presentation_time = p.get("use_presentation_time", false);
   c.stamps.window_s = p.number("stamp_window", c.stamps.window_s, 0.1, 600);
 
   c.frame_prefix = p.get<std::string>("frame_prefix", c.frame_prefix);
