@@ -26,8 +26,13 @@ for program in "${programs[@]}"; do
   "$program" --benchmark_out="$out/$name.json" --benchmark_out_format=json "$@"
   /usr/bin/python3 - "$out/$name.json" <<'PY'
 import json, re, sys
-results = [b for b in json.load(open(sys.argv[1]))["benchmarks"] if b.get("run_type") == "iteration"]
-rate = {b["name"]: b.get("bytes_per_second") for b in results}
+# Plain runs, or with --benchmark_repetitions the means (named without their "_mean").
+rate = {}
+for b in json.load(open(sys.argv[1]))["benchmarks"]:
+    if b.get("run_type") == "aggregate" and b.get("aggregate_name") == "mean":
+        rate[b["run_name"]] = b.get("bytes_per_second")
+    elif b.get("run_type") == "iteration" and b.get("repetitions", 1) <= 1:
+        rate[b["name"]] = b.get("bytes_per_second")
 for name, baseline in rate.items():
     if "Baseline" not in name or not baseline:
         continue

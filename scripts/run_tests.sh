@@ -51,11 +51,15 @@ if has_tier ros; then
     for t in "${tests[@]}"; do
       name="$(basename "$t" .test)"
       echo "-- $name"
-      (source "$K40T_ROOT/scripts/ros_env.sh" && export ROS_TEST_RESULTS_DIR="$results/ros" && \
-        timeout 600 rostest --text k40t_driver "$(basename "$t")" > "$results/ros-$name.log" 2>&1)
+      # One results directory per .test file: rostest reuses file names across runs. No --text:
+      # with it rostest writes no JUnit XML for the Python test nodes.
+      (source "$K40T_ROOT/scripts/ros_env.sh" && export ROS_TEST_RESULTS_DIR="$results/ros/$name" && \
+        timeout 600 rostest k40t_driver "$(basename "$t")" > "$results/ros-$name.log" 2>&1)
       rc=$?
-      grep -E "^\s*(SUMMARY|\* RESULT|\* TESTS|\* ERRORS|\* FAILURES)" "$results/ros-$name.log" | head -5
-      if [ $rc -ne 0 ] && ! grep -rqs "$name" "$results/ros" 2>/dev/null; then
+      grep -E "^\s*(\* RESULT|\* TESTS|\* ERRORS|\* FAILURES)" "$results/ros-$name.log" | head -5
+      # A non-zero exit must show up as a failure even when no XML recorded one (a crashed node,
+      # a timeout, a test that never started).
+      if [ $rc -ne 0 ] && ! grep -rqsE "<(failure|error)" "$results/ros/$name" 2>/dev/null; then
         failed_steps+=("rostest $name (exit $rc, see $results/ros-$name.log)")
       fi
     done

@@ -181,7 +181,16 @@ std::vector<SettingBinding> make_bindings() {
 }  // namespace
 
 const std::vector<SettingBinding>& setting_bindings() {
-  static const std::vector<SettingBinding> bindings = make_bindings();
+  static const std::vector<SettingBinding> bindings = [] {
+    std::vector<SettingBinding> b = make_bindings();
+    // What no report (0x000001, 0x000003, 0x000100, 0x000200) carries.
+    for (SettingBinding& binding : b) {
+      for (const char* write_only : {"dial_speed", "periodic_ranging", "thermal_overlay"}) {
+        if (binding.name == write_only) binding.readable = false;
+      }
+    }
+    return b;
+  }();
   return bindings;
 }
 

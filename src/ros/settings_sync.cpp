@@ -44,6 +44,7 @@ void SettingsSync::on_reconfigure(Config& config, uint32_t) {
       ++state_.changes_applied;
       state_.last_refusal.clear();
       binding.copy(current_, config);
+      set_by_user_.insert(binding.name);
     } else {
       ++state_.changes_refused;
       state_.last_refusal = binding.name + ": " + result.message;
@@ -83,6 +84,11 @@ void SettingsSync::read_from_pod() {
     if (gimbal) absorb(config, *gimbal);
     current_ = config;
     server_->updateConfig(config);
+    for (const SettingBinding& binding : setting_bindings()) {
+      if (binding.readable || set_by_user_.count(binding.name) == 0) continue;
+      const session::AckResult result = binding.apply(driver_, current_);
+      if (!result.ok()) message += "; " + binding.name + " not restored: " + result.message;
+    }
   }
   std::lock_guard<std::mutex> lock(mutex_);
   ++state_.reads;

@@ -57,7 +57,7 @@ class Faults(unittest.TestCase):
 
     def outage(self, command, seconds):
         """Runs the fault; returns (seconds to ERROR, seconds from the pod's return to telemetry)."""
-        start = time.time()
+        start = self.outage_start = time.time()
         self.sim.ok("%s %g" % (command, seconds))
         returned = start + seconds
         self.assertTrue(wait_until(lambda: self.diagnostics.first_level_since("link", ERROR, start), 3.0),
@@ -73,6 +73,11 @@ class Faults(unittest.TestCase):
     def test_silent_pod_is_error_within_one_second(self):
         to_error, to_back = self.outage("silence", 3.0)
         self.assertLessEqual(to_error, 1.0, "ERROR %.2f s after the pod went silent" % to_error)
+        # The 10 Hz report's own FrequencyStatus says so too, as fast.
+        report = "gimbal attitude report (0x000002)"
+        report_error = self.diagnostics.first_level_since(report, ERROR, self.outage_start)
+        self.assertIsNotNone(report_error, "%s never ERROR while the pod was silent" % report)
+        self.assertLessEqual(report_error - self.outage_start, 1.0)
         self.assertLessEqual(to_back, 2.0, "telemetry back %.2f s after the pod" % to_back)
         self.assertTrue(self.diagnostics.wait_level("gimbal attitude report (0x000002)", OK, 5.0))
 

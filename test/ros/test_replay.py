@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Replay: raw frames recorded from the simulator into a bag, played back through a second
 driver in replay mode, regenerate the decoded topics message by message and bit for bit
-(serialized bytes equal, recorded stamps included)."""
+(serialized bytes equal, recorded stamps included; only header.seq, which roscpp assigns per
+publisher, is left out)."""
 import io
 import os
 import subprocess
@@ -31,6 +32,9 @@ DECODED = {
 
 
 def serialized(msg):
+    """The message's bytes, with header.seq zeroed: roscpp numbers the messages of each publisher
+    itself (the replay driver's publishers start at 0), so seq is not part of what is regenerated."""
+    msg.header.seq = 0
     buffer = io.BytesIO()
     msg.serialize(buffer)
     return buffer.getvalue()
@@ -79,7 +83,8 @@ class Replay(unittest.TestCase):
 
         replayed = {topic: Recorder(REPLAY + "/" + topic, cls) for topic, cls in DECODED.items()}
         time.sleep(1.0)  # subscriptions connect before the first frame is played
-        play = subprocess.run(["rosbag", "play", "--quiet", "--topics", LIVE + "/raw/rx", "--bags=" + self.bag_path,
+        # --delay: rosbag advertises, waits for the replay driver to connect, then plays.
+        play = subprocess.run(["rosbag", "play", "--quiet", "--delay=1", "--topics", LIVE + "/raw/rx", "--bags=" + self.bag_path,
                                LIVE + "/raw/rx:=" + REPLAY + "/raw/rx"],
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=60)
         self.assertEqual(play.returncode, 0, play.stdout.decode(errors="replace"))

@@ -191,11 +191,15 @@ class Telemetry(unittest.TestCase):
         self.assertIsNotNone(none, "no laser/target answer while looking at the horizon")
         # Looking down at the ground 30 m below, the target is a few tens of metres away.
         self.assertTrue(service("gimbal/set_angle", SetAngle)(pitch=0.8, yaw=0.0).success)
-        target = targets.wait_for_match(lambda m: m.status.status == NavSatStatus.STATUS_FIX, 15.0, since=time.time())
+        joints = self.topics["joint_states"]
+        self.assertTrue(wait_until(lambda: abs(joints.latest().position[2] - 0.8) < 0.01, 10.0), "gimbal not down")
+        arrived = time.time() + 0.1  # a request sent once the gimbal is there
+        target = targets.wait_for_match(lambda m: m.status.status == NavSatStatus.STATUS_FIX, 15.0, since=arrived + 1.0)
         self.assertIsNotNone(target, "no laser/target with a position after looking down")
         self.assertEqual(target.header.frame_id, "k40t_laser_frame")
-        self.assertAlmostEqual(target.latitude, fix.latitude, delta=0.001)
-        self.assertAlmostEqual(target.longitude, fix.longitude, delta=0.001)
+        # 30 m below at 0.8 rad down: about 29 m away horizontally (0.0004 deg at this latitude).
+        self.assertAlmostEqual(target.latitude, fix.latitude, delta=0.0006)
+        self.assertAlmostEqual(target.longitude, fix.longitude, delta=0.0006)
         self.assertLess(target.altitude, fix.altitude)  # the ground is below the pod
         self.assertTrue(service("gimbal/center", Trigger)().success)
         targets.close()

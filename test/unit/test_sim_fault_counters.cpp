@@ -8,6 +8,7 @@
 
 #include "k40t_driver/protocol/messages/camera.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
+#include "k40t_driver/protocol/messages/thermal.h"
 #include "sim_link_harness.h"
 
 namespace k40t::sim {
@@ -95,6 +96,9 @@ TEST(SimFaultCounters, DelayedAcksShowAsRetriesAndLateAcks) {
 
 TEST(SimFaultCounters, SequenceJumpShowsAsOneGapPerSource) {
   SimLink link;
+  // Both sources must have a sequence history before the jump, or a source first heard after it
+  // shows no gap (the camera's first 5 Hz report can lag the gimbal's on a loaded machine).
+  ASSERT_TRUE(SimLink::wait_for([&] { return link.count(p::ThermalStatus::kId) > 0; }));
   const p::ParserStats before = parser_of(link);
   link.server().faults().jump_sequence(7);
   // The gimbal (0x03) and the camera (0x04) number their frames separately: one gap each.

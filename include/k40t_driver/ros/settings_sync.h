@@ -5,7 +5,8 @@
 //     publishes, and the refusal is logged and kept for diagnostics;
 //   - on every "pod online" event (connect, reconnect, pod back after silence) read_from_pod()
 //     reads 0x000100 and 0x000200 and the next camera (0x000003) and gimbal (0x000001) status
-//     reports, and publishes the result as the current configuration.
+//     reports, and publishes the result as the current configuration; settings the pod cannot
+//     report and the user has set are sent again (a rebooted pod resumes periodic ranging).
 // The binding of each parameter to its request and read-back lives in settings_bindings.cpp.
 #pragma once
 
@@ -14,6 +15,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -37,6 +39,9 @@ struct SettingBinding {
   std::function<bool(const Config&, const Config&)> differs;           // any of its fields changed
   std::function<void(Config& to, const Config& from)> copy;            // copy its fields
   std::function<session::AckResult(PodDriver&, const Config&)> apply;  // send the request
+  // false: the pod cannot report it (dial speeds, periodic ranging, overlay); a value set through
+  // reconfigure is sent again after each read-back, so that a rebooted pod resumes it.
+  bool readable = true;
 };
 const std::vector<SettingBinding>& setting_bindings();
 
@@ -71,6 +76,7 @@ class SettingsSync {
   std::unique_ptr<dynamic_reconfigure::Server<Config>> server_;
   Config current_;
   bool initialised_ = false;
+  std::set<std::string> set_by_user_;  // bindings applied through reconfigure (server mutex)
 
   mutable std::mutex mutex_;  // guards what follows; never held while waiting for the pod
   std::condition_variable reports_arrived_;

@@ -1,0 +1,69 @@
+// APP function command set 0x02 (protocol document section 3.2): transparent data between the
+// mobile app (MSDK) and the payload, DJI Pilot floating-window messages, the text input box.
+// The widget commands 0x04..0x08 are in widgets.h.
+#pragma once
+
+#include "k40t_driver/psdk/command.h"
+
+namespace k40t::psdk {
+
+constexpr size_t kMaxTransparentFromMobile = 32;
+constexpr size_t kMaxTransparentToMobile = 128;
+constexpr size_t kMaxFloatingWindowData = 128;  // text + its terminating NUL
+constexpr size_t kTextInputNameSize = 32;
+
+// 3.2.1: 1..32 bytes from the mobile app. No ACK.
+struct TransparentFromMobile : Command<CommandSet::kAppFunction, 0x01, Sender::kAdapter, NoAck>,
+                               OpaqueData<1, kMaxTransparentFromMobile> {
+  static constexpr const char* kName = "transparent_from_mobile";
+  static constexpr const char* kSection = "3.2.1";
+};
+
+// 3.2.2: 1..128 bytes to the mobile app. No ACK. Encrypted by the payload (psdk_crc.md).
+struct TransparentToMobile : Command<CommandSet::kAppFunction, 0x02, Sender::kPayload, NoAck>,
+                             OpaqueData<1, kMaxTransparentToMobile> {
+  static constexpr const char* kName = "transparent_to_mobile";
+  static constexpr const char* kSection = "3.2.2";
+};
+
+// 3.2.3: a UTF-8 line for DJI Pilot's floating window; on the wire the text and a terminating
+// NUL, 1..128 bytes in all. No ACK. Encrypted by the payload (psdk_crc.md).
+struct FloatingWindowMessage : Command<CommandSet::kAppFunction, 0x03, Sender::kPayload, NoAck> {
+  static constexpr const char* kName = "floating_window_message";
+  static constexpr const char* kSection = "3.2.3";
+  static constexpr size_t kMinBodySize = 1;
+  static constexpr size_t kMaxBodySize = kMaxFloatingWindowData;
+  std::string text;  // at most 127 bytes, no NUL
+
+  Status validate() const { return protocol::check_text("text", text, kMaxFloatingWindowData - 1); }
+  void encode(ByteWriter& w) const { w.text(text, text.size() + 1); }
+  Status decode(ByteReader& r) {
+    text = r.text(r.remaining());  // up to the first NUL
+    return Status::ok();
+  }
+  void describe(FieldSink& sink) const { sink.text("text", text); }
+};
+
+// 3.2.9 ACK.
+struct TextInputBoxAck : Reply<CommandSet::kAppFunction, 0x09, Sender::kPayload> {
+  static constexpr const char* kName = "get_text_input_box_ack";
+  static constexpr const char* kSection = "3.2.9";
+  bool display = false;
+  std::string name;         // at most 31 bytes + NUL
+  std::string description;  // at most 31 bytes + NUL
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("display", s.display, wire::u8);
+    v("name", s.name, wire::Text{kTextInputNameSize});
+    v("description", s.description, wire::Text{kTextInputNameSize});
+  }
+};
+
+// 3.2.9: parameters of DJI Pilot's text input box.
+struct GetTextInputBox : Command<CommandSet::kAppFunction, 0x09, Sender::kAdapter, TextInputBoxAck>,
+                         NoData {
+  static constexpr const char* kName = "get_text_input_box";
+  static constexpr const char* kSection = "3.2.9";
+};
+
+}  // namespace k40t::psdk

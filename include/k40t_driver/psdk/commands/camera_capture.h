@@ -1,0 +1,270 @@
+// Camera command set 0x04, capture and storage (protocol document sections 3.4.1 to 3.4.10 and
+// 3.4.33): work mode, photos, video, SD card, capabilities. The adapter (DJI Pilot) asks, the
+// payload answers. A "set" command and the ACK of its "get" share one value struct (mixin).
+#pragma once
+
+#include "k40t_driver/psdk/command.h"
+
+namespace k40t::psdk {
+
+enum class CameraWorkMode : uint8_t { kShootPhoto = 0, kRecordVideo = 1 };
+const char* to_string(CameraWorkMode mode);
+
+enum class ShootPhotoAction : uint8_t { kStop = 0, kStart = 1 };  // stop = end interval shooting
+const char* to_string(ShootPhotoAction action);
+
+enum class ShootPhotoType : uint8_t { kSingle = 1, kBurst = 4, kInterval = 6 };
+const char* to_string(ShootPhotoType type);
+
+enum class RecordAction : uint8_t { kStop = 0, kStart = 1 };
+const char* to_string(RecordAction action);
+
+constexpr uint8_t kIntervalShootUntilStopped = 255;
+
+struct CameraWorkModeValue {
+  CameraWorkMode mode = CameraWorkMode::kShootPhoto;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("mode", s.mode, wire::u8);
+  }
+};
+
+// 3.4.1.
+struct SetCameraWorkMode : Command<CommandSet::kCamera, 0x01, Sender::kAdapter, PlainAck>,
+                           CameraWorkModeValue {
+  static constexpr const char* kName = "set_camera_work_mode";
+  static constexpr const char* kSection = "3.4.1";
+};
+
+// 3.4.2 ACK.
+struct CameraWorkModeAck : Reply<CommandSet::kCamera, 0x02, Sender::kPayload>, CameraWorkModeValue {
+  static constexpr const char* kName = "get_camera_work_mode_ack";
+  static constexpr const char* kSection = "3.4.2";
+};
+
+// 3.4.2.
+struct GetCameraWorkMode : Command<CommandSet::kCamera, 0x02, Sender::kAdapter, CameraWorkModeAck>,
+                           NoData {
+  static constexpr const char* kName = "get_camera_work_mode";
+  static constexpr const char* kSection = "3.4.2";
+};
+
+// 3.4.3: takes effect in shoot-photo mode only.
+struct ShootPhoto : Command<CommandSet::kCamera, 0x03, Sender::kAdapter, PlainAck> {
+  static constexpr const char* kName = "shoot_photo";
+  static constexpr const char* kSection = "3.4.3";
+  ShootPhotoAction action = ShootPhotoAction::kStart;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("action", s.action, wire::u8);
+  }
+};
+
+// 3.4.4 byte 2.
+struct ShootPhotoState {
+  bool shooting_single = false;
+  bool shooting_interval = false;
+  bool shooting_burst = false;
+  bool storing = false;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("shooting_single", s.shooting_single, wire::bit(0));
+    v("shooting_interval", s.shooting_interval, wire::bit(1));
+    v("shooting_burst", s.shooting_burst, wire::bit(2));
+    v("storing", s.storing, wire::bit(3));
+  }
+};
+
+// 3.4.4 ACK.
+struct ShootPhotoStateAck : Reply<CommandSet::kCamera, 0x04, Sender::kPayload> {
+  static constexpr const char* kName = "get_shoot_photo_state_ack";
+  static constexpr const char* kSection = "3.4.4";
+  ShootPhotoState state;
+  uint16_t interval_countdown_s = 0;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("state", s.state, wire::packed8);
+    v("interval_countdown_s", s.interval_countdown_s, wire::u16);
+  }
+};
+
+// 3.4.4.
+struct GetShootPhotoState
+    : Command<CommandSet::kCamera, 0x04, Sender::kAdapter, ShootPhotoStateAck>,
+      NoData {
+  static constexpr const char* kName = "get_shoot_photo_state";
+  static constexpr const char* kSection = "3.4.4";
+};
+
+// 3.4.5 / 3.4.6: burst count applies to burst shooting, interval count and interval to interval
+// shooting (count 1..254, or 255 = until stopped; interval 1..255 s; 0 is reserved for both).
+struct ShootPhotoMode {
+  ShootPhotoType type = ShootPhotoType::kSingle;
+  uint8_t burst_count = 0;
+  uint8_t interval_count = 0;
+  uint8_t interval_s = 0;
+  Status validate() const;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("type", s.type, wire::u8);
+    v("burst_count", s.burst_count, wire::u8);
+    v("interval_count", s.interval_count, wire::u8);
+    v("interval_s", s.interval_s, wire::u8);
+  }
+};
+
+// 3.4.5.
+struct SetShootPhotoMode : Command<CommandSet::kCamera, 0x05, Sender::kAdapter, PlainAck>,
+                           ShootPhotoMode {
+  static constexpr const char* kName = "set_shoot_photo_mode";
+  static constexpr const char* kSection = "3.4.5";
+};
+
+// 3.4.6 ACK.
+struct ShootPhotoModeAck : Reply<CommandSet::kCamera, 0x06, Sender::kPayload>, ShootPhotoMode {
+  static constexpr const char* kName = "get_shoot_photo_mode_ack";
+  static constexpr const char* kSection = "3.4.6";
+};
+
+// 3.4.6.
+struct GetShootPhotoMode : Command<CommandSet::kCamera, 0x06, Sender::kAdapter, ShootPhotoModeAck>,
+                           NoData {
+  static constexpr const char* kName = "get_shoot_photo_mode";
+  static constexpr const char* kSection = "3.4.6";
+};
+
+// 3.4.7.
+struct RecordVideo : Command<CommandSet::kCamera, 0x07, Sender::kAdapter, PlainAck> {
+  static constexpr const char* kName = "record_video";
+  static constexpr const char* kSection = "3.4.7";
+  RecordAction action = RecordAction::kStart;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("action", s.action, wire::u8);
+  }
+};
+
+// 3.4.8 ACK.
+struct RecordStateAck : Reply<CommandSet::kCamera, 0x08, Sender::kPayload> {
+  static constexpr const char* kName = "get_record_state_ack";
+  static constexpr const char* kSection = "3.4.8";
+  bool recording = false;
+  uint16_t duration_s = 0;  // of the current recording
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("recording", s.recording, wire::u8);
+    v("duration_s", s.duration_s, wire::u16);
+  }
+};
+
+// 3.4.8.
+struct GetRecordState : Command<CommandSet::kCamera, 0x08, Sender::kAdapter, RecordStateAck>,
+                        NoData {
+  static constexpr const char* kName = "get_record_state";
+  static constexpr const char* kSection = "3.4.8";
+};
+
+// 3.4.9 bytes 2:3.
+struct SdCardState {
+  bool inserted = false;
+  bool initializing = false;
+  bool read_only = false;
+  bool formatted = false;
+  bool formatting = false;
+  bool full = false;
+  bool verified = false;
+  bool invalid_format = false;
+  bool has_error = false;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("inserted", s.inserted, wire::bit(0));
+    v("initializing", s.initializing, wire::bit(1));
+    v("read_only", s.read_only, wire::bit(2));
+    v("formatted", s.formatted, wire::bit(3));
+    v("formatting", s.formatting, wire::bit(4));
+    v("full", s.full, wire::bit(5));
+    v("verified", s.verified, wire::bit(6));
+    v("invalid_format", s.invalid_format, wire::bit(7));
+    v("has_error", s.has_error, wire::bit(8));
+  }
+};
+
+// 3.4.9 ACK.
+struct SdCardInfoAck : Reply<CommandSet::kCamera, 0x09, Sender::kPayload> {
+  static constexpr const char* kName = "get_sd_card_info_ack";
+  static constexpr const char* kSection = "3.4.9";
+  SdCardState state;
+  uint32_t capacity_mb = 0;
+  uint32_t remaining_mb = 0;
+  uint32_t remaining_shots = 0;
+  uint32_t remaining_record_time_s = 0;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("state", s.state, wire::packed16);
+    v("capacity_mb", s.capacity_mb, wire::u32);
+    v("remaining_mb", s.remaining_mb, wire::u32);
+    v("remaining_shots", s.remaining_shots, wire::u32);
+    v("remaining_record_time_s", s.remaining_record_time_s, wire::u32);
+  }
+};
+
+// 3.4.9.
+struct GetSdCardInfo : Command<CommandSet::kCamera, 0x09, Sender::kAdapter, SdCardInfoAck>, NoData {
+  static constexpr const char* kName = "get_sd_card_info";
+  static constexpr const char* kSection = "3.4.9";
+};
+
+// 3.4.10 ACK: one reserved byte after the code.
+struct FormatSdCardAck : Reply<CommandSet::kCamera, 0x0A, Sender::kPayload> {
+  static constexpr const char* kName = "format_sd_card_ack";
+  static constexpr const char* kSection = "3.4.10";
+  template <class S, class V>
+  static void layout(S&, V&& v) {
+    v("reserved", wire::gap, wire::Reserved{1});
+  }
+};
+
+// 3.4.10.
+struct FormatSdCard : Command<CommandSet::kCamera, 0x0A, Sender::kAdapter, FormatSdCardAck>,
+                      NoData {
+  static constexpr const char* kName = "format_sd_card";
+  static constexpr const char* kSection = "3.4.10";
+};
+
+// 3.4.33 byte 2.
+struct CameraCapability {
+  bool camera_commands = false;
+  bool optical_zoom = false;
+  bool digital_zoom = false;
+  bool focus = false;
+  bool metering = false;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("camera_commands", s.camera_commands, wire::bit(0));
+    v("optical_zoom", s.optical_zoom, wire::bit(1));
+    v("digital_zoom", s.digital_zoom, wire::bit(2));
+    v("focus", s.focus, wire::bit(3));
+    v("metering", s.metering, wire::bit(4));
+  }
+};
+
+// 3.4.33 ACK.
+struct CameraCapabilityAck : Reply<CommandSet::kCamera, 0xFF, Sender::kPayload> {
+  static constexpr const char* kName = "get_camera_capability_ack";
+  static constexpr const char* kSection = "3.4.33";
+  CameraCapability supported;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("supported", s.supported, wire::packed8);
+  }
+};
+
+// 3.4.33.
+struct GetCameraCapability
+    : Command<CommandSet::kCamera, 0xFF, Sender::kAdapter, CameraCapabilityAck>,
+      NoData {
+  static constexpr const char* kName = "get_camera_capability";
+  static constexpr const char* kSection = "3.4.33";
+};
+
+}  // namespace k40t::psdk

@@ -1,0 +1,395 @@
+// Camera command set 0x04, exposure, focus and zoom (protocol document sections 3.4.11 to
+// 3.4.32). A "set" command and the ACK of its "get" share one value struct (mixin).
+#pragma once
+
+#include "k40t_driver/psdk/command.h"
+
+namespace k40t::psdk {
+
+enum class MeteringMode : uint8_t { kCenter = 0, kAverage = 1, kSpot = 2 };
+const char* to_string(MeteringMode mode);
+
+enum class FocusMode : uint8_t { kManual = 0, kAuto = 1 };
+const char* to_string(FocusMode mode);
+
+enum class ZoomSpeed : uint8_t {
+  kSlowest = 72,
+  kSlow = 73,
+  kModeratelySlow = 74,
+  kNormal = 75,
+  kModeratelyFast = 76,
+  kFast = 77,
+  kFastest = 78,
+};
+const char* to_string(ZoomSpeed speed);
+
+enum class ZoomDirection : uint8_t { kOut = 0, kIn = 1 };
+const char* to_string(ZoomDirection direction);
+
+constexpr double kMaxOpticalZoomFactor = 30.0;  // 3.4.24
+
+struct MeteringModeValue {
+  MeteringMode mode = MeteringMode::kCenter;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("mode", s.mode, wire::u8);
+  }
+};
+
+// 3.4.11.
+struct SetMeteringMode : Command<CommandSet::kCamera, 0x20, Sender::kAdapter, PlainAck>,
+                         MeteringModeValue {
+  static constexpr const char* kName = "set_metering_mode";
+  static constexpr const char* kSection = "3.4.11";
+};
+
+// 3.4.12 ACK.
+struct MeteringModeAck : Reply<CommandSet::kCamera, 0x21, Sender::kPayload>, MeteringModeValue {
+  static constexpr const char* kName = "get_metering_mode_ack";
+  static constexpr const char* kSection = "3.4.12";
+};
+
+// 3.4.12.
+struct GetMeteringMode : Command<CommandSet::kCamera, 0x21, Sender::kAdapter, MeteringModeAck>,
+                         NoData {
+  static constexpr const char* kName = "get_metering_mode";
+  static constexpr const char* kSection = "3.4.12";
+};
+
+// 3.4.13 / 3.4.14: one cell of a 12 x 8 grid.
+struct SpotZone {
+  uint8_t column = 0;  // 0..11
+  uint8_t row = 0;     // 0..7
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("column", s.column, wire::bits(0, 4));
+    v("row", s.row, wire::bits(4, 4));
+  }
+};
+
+struct SpotZoneValue {
+  SpotZone zone;
+  Status validate() const {
+    return first_failure(check_int("column", zone.column, 0, 11), check_int("row", zone.row, 0, 7));
+  }
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("zone", s.zone, wire::packed8);
+  }
+};
+
+// 3.4.13.
+struct SetSpotMeteringZone : Command<CommandSet::kCamera, 0x22, Sender::kAdapter, PlainAck>,
+                             SpotZoneValue {
+  static constexpr const char* kName = "set_spot_metering_zone";
+  static constexpr const char* kSection = "3.4.13";
+};
+
+// 3.4.14 ACK.
+struct SpotMeteringZoneAck : Reply<CommandSet::kCamera, 0x23, Sender::kPayload>, SpotZoneValue {
+  static constexpr const char* kName = "get_spot_metering_zone_ack";
+  static constexpr const char* kSection = "3.4.14";
+};
+
+// 3.4.14.
+struct GetSpotMeteringZone
+    : Command<CommandSet::kCamera, 0x23, Sender::kAdapter, SpotMeteringZoneAck>,
+      NoData {
+  static constexpr const char* kName = "get_spot_metering_zone";
+  static constexpr const char* kSection = "3.4.14";
+};
+
+struct FocusModeValue {
+  FocusMode mode = FocusMode::kAuto;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("mode", s.mode, wire::u8);
+  }
+};
+
+// 3.4.15.
+struct SetFocusMode : Command<CommandSet::kCamera, 0x30, Sender::kAdapter, PlainAck>,
+                      FocusModeValue {
+  static constexpr const char* kName = "set_focus_mode";
+  static constexpr const char* kSection = "3.4.15";
+};
+
+// 3.4.16 ACK.
+struct FocusModeAck : Reply<CommandSet::kCamera, 0x31, Sender::kPayload>, FocusModeValue {
+  static constexpr const char* kName = "get_focus_mode_ack";
+  static constexpr const char* kSection = "3.4.16";
+};
+
+// 3.4.16.
+struct GetFocusMode : Command<CommandSet::kCamera, 0x31, Sender::kAdapter, FocusModeAck>, NoData {
+  static constexpr const char* kName = "get_focus_mode";
+  static constexpr const char* kSection = "3.4.16";
+};
+
+// 3.4.17 / 3.4.18: fractions of the image, (0, 0) top left.
+struct FocusZoneValue {
+  float x = 0.5f;
+  float y = 0.5f;
+  Status validate() const {
+    return first_failure(check_real("x", x, 0.0, 1.0), check_real("y", y, 0.0, 1.0));
+  }
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("x", s.x, wire::f32);
+    v("y", s.y, wire::f32);
+  }
+};
+
+// 3.4.17.
+struct SetFocusZone : Command<CommandSet::kCamera, 0x32, Sender::kAdapter, PlainAck>,
+                      FocusZoneValue {
+  static constexpr const char* kName = "set_focus_zone";
+  static constexpr const char* kSection = "3.4.17";
+};
+
+// 3.4.18 ACK.
+struct FocusZoneAck : Reply<CommandSet::kCamera, 0x33, Sender::kPayload>, FocusZoneValue {
+  static constexpr const char* kName = "get_focus_zone_ack";
+  static constexpr const char* kSection = "3.4.18";
+};
+
+// 3.4.18.
+struct GetFocusZone : Command<CommandSet::kCamera, 0x33, Sender::kAdapter, FocusZoneAck>, NoData {
+  static constexpr const char* kName = "get_focus_zone";
+  static constexpr const char* kSection = "3.4.18";
+};
+
+// 3.4.19 / 3.4.20: 1.0 up to the maximum of 3.4.32 (which the codec does not know).
+struct DigitalZoomFactorValue {
+  float factor_x = 1.0f;
+  Status validate() const { return check_real("factor_x", factor_x, 1.0, 1e6); }
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("factor_x", s.factor_x, wire::f32);
+  }
+};
+
+// 3.4.19.
+struct SetDigitalZoomFactor : Command<CommandSet::kCamera, 0x34, Sender::kAdapter, PlainAck>,
+                              DigitalZoomFactorValue {
+  static constexpr const char* kName = "set_digital_zoom_factor";
+  static constexpr const char* kSection = "3.4.19";
+};
+
+// 3.4.20 ACK.
+struct DigitalZoomFactorAck : Reply<CommandSet::kCamera, 0x35, Sender::kPayload>,
+                              DigitalZoomFactorValue {
+  static constexpr const char* kName = "get_digital_zoom_factor_ack";
+  static constexpr const char* kSection = "3.4.20";
+};
+
+// 3.4.20.
+struct GetDigitalZoomFactor
+    : Command<CommandSet::kCamera, 0x35, Sender::kAdapter, DigitalZoomFactorAck>,
+      NoData {
+  static constexpr const char* kName = "get_digital_zoom_factor";
+  static constexpr const char* kSection = "3.4.20";
+};
+
+// 3.4.21 ACK: focal lengths in 0.1 mm on the wire.
+struct OpticalZoomSpecAck : Reply<CommandSet::kCamera, 0x36, Sender::kPayload> {
+  static constexpr const char* kName = "get_optical_zoom_spec_ack";
+  static constexpr const char* kSection = "3.4.21";
+  double max_focal_length_mm = 0;
+  double min_focal_length_mm = 0;
+  double focal_length_step_mm = 0;
+  Status validate() const;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("max_focal_length_mm", s.max_focal_length_mm, wire::scaled<uint16_t>(10));
+    v("min_focal_length_mm", s.min_focal_length_mm, wire::scaled<uint16_t>(10));
+    v("focal_length_step_mm", s.focal_length_step_mm, wire::scaled<uint16_t>(10));
+  }
+};
+
+// 3.4.21.
+struct GetOpticalZoomSpec
+    : Command<CommandSet::kCamera, 0x36, Sender::kAdapter, OpticalZoomSpecAck>,
+      NoData {
+  static constexpr const char* kName = "get_optical_zoom_spec";
+  static constexpr const char* kSection = "3.4.21";
+};
+
+// 3.4.22 / 3.4.23: the document says "1:2 Float" in 0.1 mm; two bytes cannot hold a float, and
+// 3.4.21 gives focal lengths as uint16 0.1 mm, so this is read as uint16 0.1 mm (docs/psdk.md).
+struct FocalLengthValue {
+  double focal_length_mm = 0;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("focal_length_mm", s.focal_length_mm, wire::scaled<uint16_t>(10));
+  }
+};
+
+// 3.4.22.
+struct SetOpticalZoomFocalLength : Command<CommandSet::kCamera, 0x37, Sender::kAdapter, PlainAck>,
+                                   FocalLengthValue {
+  static constexpr const char* kName = "set_optical_zoom_focal_length";
+  static constexpr const char* kSection = "3.4.22";
+};
+
+// 3.4.23 ACK.
+struct OpticalZoomFocalLengthAck : Reply<CommandSet::kCamera, 0x38, Sender::kPayload>,
+                                   FocalLengthValue {
+  static constexpr const char* kName = "get_optical_zoom_focal_length_ack";
+  static constexpr const char* kSection = "3.4.23";
+};
+
+// 3.4.23.
+struct GetOpticalZoomFocalLength
+    : Command<CommandSet::kCamera, 0x38, Sender::kAdapter, OpticalZoomFocalLengthAck>,
+      NoData {
+  static constexpr const char* kName = "get_optical_zoom_focal_length";
+  static constexpr const char* kSection = "3.4.23";
+};
+
+// 3.4.24 ACK.
+struct OpticalZoomFactorAck : Reply<CommandSet::kCamera, 0x39, Sender::kPayload> {
+  static constexpr const char* kName = "get_optical_zoom_factor_ack";
+  static constexpr const char* kSection = "3.4.24";
+  float factor_x = 1.0f;
+  Status validate() const { return check_real("factor_x", factor_x, 1.0, kMaxOpticalZoomFactor); }
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("factor_x", s.factor_x, wire::f32);
+  }
+};
+
+// 3.4.24.
+struct GetOpticalZoomFactor
+    : Command<CommandSet::kCamera, 0x39, Sender::kAdapter, OpticalZoomFactorAck>,
+      NoData {
+  static constexpr const char* kName = "get_optical_zoom_factor";
+  static constexpr const char* kSection = "3.4.24";
+};
+
+// 3.4.25: zoom until the end of travel or 3.4.26.
+struct StartContinuousZoom : Command<CommandSet::kCamera, 0x40, Sender::kAdapter, PlainAck> {
+  static constexpr const char* kName = "start_continuous_zoom";
+  static constexpr const char* kSection = "3.4.25";
+  ZoomSpeed speed = ZoomSpeed::kNormal;
+  ZoomDirection direction = ZoomDirection::kIn;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("speed", s.speed, wire::u8);
+    v("direction", s.direction, wire::u8);
+  }
+};
+
+// 3.4.26.
+struct StopContinuousZoom : Command<CommandSet::kCamera, 0x41, Sender::kAdapter, PlainAck>, NoData {
+  static constexpr const char* kName = "stop_continuous_zoom";
+  static constexpr const char* kSection = "3.4.26";
+};
+
+// 3.4.27 / 3.4.28.
+struct FocusAssistant {
+  bool for_auto_focus = false;
+  bool for_manual_focus = false;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("for_auto_focus", s.for_auto_focus, wire::bit(0));
+    v("for_manual_focus", s.for_manual_focus, wire::bit(1));
+  }
+};
+
+struct FocusAssistantValue {
+  FocusAssistant assistant;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("assistant", s.assistant, wire::packed8);
+  }
+};
+
+// 3.4.27.
+struct SetFocusAssistant : Command<CommandSet::kCamera, 0x42, Sender::kAdapter, PlainAck>,
+                           FocusAssistantValue {
+  static constexpr const char* kName = "set_focus_assistant";
+  static constexpr const char* kSection = "3.4.27";
+};
+
+// 3.4.28 ACK.
+struct FocusAssistantAck : Reply<CommandSet::kCamera, 0x43, Sender::kPayload>, FocusAssistantValue {
+  static constexpr const char* kName = "get_focus_assistant_ack";
+  static constexpr const char* kSection = "3.4.28";
+};
+
+// 3.4.28.
+struct GetFocusAssistant : Command<CommandSet::kCamera, 0x43, Sender::kAdapter, FocusAssistantAck>,
+                           NoData {
+  static constexpr const char* kName = "get_focus_assistant";
+  static constexpr const char* kSection = "3.4.28";
+};
+
+// 3.4.29 ACK.
+struct FocusRingUpperBoundAck : Reply<CommandSet::kCamera, 0x44, Sender::kPayload> {
+  static constexpr const char* kName = "get_focus_ring_upper_bound_ack";
+  static constexpr const char* kSection = "3.4.29";
+  uint16_t upper_bound = 0;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("upper_bound", s.upper_bound, wire::u16);
+  }
+};
+
+// 3.4.29.
+struct GetFocusRingUpperBound
+    : Command<CommandSet::kCamera, 0x44, Sender::kAdapter, FocusRingUpperBoundAck>,
+      NoData {
+  static constexpr const char* kName = "get_focus_ring_upper_bound";
+  static constexpr const char* kSection = "3.4.29";
+};
+
+// 3.4.30 / 3.4.31: 0 = infinity .. upper bound = closest focus.
+struct FocusRingValue {
+  uint16_t value = 0;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("value", s.value, wire::u16);
+  }
+};
+
+// 3.4.30.
+struct SetFocusRing : Command<CommandSet::kCamera, 0x45, Sender::kAdapter, PlainAck>,
+                      FocusRingValue {
+  static constexpr const char* kName = "set_focus_ring";
+  static constexpr const char* kSection = "3.4.30";
+};
+
+// 3.4.31 ACK.
+struct FocusRingAck : Reply<CommandSet::kCamera, 0x46, Sender::kPayload>, FocusRingValue {
+  static constexpr const char* kName = "get_focus_ring_ack";
+  static constexpr const char* kSection = "3.4.31";
+};
+
+// 3.4.31.
+struct GetFocusRing : Command<CommandSet::kCamera, 0x46, Sender::kAdapter, FocusRingAck>, NoData {
+  static constexpr const char* kName = "get_focus_ring";
+  static constexpr const char* kSection = "3.4.31";
+};
+
+// 3.4.32 ACK.
+struct DigitalZoomSpecAck : Reply<CommandSet::kCamera, 0x47, Sender::kPayload> {
+  static constexpr const char* kName = "get_digital_zoom_spec_ack";
+  static constexpr const char* kSection = "3.4.32";
+  float max_factor_x = 1.0f;
+  Status validate() const { return check_real("max_factor_x", max_factor_x, 1.0, 1e6); }
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("max_factor_x", s.max_factor_x, wire::f32);
+  }
+};
+
+// 3.4.32.
+struct GetDigitalZoomSpec
+    : Command<CommandSet::kCamera, 0x47, Sender::kAdapter, DigitalZoomSpecAck>,
+      NoData {
+  static constexpr const char* kName = "get_digital_zoom_spec";
+  static constexpr const char* kSection = "3.4.32";
+};
+
+}  // namespace k40t::psdk

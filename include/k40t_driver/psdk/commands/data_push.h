@@ -1,0 +1,353 @@
+// Data push command set 0x03 (protocol document section 3.3): the adapter pushes the airframe's
+// state to the payload. Only the battery push is ACKed (its power-off warning).
+#pragma once
+
+#include "k40t_driver/psdk/command.h"
+
+namespace k40t::psdk {
+
+// Calendar date and time of day, as the time pushes and the positioning set carry them.
+struct DateTime {
+  uint16_t year = 2000;
+  uint8_t month = 1;
+  uint8_t day = 1;
+  uint8_t hour = 0;
+  uint8_t minute = 0;
+  uint8_t second = 0;
+  Status validate() const;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("year", s.year, wire::u16);
+    v("month", s.month, wire::u8);
+    v("day", s.day, wire::u8);
+    v("hour", s.hour, wire::u8);
+    v("minute", s.minute, wire::u8);
+    v("second", s.second, wire::u8);
+  }
+};
+
+// 3.3.1 byte 4.
+struct LinkConnectionState {
+  bool remote_controller_connected = false;
+  bool image_downlink_connected = false;
+  bool data_downlink_connected = false;
+  bool app_connected = false;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("remote_controller_connected", s.remote_controller_connected, wire::bit(0));
+    v("image_downlink_connected", s.image_downlink_connected, wire::bit(1));
+    v("data_downlink_connected", s.data_downlink_connected, wire::bit(2));
+    v("app_connected", s.app_connected, wire::bit(3));
+  }
+};
+
+// 3.3.1 byte 17: 1 = real-time bandwidth within the limit.
+struct MsdkBandwidthFlags {
+  bool msdk_uplink_within_limit = false;
+  bool msdk_downlink_within_limit = false;
+  bool network_within_limit = false;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("msdk_uplink_within_limit", s.msdk_uplink_within_limit, wire::bit(0));
+    v("msdk_downlink_within_limit", s.msdk_downlink_within_limit, wire::bit(1));
+    v("network_within_limit", s.network_within_limit, wire::bit(2));
+  }
+};
+
+// 3.3.1 byte 38.
+struct OsdkBandwidthFlags {
+  bool osdk_uplink_within_limit = false;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("osdk_uplink_within_limit", s.osdk_uplink_within_limit, wire::bit(0));
+  }
+};
+
+// 3.3.1 (link bandwidth). MSDK uplink is mobile -> payload; OSDK uplink is payload -> onboard.
+struct LinkBandwidthPush : Command<CommandSet::kDataPush, 0x01, Sender::kAdapter, NoAck> {
+  static constexpr const char* kName = "link_bandwidth_push";
+  static constexpr const char* kSection = "3.3.1";
+  bool image_link_normal = false;
+  uint8_t max_image_link_bandwidth = 0;  // the document gives no unit
+  LinkConnectionState connection;
+  uint32_t msdk_uplink_max_bytes_s = 0;
+  uint32_t msdk_downlink_max_bytes_s = 0;
+  uint32_t network_max_kbit_s = 0;
+  MsdkBandwidthFlags msdk_flags;
+  uint32_t msdk_uplink_bytes_s = 0;
+  uint32_t msdk_downlink_bytes_s = 0;
+  uint32_t network_video_kbit_s = 0;
+  uint32_t network_data_kbit_s = 0;
+  uint32_t osdk_uplink_max_bytes_s = 0;
+  OsdkBandwidthFlags osdk_flags;
+  uint32_t osdk_uplink_bytes_s = 0;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("image_link_normal", s.image_link_normal, wire::u8);
+    v("max_image_link_bandwidth", s.max_image_link_bandwidth, wire::u8);
+    v("reserved", wire::gap, wire::Reserved{1});
+    v("connection", s.connection, wire::packed8);
+    v("msdk_uplink_max_bytes_s", s.msdk_uplink_max_bytes_s, wire::u32);
+    v("msdk_downlink_max_bytes_s", s.msdk_downlink_max_bytes_s, wire::u32);
+    v("network_max_kbit_s", s.network_max_kbit_s, wire::u32);
+    v("msdk_flags", s.msdk_flags, wire::packed8);
+    v("msdk_uplink_bytes_s", s.msdk_uplink_bytes_s, wire::u32);
+    v("msdk_downlink_bytes_s", s.msdk_downlink_bytes_s, wire::u32);
+    v("network_video_kbit_s", s.network_video_kbit_s, wire::u32);
+    v("network_data_kbit_s", s.network_data_kbit_s, wire::u32);
+    v("osdk_uplink_max_bytes_s", s.osdk_uplink_max_bytes_s, wire::u32);
+    v("osdk_flags", s.osdk_flags, wire::packed8);
+    v("osdk_uplink_bytes_s", s.osdk_uplink_bytes_s, wire::u32);
+  }
+};
+
+// 3.3.2: the airframe's attitude quaternion (q0 is the scalar part).
+struct AttitudePush : Command<CommandSet::kDataPush, 0x02, Sender::kAdapter, NoAck> {
+  static constexpr const char* kName = "attitude_push";
+  static constexpr const char* kSection = "3.3.2";
+  float q0 = 1.0f;
+  float q1 = 0.0f;
+  float q2 = 0.0f;
+  float q3 = 0.0f;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("q0", s.q0, wire::f32);
+    v("q1", s.q1, wire::f32);
+    v("q2", s.q2, wire::f32);
+    v("q3", s.q3, wire::f32);
+  }
+};
+
+// 3.3.3 ACK: read only when the push announced power-off.
+struct BatteryInfoAck : Reply<CommandSet::kDataPush, 0x03, Sender::kPayload> {
+  static constexpr const char* kName = "battery_info_push_ack";
+  static constexpr const char* kSection = "3.3.3";
+  bool power_off_ready = false;  // preparation for power-off complete
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("power_off_ready", s.power_off_ready, wire::u8);
+  }
+};
+
+// 3.3.3.
+struct BatteryInfoPush : Command<CommandSet::kDataPush, 0x03, Sender::kAdapter, BatteryInfoAck> {
+  static constexpr const char* kName = "battery_info_push";
+  static constexpr const char* kSection = "3.3.3";
+  uint8_t percentage = 0;
+  bool power_off_soon = false;
+  Status validate() const { return check_int("percentage", percentage, 0, 100, "%"); }
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("percentage", s.percentage, wire::u8);
+    v("power_off_soon", s.power_off_soon, wire::u8);
+  }
+};
+
+enum class GpsSignal : uint8_t { kNone = 0, kVeryWeak = 1, kMedium = 2, kVeryStrong = 3 };
+const char* to_string(GpsSignal signal);
+
+// 3.3.4.
+struct GpsPush : Command<CommandSet::kDataPush, 0x04, Sender::kAdapter, NoAck> {
+  static constexpr const char* kName = "gps_push";
+  static constexpr const char* kSection = "3.3.4";
+  double longitude_rad = 0;
+  double latitude_rad = 0;
+  double relative_height_m = 0;  // above the take-off point; 0.1 m on the wire
+  uint8_t satellites = 0;
+  GpsSignal signal = GpsSignal::kNone;
+  Status validate() const;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("longitude_rad", s.longitude_rad, wire::f64);
+    v("latitude_rad", s.latitude_rad, wire::f64);
+    v("relative_height_m", s.relative_height_m, wire::scaled<int16_t>(10));
+    v("satellites", s.satellites, wire::u8);
+    v("signal", s.signal, wire::u8);
+  }
+};
+
+enum class LandingState : uint8_t { kUnknown = 0, kLanded = 1, kInTheSky = 2 };
+const char* to_string(LandingState state);
+
+enum class DroneType : uint8_t {
+  kUnknown = 0,
+  kM200 = 1,
+  kM210 = 2,
+  kM210Rtk = 3,
+  kM600 = 4,
+  kM600Pro = 5,
+  kM200V2 = 6,
+  kM210V2 = 7,
+  kM210RtkV2 = 8,
+};
+const char* to_string(DroneType type);
+
+// 3.3.5 byte 1.
+struct UavFunctionState {
+  bool compass_abnormal = false;
+  bool motors_rotating = false;
+  LandingState landing = LandingState::kUnknown;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("compass_abnormal", s.compass_abnormal, wire::bit(0));
+    v("motors_rotating", s.motors_rotating, wire::bit(1));
+    v("landing", s.landing, wire::bits(2, 2));
+  }
+};
+
+// 3.3.5.
+struct UavStatePush : Command<CommandSet::kDataPush, 0x05, Sender::kAdapter, NoAck> {
+  static constexpr const char* kName = "uav_state_push";
+  static constexpr const char* kSection = "3.3.5";
+  UavFunctionState state;
+  double flight_time_s = 0;  // since the motors last started; 0.1 s on the wire
+  DroneType drone_type = DroneType::kUnknown;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("state", s.state, wire::packed8);
+    v("flight_time_s", s.flight_time_s, wire::scaled<uint16_t>(10));
+    v("drone_type", s.drone_type, wire::u8);
+  }
+};
+
+// 3.3.6: the mobile app's local date and time, when an app is connected.
+struct AppDateTimePush : Command<CommandSet::kDataPush, 0x06, Sender::kAdapter, NoAck> {
+  static constexpr const char* kName = "app_date_time_push";
+  static constexpr const char* kSection = "3.3.6";
+  DateTime time;
+  Status validate() const { return time.validate(); }
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    DateTime::layout(s.time, v);
+  }
+};
+
+// 3.3.7. The document gives no unit; metres (like the RTK height) is this project's reading.
+struct BarometricAltitudePush : Command<CommandSet::kDataPush, 0x07, Sender::kAdapter, NoAck> {
+  static constexpr const char* kName = "barometric_altitude_push";
+  static constexpr const char* kSection = "3.3.7";
+  float altitude_m = 0;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("altitude_m", s.altitude_m, wire::f32);
+  }
+};
+
+// 3.3.8: the GPS receiver's own solution.
+struct RawGpsPush : Command<CommandSet::kDataPush, 0x08, Sender::kAdapter, NoAck> {
+  static constexpr const char* kName = "raw_gps_push";
+  static constexpr const char* kSection = "3.3.8";
+  uint32_t date_yyyymmdd = 0;  // GMT, decimal digits
+  uint32_t time_hhmmss = 0;    // GMT, decimal digits
+  double longitude_deg = 0;    // 1e-7 deg on the wire
+  double latitude_deg = 0;     // 1e-7 deg on the wire
+  double height_m = 0;         // above sea level; mm on the wire
+  float velocity_north_cm_s = 0;
+  float velocity_east_cm_s = 0;
+  float velocity_down_cm_s = 0;
+  float hdop = 0;
+  float pdop = 0;
+  float fix_state = 0;             // 3 = 3D fix
+  float vertical_accuracy_mm = 0;  // unit not given; taken to be the horizontal one's
+  float horizontal_accuracy_mm = 0;
+  float speed_accuracy_cm_s = 0;
+  uint32_t gps_satellites = 0;
+  uint32_t glonass_satellites = 0;
+  uint16_t total_satellites = 0;
+  uint16_t counter = 0;  // increments per push, wraps at 65535
+  Status validate() const;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("date_yyyymmdd", s.date_yyyymmdd, wire::u32);
+    v("time_hhmmss", s.time_hhmmss, wire::u32);
+    v("longitude_deg", s.longitude_deg, wire::scaled<int32_t>(1e7));
+    v("latitude_deg", s.latitude_deg, wire::scaled<int32_t>(1e7));
+    v("height_m", s.height_m, wire::scaled<int32_t>(1000));
+    v("velocity_north_cm_s", s.velocity_north_cm_s, wire::f32);
+    v("velocity_east_cm_s", s.velocity_east_cm_s, wire::f32);
+    v("velocity_down_cm_s", s.velocity_down_cm_s, wire::f32);
+    v("hdop", s.hdop, wire::f32);
+    v("pdop", s.pdop, wire::f32);
+    v("fix_state", s.fix_state, wire::f32);
+    v("vertical_accuracy_mm", s.vertical_accuracy_mm, wire::f32);
+    v("horizontal_accuracy_mm", s.horizontal_accuracy_mm, wire::f32);
+    v("speed_accuracy_cm_s", s.speed_accuracy_cm_s, wire::f32);
+    v("gps_satellites", s.gps_satellites, wire::u32);
+    v("glonass_satellites", s.glonass_satellites, wire::u32);
+    v("total_satellites", s.total_satellites, wire::u16);
+    v("counter", s.counter, wire::u16);
+  }
+};
+
+// 3.3.9: the RTK solution.
+struct RawRtkPush : Command<CommandSet::kDataPush, 0x09, Sender::kAdapter, NoAck> {
+  static constexpr const char* kName = "raw_rtk_push";
+  static constexpr const char* kSection = "3.3.9";
+  double longitude_deg = 0;
+  double latitude_deg = 0;
+  float height_m = 0;  // above sea level
+  float velocity_north_cm_s = 0;
+  float velocity_east_cm_s = 0;
+  float velocity_down_cm_s = 0;
+  int16_t azimuth = 0;           // the document gives no unit
+  uint8_t position_type = 0;     // solution type; the document's value table is a copy of DOP's
+  uint8_t orientation_type = 0;  // likewise
+  Status validate() const;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("longitude_deg", s.longitude_deg, wire::f64);
+    v("latitude_deg", s.latitude_deg, wire::f64);
+    v("height_m", s.height_m, wire::f32);
+    v("velocity_north_cm_s", s.velocity_north_cm_s, wire::f32);
+    v("velocity_east_cm_s", s.velocity_east_cm_s, wire::f32);
+    v("velocity_down_cm_s", s.velocity_down_cm_s, wire::f32);
+    v("azimuth", s.azimuth, wire::i16);
+    v("position_type", s.position_type, wire::u8);
+    v("orientation_type", s.orientation_type, wire::u8);
+  }
+};
+
+// 3.3.10: the UTC time of the last PPS rising edge (discard it when it arrives more than 500 ms
+// after the edge).
+struct UtcTimePush : Command<CommandSet::kDataPush, 0x0A, Sender::kAdapter, NoAck> {
+  static constexpr const char* kName = "utc_time_push";
+  static constexpr const char* kSection = "3.3.10";
+  DateTime time;
+  uint32_t microsecond = 0;
+  Status validate() const {
+    return first_failure(time.validate(), check_int("microsecond", microsecond, 0, 999999, "us"));
+  }
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    DateTime::layout(s.time, v);
+    v("microsecond", s.microsecond, wire::u32);
+  }
+};
+
+enum class OtherPayloadType : uint8_t { kUnknown = 0, kZenmuseX5s = 1, kZenmuseZ30 = 2 };
+const char* to_string(OtherPayloadType type);
+
+// 3.3.11: what is mounted on the airframe's main gimbal port.
+struct OtherPayloadTypePush : Command<CommandSet::kDataPush, 0x0B, Sender::kAdapter, NoAck> {
+  static constexpr const char* kName = "other_payload_type_push";
+  static constexpr const char* kSection = "3.3.11";
+  OtherPayloadType type = OtherPayloadType::kUnknown;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("type", s.type, wire::u8);
+  }
+};
+
+// 3.3.12: the main gimbal payload's focal length. The table says byte "1" for a uint16; read
+// as bytes 1:2.
+struct OtherPayloadFocalLengthPush : Command<CommandSet::kDataPush, 0x0C, Sender::kAdapter, NoAck> {
+  static constexpr const char* kName = "other_payload_focal_length_push";
+  static constexpr const char* kSection = "3.3.12";
+  double focal_length_mm = 0;  // 0.1 mm on the wire
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("focal_length_mm", s.focal_length_mm, wire::scaled<uint16_t>(10));
+  }
+};
+
+}  // namespace k40t::psdk

@@ -1,0 +1,25 @@
+// OSDK function command set 0x06 (protocol document section 3.6): transparent data between an
+// Onboard SDK computer on the airframe and the payload.
+#pragma once
+
+#include "k40t_driver/psdk/command.h"
+
+namespace k40t::psdk {
+
+constexpr size_t kMaxOsdkTransparent = 255;
+
+// 3.6.1: 1..255 bytes from the onboard computer. No ACK.
+struct TransparentFromOnboard : Command<CommandSet::kOsdkFunction, 0x01, Sender::kAdapter, NoAck>,
+                                OpaqueData<1, kMaxOsdkTransparent> {
+  static constexpr const char* kName = "transparent_from_onboard";
+  static constexpr const char* kSection = "3.6.1";
+};
+
+// 3.6.2: 1..255 bytes to the onboard computer. No ACK. Encrypted by the payload (psdk_crc.md).
+struct TransparentToOnboard : Command<CommandSet::kOsdkFunction, 0x02, Sender::kPayload, NoAck>,
+                              OpaqueData<1, kMaxOsdkTransparent> {
+  static constexpr const char* kName = "transparent_to_onboard";
+  static constexpr const char* kSection = "3.6.2";
+};
+
+}  // namespace k40t::psdk

@@ -1,0 +1,123 @@
+// Positioning command set 0x07 (protocol document section 3.7): the payload asks the adapter
+// where target points were at given instants (events), based on the synchronised UTC time (the
+// instants must lie within the 2 s before the newest synchronised timestamp; at most 5 Hz).
+#pragma once
+
+#include "k40t_driver/psdk/command.h"
+#include "k40t_driver/psdk/commands/data_push.h"
+
+namespace k40t::psdk {
+
+constexpr size_t kMaxTargetPoints = 5;
+constexpr uint32_t kMaxTimeOffsetUs = 2000000;
+constexpr size_t kPositionRequestPointSize = 6;
+constexpr size_t kTargetPositionSize = 56;
+constexpr size_t kPositionHeaderSize = 9;  // count, task index, base date and time
+
+enum class PositionSolution : uint8_t {
+  kNotAvailable = 0,
+  kSinglePoint = 16,
+  kFloat = 34,
+  kFixed = 50
+};
+const char* to_string(PositionSolution solution);
+
+// Bits 0..12 event index, bits 13..15 target point index.
+struct PositionEvent {
+  uint16_t event_index = 0;        // 0..8191
+  uint8_t target_point_index = 0;  // 0..7
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("event_index", s.event_index, wire::bits(0, 13));
+    v("target_point_index", s.target_point_index, wire::bits(13, 3));
+  }
+};
+
+struct PositionRequestPoint {
+  PositionEvent event;
+  uint32_t time_offset_us = 0;  // after the base time, 0..2000000
+  Status validate() const;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("event", s.event, wire::packed16);
+    v("time_offset_us", s.time_offset_us, wire::u32);
+  }
+};
+
+struct TargetPosition {
+  PositionEvent event;
+  uint32_t time_offset_us = 0;
+  PositionSolution solution = PositionSolution::kNotAvailable;
+  int16_t uav_pitch_deg = 0;  // -180..180, whole degrees on the wire
+  int16_t uav_roll_deg = 0;
+  int16_t uav_yaw_deg = 0;
+  int16_t offset_north_mm = 0;  // RTK main antenna -> target point, NED
+  int16_t offset_east_mm = 0;
+  int16_t offset_down_mm = 0;
+  double longitude_deg = 0;
+  double latitude_deg = 0;
+  double height_m = 0;          // above sea level
+  float longitude_std_dev = 0;  // the document gives no unit
+  float latitude_std_dev = 0;
+  float height_std_dev = 0;
+  Status validate() const;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("event", s.event, wire::packed16);
+    v("time_offset_us", s.time_offset_us, wire::u32);
+    v("solution", s.solution, wire::u8);
+    v("reserved", wire::gap, wire::Reserved{1});
+    v("uav_pitch_deg", s.uav_pitch_deg, wire::i16);
+    v("uav_roll_deg", s.uav_roll_deg, wire::i16);
+    v("uav_yaw_deg", s.uav_yaw_deg, wire::i16);
+    v("offset_north_mm", s.offset_north_mm, wire::i16);
+    v("offset_east_mm", s.offset_east_mm, wire::i16);
+    v("offset_down_mm", s.offset_down_mm, wire::i16);
+    v("longitude_deg", s.longitude_deg, wire::f64);
+    v("latitude_deg", s.latitude_deg, wire::f64);
+    v("height_m", s.height_m, wire::f64);
+    v("longitude_std_dev", s.longitude_std_dev, wire::f32);
+    v("latitude_std_dev", s.latitude_std_dev, wire::f32);
+    v("height_std_dev", s.height_std_dev, wire::f32);
+  }
+};
+
+// 3.7.1 ACK: one position per requested point. At 56 bytes a point, DATA (256 bytes at most)
+// holds 4 of them, although the document allows 5 (docs/psdk.md).
+struct GetPositionAck : Reply<CommandSet::kPositioning, 0x01, Sender::kAdapter> {
+  static constexpr const char* kName = "get_position_ack";
+  static constexpr const char* kSection = "3.7.1";
+  static constexpr size_t kMinBodySize = kPositionHeaderSize;
+  static constexpr size_t kMaxBodySize = kMaxDataSize - 1;
+
+  uint8_t count = 0;
+  uint8_t task_index = 0;
+  DateTime base_time;
+  std::array<TargetPosition, kMaxTargetPoints> points{};
+
+  Status validate() const;
+  void encode(ByteWriter& w) const;
+  Status decode(ByteReader& r);
+  void describe(FieldSink& sink) const;
+};
+
+// 3.7.1: 1..5 points. Encrypted by the payload (psdk_crc.md).
+struct GetPosition : Command<CommandSet::kPositioning, 0x01, Sender::kPayload, GetPositionAck> {
+  static constexpr const char* kName = "get_position";
+  static constexpr const char* kSection = "3.7.1";
+  static constexpr size_t kMinBodySize = kPositionHeaderSize + kPositionRequestPointSize;
+  static constexpr size_t kMaxBodySize =
+      kPositionHeaderSize + kMaxTargetPoints * kPositionRequestPointSize;
+
+  uint8_t count = 1;
+  uint8_t task_index = 0;
+  DateTime base_time;
+  std::array<PositionRequestPoint, kMaxTargetPoints> points{};
+
+  Status validate() const;
+  void encode(ByteWriter& w) const;
+  Status decode(ByteReader& r);
+  void describe(FieldSink& sink) const;
+};
+
+}  // namespace k40t::psdk

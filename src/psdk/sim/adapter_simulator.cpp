@@ -1,0 +1,371 @@
+#include "k40t_driver/psdk/sim/adapter_simulator.h"
+
+#include <cmath>
+
+#include "k40t_driver/psdk/identity.h"
+
+namespace k40t::psdk::sim {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / M_PI;
+
+SessionOptions session_options(const AdapterOptions& o) {
+  SessionOptions s;
+  s.role = Sender::kAdapter;
+  s.ack_timeout = o.ack_timeout;
+  if (o.encryption) s.aes_key = derive_aes_key(o.credentials);
+  return s;
+}
+
+std::unique_ptr<transport::Transport> wrap(std::unique_ptr<transport::Transport> inner,
+                                           const ByteFaults& faults, FaultyTransport** raw) {
+  auto faulty = std::make_unique<FaultyTransport>(std::move(inner), faults);
+  *raw = faulty.get();
+  return faulty;
+}
+
+int64_t unix_us_of(const DateTime& d) {
+  // Days from civil (Howard Hinnant), the inverse of utc_from_unix_us().
+  const int64_t y = d.year - (d.month <= 2 ? 1 : 0);
+  const int64_t era = (y >= 0 ? y : y - 399) / 400;
+  const int64_t yoe = y - era * 400;
+  const int64_t mp = d.month > 2 ? d.month - 3 : d.month + 9;
+  const int64_t doy = (153 * mp + 2) / 5 + d.day - 1;
+  const int64_t doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+  const int64_t days = era * 146097 + doe - 719468;
+  return ((days * 24 + d.hour) * 60 + d.minute) * 60000000LL + d.second * 1000000LL;
+}
+
+}  // namespace
+
+AdapterSimulator::AdapterSimulator(std::unique_ptr<transport::Transport> transport,
+                                   AdapterOptions options)
+    : options_(std::move(options)),
+      flight_(options_.flight),
+      session_(std::make_unique<Session>(wrap(std::move(transport), options_.byte_faults, &faulty_),
+                                         session_options(options_))),
+      random_(options_.seed),
+      protocol_faults_(options_.protocol_faults) {
+  const PushRates& r = options_.rates;
+  schedule_ = {{AttitudePush::kName, r.attitude_hz, 0},
+               {GpsPush::kName, r.gps_hz, 0},
+               {RawGpsPush::kName, r.raw_gps_hz, 0},
+               {RawRtkPush::kName, r.raw_rtk_hz, 0},
+               {BarometricAltitudePush::kName, r.barometric_altitude_hz, 0},
+               {BatteryInfoPush::kName, r.battery_hz, 0},
+               {UavStatePush::kName, r.uav_state_hz, 0},
+               {LinkBandwidthPush::kName, r.link_bandwidth_hz, 0},
+               {AppDateTimePush::kName, r.app_date_time_hz, 0},
+               {UtcTimePush::kName, r.utc_time_hz, 0},
+               {OtherPayloadTypePush::kName, r.other_payload_hz, 0}};
+
+  session_->on_command(GetPosition::key(),
+                       [this](const IncomingCommand& in) { return answer_get_position(in); });
+  session_->on_command(FloatingWindowMessage::key(),
+                       [this](const IncomingCommand& in) -> std::optional<Data> {
+                         auto m = decode_data<FloatingWindowMessage>(in.data);
+                         std::lock_guard<std::mutex> lock(mutex_);
+                         if (m) floating_window_.push_back(m->text);
+                         return std::nullopt;
+                       });
+  session_->on_command(TransparentToMobile::key(),
+                       [this](const IncomingCommand& in) -> std::optional<Data> {
+                         std::lock_guard<std::mutex> lock(mutex_);
+                         stats_.transparent_to_mobile_bytes += in.data.size;
+                         return std::nullopt;
+                       });
+  session_->on_command(TransparentToOnboard::key(),
+                       [this](const IncomingCommand& in) -> std::optional<Data> {
+                         std::lock_guard<std::mutex> lock(mutex_);
+                         stats_.transparent_to_onboard_bytes += in.data.size;
+                         return std::nullopt;
+                       });
+}
+
+AdapterSimulator::~AdapterSimulator() {
+  stop();
+}
+
+Status AdapterSimulator::start() {
+  if (started_) return Status::ok();
+  const Status s = session_->start();
+  if (!s) return s;
+  start_time_ = std::chrono::steady_clock::now();
+  {
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    stopping_ = false;
+  }
+  started_ = true;
+  worker_ = std::thread([this] { run(); });
+  return Status::ok();
+}
+
+void AdapterSimulator::stop() {
+  if (!started_.exchange(false)) return;
+  {
+    std::lock_guard<std::mutex> lock(wake_mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_all();
+  worker_.join();
+  session_->stop();
+}
+
+double AdapterSimulator::elapsed_s() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time_).count();
+}
+
+AirframeState AdapterSimulator::airframe_now() const {
+  AirframeState s = flight_.state_at(elapsed_s());
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (power_off_from_s_ && s.t_s >= *power_off_from_s_) s.power_off_soon = true;
+  return s;
+}
+
+bool AdapterSimulator::roll(double probability) {
+  if (probability <= 0) return false;
+  return std::uniform_real_distribution<double>(0.0, 1.0)(random_) < probability;
+}
+
+// --- the worker: pushes, periodic identity verification, delayed ACKs
+// -----------------------------
+
+void AdapterSimulator::run() {
+  std::unique_lock<std::mutex> lock(wake_mutex_);
+  while (!stopping_) {
+    lock.unlock();
+    const double t = elapsed_s();
+    if (t >= next_identity_s_) {
+      verify_identity();
+      next_identity_s_ =
+          elapsed_s() + std::chrono::duration<double>(options_.identity_interval).count();
+    }
+    faulty_->poll();  // reopen the link after a simulated disconnect
+    send_due_pushes(elapsed_s());
+    flush_delayed_acks();
+    lock.lock();
+    // 2 ms granularity is finer than the fastest push (50 Hz).
+    wake_.wait_for(lock, std::chrono::milliseconds(2), [this] { return stopping_; });
+  }
+}
+
+void AdapterSimulator::send_due_pushes(double t_s) {
+  const AirframeState s = airframe_now();
+  for (Schedule& item : schedule_) {
+    if (item.hz <= 0 || t_s < item.next_s) continue;
+    const double period = 1.0 / item.hz;
+    // Keep the cadence; after a stall, start again from now rather than bursting.
+    item.next_s = t_s - item.next_s > period ? t_s + period : item.next_s + period;
+    const std::string name = item.name;
+    if (name == AttitudePush::kName)
+      push(attitude_push(s));
+    else if (name == GpsPush::kName)
+      push(gps_push(s, options_.gps_satellites));
+    else if (name == RawRtkPush::kName)
+      push(raw_rtk_push(s));
+    else if (name == BarometricAltitudePush::kName)
+      push(barometric_altitude_push(s));
+    else if (name == UavStatePush::kName)
+      push(uav_state_push(s, options_.flight.drone_type));
+    else if (name == LinkBandwidthPush::kName)
+      push(link_bandwidth_push(s));
+    else if (name == AppDateTimePush::kName)
+      push(app_date_time_push(s));
+    else if (name == UtcTimePush::kName)
+      push(utc_time_push(s));
+    else if (name == OtherPayloadTypePush::kName)
+      push(OtherPayloadTypePush{});
+    else if (name == RawGpsPush::kName) {
+      uint16_t counter = 0;
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        counter = raw_gps_counter_++;
+      }
+      push(raw_gps_push(s, counter));
+    } else if (name == BatteryInfoPush::kName) {
+      push(battery_push(s));
+    }
+  }
+}
+
+void AdapterSimulator::maybe_jump_sequence() {
+  uint16_t jump = 0;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!roll(protocol_faults_.sequence_jump_rate)) return;
+    jump = static_cast<uint16_t>(std::uniform_int_distribution<int>(1, 100)(random_));
+    ++stats_.sequence_jumps;
+  }
+  session_->skip_sequence(jump);
+}
+
+template <class Push>
+void AdapterSimulator::push(const Push& message) {
+  maybe_jump_sequence();
+  Status sent = Status::ok();
+  if constexpr (std::is_same_v<Push, BatteryInfoPush>) {
+    // The battery push asks for an ACK: its second byte tells whether the payload is ready for
+    // power-off (read only while power-off is announced).
+    const Result<Data> data = encode_data(message);
+    if (!data) return;
+    session_->request_async(Push::key(), data.value(), [this](const AckResult& r) {
+      if (!r.received) return;
+      const Result<BatteryInfoAck> ack = decode_data<BatteryInfoAck>(r.data);
+      std::lock_guard<std::mutex> lock(mutex_);
+      ++stats_.battery_acks;
+      if (ack) stats_.last_power_off_ready = ack->power_off_ready;
+    });
+  } else {
+    sent = session_->send(message);
+  }
+  if (!sent) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++stats_.pushes_sent[Push::kName];
+}
+
+// --- the payload's commands
+// -------------------------------------------------------------------------
+
+std::optional<Data> AdapterSimulator::answer_get_position(const IncomingCommand& in) {
+  const Result<GetPosition> request = decode_data<GetPosition>(in.data);
+  GetPositionAck ack;
+  if (!request || request->count > ack.points.size()) {
+    ack.code = AckCode::kError;
+  } else {
+    ack.count = request->count;
+    ack.task_index = request->task_index;
+    ack.base_time = request->base_time;
+    const int64_t base_us = unix_us_of(request->base_time);
+    for (size_t i = 0; i < request->count; ++i) {
+      const PositionRequestPoint& p = request->points[i];
+      const double t =
+          static_cast<double>(base_us + p.time_offset_us - options_.flight.start_utc_us) / 1e6;
+      const AirframeState s = flight_.state_at(t);
+      TargetPosition& out = ack.points[i];
+      out.event = p.event;
+      out.time_offset_us = p.time_offset_us;
+      out.solution = PositionSolution::kFixed;
+      out.uav_pitch_deg = static_cast<int16_t>(std::lround(s.pitch_rad * kRadToDeg));
+      out.uav_roll_deg = static_cast<int16_t>(std::lround(s.roll_rad * kRadToDeg));
+      out.uav_yaw_deg = static_cast<int16_t>(std::lround(s.yaw_rad * kRadToDeg));
+      out.longitude_deg = s.longitude_deg;
+      out.latitude_deg = s.latitude_deg;
+      out.height_m = s.altitude_msl_m;
+      out.longitude_std_dev = 0.02f;
+      out.latitude_std_dev = 0.02f;
+      out.height_std_dev = 0.03f;
+    }
+    // More than 4 points do not fit in DATA (docs/psdk.md): refuse rather than truncate.
+    if (!validate(ack)) {
+      ack = GetPositionAck{};
+      ack.code = AckCode::kError;
+    }
+  }
+  Result<Data> data = encode_data(ack);
+  if (!data) return std::nullopt;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (ack.code == AckCode::kOk) ++stats_.positions_answered;
+    if (roll(protocol_faults_.drop_ack_rate)) {
+      ++stats_.acks_dropped;
+      return std::nullopt;
+    }
+    if (protocol_faults_.delay_ack_ms > 0 && roll(protocol_faults_.delay_ack_rate)) {
+      ++stats_.acks_delayed;
+      const auto delay =
+          std::chrono::microseconds(static_cast<int64_t>(protocol_faults_.delay_ack_ms * 1000.0));
+      delayed_.push_back({std::chrono::steady_clock::now() + delay, in.header, data.value()});
+      return std::nullopt;
+    }
+  }
+  return data.value();
+}
+
+void AdapterSimulator::flush_delayed_acks() {
+  std::vector<DelayedAck> due;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto now = std::chrono::steady_clock::now();
+    while (!delayed_.empty() && delayed_.front().due <= now) {
+      due.push_back(delayed_.front());
+      delayed_.pop_front();
+    }
+  }
+  for (const DelayedAck& d : due) session_->send_ack(d.header, d.data);
+}
+
+// --- identity verification -----------------------------------------------------------------------
+
+IdentityResult AdapterSimulator::verify_identity() {
+  IdentityVerification command;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::uniform_int_distribution<int> nonzero(1, 255);  // all 16 bytes count (psdk_crc.md)
+    for (uint8_t& b : command.random) b = static_cast<uint8_t>(nonzero(random_));
+  }
+  IdentityResult result;
+  AckResult raw;
+  const Result<IdentityVerificationAck> ack = session_->request(command, &raw);
+  if (!ack) {
+    result.detail = ack.error();
+  } else {
+    result.answered = true;
+    result.passed = identity_answer_matches(options_.credentials.app_key, command, ack.value());
+    result.detail = result.passed               ? "payload proved the app key"
+                    : ack->code != AckCode::kOk ? "payload refused: " + ack_code_text(raw.code())
+                                                : "MD5 does not match the app key";
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++(result.passed ? stats_.identity_passed : stats_.identity_failed);
+  return result;
+}
+
+// --- switches and readings
+// -------------------------------------------------------------------------
+
+void AdapterSimulator::set_byte_faults(const ByteFaults& faults) {
+  faulty_->set_faults(faults);
+}
+
+void AdapterSimulator::set_protocol_faults(const ProtocolFaults& faults) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  protocol_faults_ = faults;
+}
+
+void AdapterSimulator::silence_for(std::chrono::milliseconds duration) {
+  faulty_->silence_for(duration);
+}
+
+void AdapterSimulator::disconnect_for(std::chrono::milliseconds duration) {
+  faulty_->disconnect_for(duration);
+}
+
+void AdapterSimulator::jump_sequence(uint16_t count) {
+  session_->skip_sequence(count);
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++stats_.sequence_jumps;
+}
+
+void AdapterSimulator::announce_power_off() {
+  const double now = elapsed_s();
+  std::lock_guard<std::mutex> lock(mutex_);
+  power_off_from_s_ = now;
+}
+
+AdapterStats AdapterSimulator::stats() const {
+  AdapterStats s;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    s = stats_;
+  }
+  s.session = session_->stats();
+  s.byte_faults = faulty_->fault_stats();
+  return s;
+}
+
+std::vector<std::string> AdapterSimulator::floating_window_messages() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return floating_window_;
+}
+
+}  // namespace k40t::psdk::sim
