@@ -153,9 +153,10 @@ class Services(unittest.TestCase):
             self.call_ok("record", Record, start=True, lens=Record._request_class.LENS_STREAM, folder="", name="clip")
             rec = self.record_status.wait_for_match(lambda m: m.state == RecordStatus.STATE_RECORDING, 5.0)
             self.assertIsNotNone(rec, "record/status never showed recording")
+            stopping = time.time()  # the "stopped" status may come with the ACK
             self.call_ok("record", Record, start=False, lens=Record._request_class.LENS_STREAM, folder="", name="")
             stopped = self.record_status.wait_for_match(lambda m: m.state == RecordStatus.STATE_STOPPED, 5.0,
-                                                        since=time.time())
+                                                        since=stopping)
             self.assertIsNotNone(stopped, "record/status never showed the recording stopped")
         finally:
             reconfigure.update_configuration({"camera_mode": 0})
