@@ -12,6 +12,7 @@ target_include_directories(k40t_ros SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
 target_link_libraries(k40t_ros PUBLIC k40t_core ${catkin_LIBRARIES})
 # Generated message/service headers and the dynamic_reconfigure K40tConfig.h.
 add_dependencies(k40t_ros ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg)
+include(cmake/video_ros.cmake)  # the video nodelet's dependencies
 
 # One executable per src/ros/nodes/*.cpp (k40t_node, ...), each a thin main() over k40t_ros.
 file(GLOB K40T_ROS_NODES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/nodes/*.cpp)

@@ -190,6 +190,18 @@ const std::vector<OptionSpec>& option_table() {
          o.control_endpoint = v;
          return Status::ok();
        }},
+      {"--rtsp-port", "PORT",
+       "also serve the pod's video on rtsp://127.0.0.1:PORT/live/single (the pod's own is port "
+       "558), rendered from the model: image mode, palette, zoom and gimbal show in the picture; "
+       "0 picks a free port",
+       [](SimOptions& o, const std::string& option, const std::string& v) {
+         const auto port = parse_number(option, v, 0, 65535);
+         if (!port) return port.status();
+         if (*port != std::floor(*port))
+           return Status::fail(option + ": '" + v + "' is not a port number");
+         o.rtsp_port = static_cast<int>(*port);
+         return Status::ok();
+       }},
       {"--verbose", nullptr, "print every frame sent and received",
        [](SimOptions& o, const std::string&, const std::string&) {
          o.verbose = true;

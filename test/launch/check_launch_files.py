@@ -19,8 +19,11 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 
 # Arg combinations worth checking beyond the defaults: each branch of an if/unless.
 VARIANTS = {
-    "k40t.launch": [["sim:=true"], ["manager:=/pod_manager"], ["publish_tf:=false", "ns:=pod2"]],
-    "sim.launch": [["manager:=/pod_manager"]],
+    "k40t.launch": [["sim:=true"], ["manager:=/pod_manager"], ["publish_tf:=false", "ns:=pod2"],
+                    ["video:=true"], ["sim:=true", "video:=true", "manager:=/pod_manager"]],
+    "sim.launch": [["manager:=/pod_manager"], ["video:=true"]],
+    "video.launch": [["manager:=/pod_manager", "backend:=ffmpeg"]],
+    "demo.launch": [["video:=false"]],
     "record.launch": [["raw_only:=true", "duration:=5"]],
     "replay.launch": [["sim_time:=true", "rate:=2.0"]],
     "latency.launch": [["in_manager:=true"]],
@@ -31,6 +34,7 @@ def launch_files():
     files = sorted(glob.glob(os.path.join(ROOT, "launch", "*.launch")))
     files += sorted(glob.glob(os.path.join(ROOT, "test", "ros", "*.test")))
     files += sorted(glob.glob(os.path.join(ROOT, "bench", "ros", "*.launch")))
+    files += sorted(glob.glob(os.path.join(ROOT, "bench", "video", "*.launch")))
     return files
 
 

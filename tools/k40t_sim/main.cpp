@@ -1,12 +1,16 @@
 // k40t_sim: the simulated K40T pod (see docs/simulator.md).
-//   k40t_sim --link pty:/tmp/k40t_pod [--control 5761] [--capture /tmp/pod] [faults...]
+//   k40t_sim --link pty:/tmp/k40t_pod [--control 5761] [--capture /tmp/pod] [--rtsp-port 8554]
+//            [faults...]
 // Runs until SIGINT/SIGTERM. Exit codes: 0 normal, 1 could not start, 2 bad arguments.
 #include <csignal>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "k40t_driver/sim/pod_server.h"
+#include "k40t_driver/sim/video/model_snapshot.h"
+#include "k40t_driver/sim/video/rtsp_stream_server.h"
 
 namespace {
 
@@ -53,6 +57,24 @@ int main(int argc, char** argv) {
     if (server.control_port() > 0) std::printf(" (port %d)", server.control_port());
     std::printf("\n");
   }
+  std::unique_ptr<k40t::sim::video::RtspStreamServer> video;
+  if (options->rtsp_port) {
+    k40t::sim::video::RtspServerOptions video_options;
+    video_options.port = *options->rtsp_port;
+    auto started_video = k40t::sim::video::RtspStreamServer::start(video_options, [&server] {
+      k40t::sim::video::VideoSnapshot snapshot;
+      server.with_model(
+          [&](k40t::sim::PodModel& model) { snapshot = k40t::sim::video::snapshot_of(model); });
+      return snapshot;
+    });
+    if (!started_video) {
+      std::fprintf(stderr, "k40t_sim: %s\n", started_video.error().c_str());
+      server.stop();
+      return 1;
+    }
+    video = std::move(started_video.value());
+    std::printf("k40t_sim: video %s\n", video->url().c_str());
+  }
   if (options->capture_prefix) {
     std::printf("k40t_sim: capturing to %s.tx.bin and %s.rx.bin\n",
                 options->capture_prefix->c_str(), options->capture_prefix->c_str());
@@ -63,6 +85,7 @@ int main(int argc, char** argv) {
   sigwait(&signals, &signal);
   std::printf("k40t_sim: %s, stopping; %s\n", signal == SIGINT ? "interrupted" : "terminated",
               server.status().c_str());
+  video.reset();
   server.stop();
   return 0;
 }

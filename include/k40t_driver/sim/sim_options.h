@@ -33,7 +33,8 @@ struct SimOptions {
   uint32_t seed = 1;
   std::optional<std::string> capture_prefix;
   std::optional<std::string> control_endpoint;
-  double tick_s = 0.01;  // model step and report scheduling period
+  std::optional<int> rtsp_port;  // serve the video on rtsp://127.0.0.1:PORT/live/single (0: any)
+  double tick_s = 0.01;          // model step and report scheduling period
   bool verbose = false;
   bool help = false;
 };

@@ -1,0 +1,55 @@
+// camera_info for whatever the stream shows: one camera_info_manager per lens (tele, wide,
+// thermal; each with its own URL and set_camera_info service under ~tele, ~wide, ~thermal), or
+// the lens's nominal optics as an ideal pinhole when it is not calibrated; resized to the frame
+// and scaled by the zoom the pod reports:
+//   tele     optical part: focal length reported (0x000005) / focal length at calibration;
+//            digital part (above the optical range): zoom ratio / optical ratio
+//   thermal  the thermal digital zoom (0x000105, read back through the driver's settings)
+//   wide     the configured wide digital zoom (the pod reports none)
+// Split screen: the tele intrinsics of the left panel, placed where that panel is in the frame.
+// Distortion coefficients are those of the calibration, unchanged.
+#pragma once
+
+#include <array>
+#include <memory>
+
+#include <camera_info_manager/camera_info_manager.h>
+#include <ros/node_handle.h>
+#include <sensor_msgs/CameraInfo.h>
+
+#include "k40t_driver/ros/video/video_config.h"
+#include "k40t_driver/video/intrinsics.h"
+
+namespace k40t::driver {
+
+// What the pod last said about its zoom.
+struct ZoomState {
+  double focal_length_mm = 0;  // 0: not reported yet
+  double zoom_ratio = 1;
+  int thermal_zoom = 1;
+};
+
+// The tele's optical and digital zoom factors relative to intrinsics taken at
+// `reference_focal_mm` (the calibration's focal length, or the 1x focal length of the nominal
+// optics).
+struct TeleZoom {
+  double optical = 1;
+  double digital = 1;
+};
+TeleZoom tele_zoom(const VideoConfig& config, const ZoomState& zoom, double reference_focal_mm);
+
+class LensModels {
+ public:
+  LensModels(const ros::NodeHandle& private_nh, const VideoConfig& config);
+
+  sensor_msgs::CameraInfo camera_info(const video::StreamView& view, cv::Size frame,
+                                      const ZoomState& zoom) const;
+
+ private:
+  video::Intrinsics at_1x(video::Lens lens, cv::Size frame) const;
+
+  const VideoConfig& config_;
+  std::array<std::unique_ptr<camera_info_manager::CameraInfoManager>, 3> managers_;
+};
+
+}  // namespace k40t::driver

@@ -1,0 +1,18 @@
+// k40t_video_node: the video streamer as a standalone node (the nodelet k40t_driver/VideoNodelet
+// is the same thing inside a nodelet manager).
+#include <ros/ros.h>
+
+#include "k40t_driver/ros/video/video_streamer.h"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "video");
+  ros::NodeHandle nh;
+  ros::NodeHandle private_nh("~");
+  auto streamer = k40t::driver::VideoStreamer::create(nh, private_nh);
+  if (!streamer) {
+    ROS_FATAL("K40T video not started: %s", streamer.error().c_str());
+    return 1;
+  }
+  ros::spin();
+  return 0;
+}

@@ -1,0 +1,117 @@
+#include "k40t_driver/ros/video/lens_models.h"
+
+#include <algorithm>
+
+namespace k40t::driver {
+
+namespace {
+
+constexpr std::array<video::Lens, 3> kLenses{video::Lens::kTele, video::Lens::kWide,
+                                             video::Lens::kThermal};
+
+const NominalOptics& nominal(const VideoConfig& config, video::Lens lens) {
+  switch (lens) {
+    case video::Lens::kWide:
+      return config.wide;
+    case video::Lens::kThermal:
+      return config.thermal;
+    case video::Lens::kTele:
+      break;
+  }
+  return config.tele;
+}
+
+video::Intrinsics from_message(const sensor_msgs::CameraInfo& info) {
+  video::Intrinsics in;
+  std::copy(info.K.begin(), info.K.end(), in.K.begin());
+  std::copy(info.P.begin(), info.P.end(), in.P.begin());
+  in.width = static_cast<int>(info.width);
+  in.height = static_cast<int>(info.height);
+  return in;
+}
+
+}  // namespace
+
+TeleZoom tele_zoom(const VideoConfig& config, const ZoomState& zoom, double reference_focal_mm) {
+  const double ratio = std::max(1.0, zoom.zoom_ratio);
+  const double one_x = config.tele.focal_length_mm;
+  // Without a reported focal length the optical part is the ratio up to the optical maximum.
+  const double focal = zoom.focal_length_mm > 0
+                           ? zoom.focal_length_mm
+                           : one_x * std::min(ratio, config.tele_max_optical_zoom);
+  TeleZoom out;
+  out.optical = focal / reference_focal_mm;
+  out.digital = std::max(1.0, ratio * one_x / focal);
+  return out;
+}
+
+LensModels::LensModels(const ros::NodeHandle& private_nh, const VideoConfig& config)
+    : config_(config) {
+  for (video::Lens lens : kLenses) {
+    const std::string name = video::to_string(lens);
+    ros::NodeHandle lens_nh(private_nh, name);
+    managers_[static_cast<size_t>(lens)] = std::make_unique<camera_info_manager::CameraInfoManager>(
+        lens_nh, config.frame_prefix + name, config.calibration_urls[static_cast<size_t>(lens)]);
+  }
+}
+
+video::Intrinsics LensModels::at_1x(video::Lens lens, cv::Size frame) const {
+  auto& manager = *managers_[static_cast<size_t>(lens)];
+  if (manager.isCalibrated()) {
+    const sensor_msgs::CameraInfo info = manager.getCameraInfo();
+    const video::Intrinsics calibrated = from_message(info);
+    if (calibrated.width > 0 && calibrated.height > 0 &&
+        (calibrated.width != frame.width || calibrated.height != frame.height)) {
+      return video::resized(calibrated, frame.width, frame.height);
+    }
+    return calibrated;
+  }
+  const NominalOptics& optics = nominal(config_, lens);
+  return video::ideal_pinhole(frame.width * optics.focal_length_mm / optics.sensor_width_mm,
+                              frame.width, frame.height);
+}
+
+sensor_msgs::CameraInfo LensModels::camera_info(const video::StreamView& view, cv::Size frame,
+                                                const ZoomState& zoom) const {
+  auto& manager = *managers_[static_cast<size_t>(view.lens)];
+  video::Intrinsics in = at_1x(view.lens, frame);
+  switch (view.lens) {
+    case video::Lens::kTele: {
+      const TeleZoom z = tele_zoom(config_, zoom,
+                                   manager.isCalibrated() ? config_.tele_calibration_focal_length_mm
+                                                          : config_.tele.focal_length_mm);
+      in = video::zoom_digital(video::zoom_optical(in, z.optical), z.digital);
+      break;
+    }
+    case video::Lens::kThermal:
+      in = video::zoom_digital(in, std::clamp(zoom.thermal_zoom, 1, 8));
+      break;
+    case video::Lens::kWide:
+      in = video::zoom_digital(in, config_.wide_digital_zoom);
+      break;
+  }
+  if (view.split) {
+    const video::SplitLayout layout = video::split_layout(frame);
+    in = video::placed(in, static_cast<double>(layout.visible.width) / frame.width,
+                       layout.visible.x, layout.visible.y, frame.width, frame.height);
+  }
+
+  sensor_msgs::CameraInfo info;
+  if (manager.isCalibrated()) {
+    const sensor_msgs::CameraInfo calibrated = manager.getCameraInfo();
+    info.distortion_model = calibrated.distortion_model;
+    info.D = calibrated.D;
+    info.R = calibrated.R;
+  } else {
+    info.distortion_model = "plumb_bob";
+    info.D.assign(5, 0.0);
+    info.R = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  }
+  std::copy(in.K.begin(), in.K.end(), info.K.begin());
+  std::copy(in.P.begin(), in.P.end(), info.P.begin());
+  info.width = static_cast<uint32_t>(in.width);
+  info.height = static_cast<uint32_t>(in.height);
+  return info;
+}
+
+}  // namespace k40t::driver
