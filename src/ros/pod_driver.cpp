@@ -203,6 +203,11 @@ void PodDriver::send_rate_output(const RateCommander::Output& output) {
   if (output.control) request_async(*output.control, ignore);
 }
 
+void PodDriver::set_clock_offset_ms(int64_t offset_ms) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  clock_offset_ms_ = offset_ms;
+}
+
 void PodDriver::set_vehicle_state(const VehicleState& state) {
   std::lock_guard<std::mutex> lock(mutex_);
   vehicle_ = state;
@@ -215,7 +220,10 @@ VehicleState PodDriver::vehicle_state() const {
 
 void PodDriver::send_time_sync() {
   protocol::TimeSyncRequest sync;
-  sync.unix_time_ms = unix_time_ms_now();
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    sync.unix_time_ms = unix_time_ms_now() + clock_offset_ms_;
+  }
   sync.tz_minutes_west = 0;  // UTC: the pod's files are named in UTC
   request_async(sync, [](const AckResult&) {});
   std::lock_guard<std::mutex> lock(mutex_);
