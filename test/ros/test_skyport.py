@@ -16,7 +16,7 @@ from geometry_msgs.msg import QuaternionStamped, TwistStamped
 from sensor_msgs.msg import BatteryState, Imu, NavSatFix, TimeReference
 from std_msgs.msg import Bool, UInt8MultiArray
 
-from k40t_driver.msg import BarometricAltitude, LinkBandwidth, UavState
+from k40t_driver.msg import BarometricAltitude, CameraStatus, LinkBandwidth, UavState
 from k40t_driver.srv import GetPosition
 from k40t_test_support import Diagnostics, Recorder, SimControl, name, service, wait_until
 
@@ -66,6 +66,7 @@ class Skyport(unittest.TestCase):
         cls.utc = Recorder(name("skyport/utc_time"), TimeReference)
         cls.fix = Recorder(name("fix"), NavSatFix)
         cls.from_mobile = Recorder(name("skyport/transparent/from_mobile"), UInt8MultiArray)
+        cls.camera = Recorder(name("camera/status"), CameraStatus)
         cls.diagnostics = Diagnostics()
         # The bridge is up when it answers identity verification (until then: no ACK).
         cls.identity = wait_until(
@@ -231,6 +232,30 @@ class Skyport(unittest.TestCase):
         self.assertTrue(wait_until(state_reached, 10.0), "gimbal state: %s" % self.skyport("gimbal_state"))
         code, _ = self.command("gimbal 0 10 0")  # the pod takes no roll command
         self.assertEqual(code, 0x01)
+
+    # --- DJI Pilot widgets -------------------------------------------------------------------------
+
+    def test_widgets(self):
+        self.assertEqual(self.command("send 2 4"), (0x00, b"\x04"))  # palette, image mode, laser, record
+        code, data = self.command("send 2 5 01")
+        self.assertEqual(code, 0x00)
+        self.assertEqual(data[0], 4)  # choose list
+        self.assertIn(b"Image mode", data)
+        # Image mode "Split" (item 2) -> the pod's image mode 7, seen in camera/status.
+        self.assertEqual(self.command("send 2 8 04 01 02 00 00 00"), (0x00, b""))
+        self.assertTrue(self.camera.wait_for_match(lambda m: m.image_mode == 7, 10.0),
+                        "the pod's image mode did not change")
+        # Laser ranging button -> one ranging, its result in DJI Pilot's floating window.
+        self.assertEqual(self.command("send 2 8 01 02 01 00 00 00"), (0x00, b""))
+        self.assertTrue(wait_until(lambda: "laser range" in self.skyport.ok("floating"), 10.0),
+                        self.skyport.ok("floating"))
+        # Palette "Iron red" (item 4), read back in the group's values.
+        self.assertEqual(self.command("send 2 8 04 00 04 00 00 00"), (0x00, b""))
+        code, data = self.command("send 2 7 00")
+        self.assertEqual(code, 0x00)
+        self.assertEqual(data[0], 4)  # four values
+        self.assertEqual(struct.unpack("<BBi", data[1:7]), (4, 0, 4))
+        self.assertEqual(struct.unpack("<BBi", data[7:13]), (4, 1, 2))
 
     # --- transparent data and positioning ---------------------------------------------------------
 

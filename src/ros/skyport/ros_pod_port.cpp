@@ -7,6 +7,7 @@
 
 #include "k40t_driver/Calibrate.h"
 #include "k40t_driver/Focus.h"
+#include "k40t_driver/MeasureRange.h"
 #include "k40t_driver/Record.h"
 #include "k40t_driver/SetAngle.h"
 #include "k40t_driver/SetPhotoMode.h"
@@ -153,6 +154,21 @@ PodCall RosPodPort::calibrate() {
   return call("gimbal/calibrate", srv);
 }
 
+PodCall RosPodPort::set_palette(int palette) {
+  return reconfigure_int("palette", palette);
+}
+
+PodCall RosPodPort::set_image_mode(int image_mode) {
+  return reconfigure_int("image_mode", image_mode);
+}
+
+PodCall RosPodPort::measure_range(double& range_m) {
+  k40t_driver::MeasureRange srv;
+  PodCall result = call("laser/measure", srv);
+  range_m = srv.response.range;
+  return result;
+}
+
 PodSnapshot RosPodPort::snapshot() const {
   std::lock_guard<std::mutex> lock(mutex_);
   PodSnapshot out = state_;
@@ -192,6 +208,7 @@ void RosPodPort::on_camera(const k40t_driver::CameraStatus::ConstPtr& msg) {
     state_.burst_count = msg->burst_count;
     state_.timelapse_interval_s = msg->timelapse_interval_s;
     state_.sd_state = msg->sd_state;
+    state_.image_mode = msg->image_mode;
     state_.sd_total_mb = msg->sd_total_mb;
     state_.sd_free_mb = msg->sd_free_mb;
   }

@@ -4,10 +4,13 @@
 #include <cmath>
 
 #include "k40t_driver/psdk/identity.h"
+#include "k40t_driver/ros/skyport/ack_reply.h"
 
 namespace k40t::driver::skyport {
 
 using namespace psdk;
+using detail::refused;
+using detail::reply_data;
 
 namespace {
 
@@ -18,27 +21,6 @@ constexpr uint8_t kPhotoSingle = 0, kPhotoBurst = 1, kPhotoTimelapse = 2;
 constexpr uint8_t kSdOk = 0, kSdAbnormal = 1, kSdMissing = 3, kSdFull = 4, kSdFormatError = 5;
 // The pod's stream is 1920x1080; a PSDK focus zone point becomes a box around it.
 constexpr double kStreamWidth = 1920, kStreamHeight = 1080, kFocusBoxHalf = 100;
-
-template <class Ack>
-Data reply_data(const Ack& ack) {
-  if constexpr (std::is_same_v<Ack, AckCode>) {
-    Data d;
-    d.bytes[0] = static_cast<uint8_t>(ack);
-    d.size = 1;
-    return d;
-  } else {
-    const Result<Data> data = encode_data(ack);
-    if (data) return data.value();
-    return reply_data(AckCode::kError);  // our own reply is invalid: say so rather than lie
-  }
-}
-
-template <class Ack>
-Ack refused(AckCode code) {
-  Ack ack;
-  ack.code = code;
-  return ack;
-}
 
 uint16_t clamp_px(double v, double hi) {
   return static_cast<uint16_t>(std::lround(std::clamp(v, 0.0, hi)));
@@ -58,6 +40,7 @@ SkyportBridge::SkyportBridge(Session& session, PodPort& pod, BridgeOptions optio
   register_camera_lens();
   register_gimbal();
   register_battery();
+  register_widgets();
   worker_ = std::thread([this] { run_worker(); });
 }
 
@@ -86,22 +69,6 @@ void SkyportBridge::run_worker() {
     job();
     lock.lock();
   }
-}
-
-template <class Cmd, class F>
-void SkyportBridge::deferred(F answer) {
-  session_.on_command(Cmd::key(), [this, answer](const IncomingCommand& in) -> std::optional<Data> {
-    const Result<Cmd> command = decode_data<Cmd>(in.data);
-    if (!command) return reply_data(AckCode::kError);
-    {
-      std::lock_guard<std::mutex> lock(jobs_mutex_);
-      jobs_.push_back([this, answer, header = in.header, c = command.value()] {
-        session_.send_ack(header, reply_data(answer(c)));
-      });
-    }
-    jobs_wake_.notify_one();
-    return std::nullopt;
-  });
 }
 
 AckCode SkyportBridge::pod_code(const PodCall& call, const char* what) {

@@ -153,7 +153,13 @@ SkyportRos::SkyportRos(ros::NodeHandle nh, ros::NodeHandle private_nh, SkyportCo
       diagnostics_(nh, private_nh) {
   advertise();
   pod_ = std::make_unique<RosPodPort>(nh_, config_.reconfigure, config_.service_timeout_s,
-                                      [this](const std::string& text) { floating_window(text); });
+                                      [this](const std::string& text) {
+                                        // Pod events become floating-window messages (subscriptions
+                                        // may fire before the bridge exists: those early events are
+                                        // dropped).
+                                        if (SkyportBridge* bridge = bridge_ptr_.load())
+                                          bridge->floating_window(text);
+                                      });
   bridge_ = std::make_unique<SkyportBridge>(
       *session_, *pod_, config_.bridge,
       [this](const BatteryInfoPush& push) {
@@ -175,6 +181,7 @@ SkyportRos::SkyportRos(ros::NodeHandle nh, ros::NodeHandle private_nh, SkyportCo
         }
       },
       [](const std::string& text) { ROS_WARN("%s", text.c_str()); });
+  bridge_ptr_ = bridge_.get();
   register_pushes();
   register_transparent();
   session_->on_frame([this](const FrameView&) {
@@ -192,7 +199,9 @@ SkyportRos::SkyportRos(ros::NodeHandle nh, ros::NodeHandle private_nh, SkyportCo
 SkyportRos::~SkyportRos() {
   // The link stops first: no handler may run into a half-destroyed glue.
   session_->stop();
-  bridge_.reset();
+  bridge_ptr_ = nullptr;  // pod events no longer reach the bridge
+  bridge_.reset();        // joins its worker, which may still be calling the pod
+  pod_.reset();
 }
 
 void SkyportRos::advertise() {
@@ -375,13 +384,6 @@ void SkyportRos::register_transparent() {
   };
   session_->on_command(TransparentFromMobile::key(), forward(from_mobile_));
   session_->on_command(TransparentFromOnboard::key(), forward(from_onboard_));
-}
-
-void SkyportRos::floating_window(const std::string& text) {
-  FloatingWindowMessage message;
-  message.text = text.substr(0, 127);
-  const Status sent = session_->send(message);
-  if (!sent) ROS_WARN_THROTTLE(5.0, "SKYPORT floating window: %s", sent.message().c_str());
 }
 
 namespace {

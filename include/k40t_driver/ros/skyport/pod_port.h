@@ -30,6 +30,8 @@ struct PodSnapshot {
   bool recording = false;  // record/status RECORDING (or time-lapse recording), recent
   uint16_t record_duration_s = 0;
 
+  uint8_t image_mode = 0;  // CameraStatus IMAGE_*: 0 thermal, 5/6 visible, 7 split
+
   bool have_visible = false;  // visible/status
   double zoom_ratio = 1;
   double focal_length_mm = 0;
@@ -55,6 +57,10 @@ class PodPort {
   virtual PodCall set_rate(double pitch_rad_s, double yaw_rad_s) = 0;  // dead-man 0.5 s
   virtual PodCall center() = 0;
   virtual PodCall calibrate() = 0;
+  virtual PodCall set_palette(int palette) = 0;        // K40t.cfg `palette` 1..20
+  virtual PodCall set_image_mode(int image_mode) = 0;  // K40t.cfg `image_mode` 0, 5, 7
+  // One laser ranging; `range_m` is +Inf when the laser got no return.
+  virtual PodCall measure_range(double& range_m) = 0;
   virtual PodSnapshot snapshot() const = 0;
 };
 

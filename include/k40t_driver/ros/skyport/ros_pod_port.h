@@ -41,6 +41,9 @@ class RosPodPort : public PodPort {
   PodCall set_rate(double pitch_rad_s, double yaw_rad_s) override;
   PodCall center() override;
   PodCall calibrate() override;
+  PodCall set_palette(int palette) override;
+  PodCall set_image_mode(int image_mode) override;
+  PodCall measure_range(double& range_m) override;
   PodSnapshot snapshot() const override;
 
  private:

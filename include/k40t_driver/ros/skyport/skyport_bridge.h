@@ -17,6 +17,7 @@
 
 #include "k40t_driver/psdk/commands/all.h"
 #include "k40t_driver/psdk/session.h"
+#include "k40t_driver/ros/skyport/ack_reply.h"
 #include "k40t_driver/ros/skyport/pod_port.h"
 
 namespace k40t::driver::skyport {
@@ -59,6 +60,8 @@ class SkyportBridge {
   SkyportBridge& operator=(const SkyportBridge&) = delete;
 
   BridgeStats stats() const;
+  // A message for DJI Pilot's floating window (0x02/0x03), at most 127 bytes (longer is cut).
+  void floating_window(const std::string& text);
 
  private:
   void register_payload_state();
@@ -66,6 +69,8 @@ class SkyportBridge {
   void register_camera_lens();
   void register_gimbal();
   void register_battery();
+  void register_widgets();  // skyport_widgets.cpp
+  psdk::AckCode set_widget(const psdk::WidgetValue& widget);
 
   // A command answered from the worker: `answer(const Cmd&)` returns Cmd::Ack or an AckCode.
   template <class Cmd, class F>
@@ -91,7 +96,7 @@ class SkyportBridge {
   float focus_x_ = 0.5f, focus_y_ = 0.5f;
   bool calibrated_ = false;
   bool power_off_job_pending_ = false;  // the pod acknowledged a calibration
-  psdk::GimbalMode gimbal_mode_ = psdk::GimbalMode::kFree;
+  int32_t palette_item_ = 0;            // the palette widget's choice (worker thread only)
 
   std::mutex jobs_mutex_;
   std::condition_variable jobs_wake_;
@@ -99,5 +104,24 @@ class SkyportBridge {
   bool stopping_ = false;
   std::thread worker_;
 };
+
+// --- template ------------------------------------------------------------------------------------
+
+template <class Cmd, class F>
+void SkyportBridge::deferred(F answer) {
+  session_.on_command(Cmd::key(),
+                      [this, answer](const psdk::IncomingCommand& in) -> std::optional<psdk::Data> {
+                        const Result<Cmd> command = psdk::decode_data<Cmd>(in.data);
+                        if (!command) return detail::reply_data(psdk::AckCode::kError);
+                        {
+                          std::lock_guard<std::mutex> lock(jobs_mutex_);
+                          jobs_.push_back([this, answer, header = in.header, c = command.value()] {
+                            session_.send_ack(header, detail::reply_data(answer(c)));
+                          });
+                        }
+                        jobs_wake_.notify_one();
+                        return std::nullopt;
+                      });
+}
 
 }  // namespace k40t::driver::skyport

@@ -5,6 +5,7 @@
 // diagnostics. Run by SkyportNodelet and k40t_skyport_node. See docs/skyport.md.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <memory>
 #include <mutex>
@@ -57,7 +58,6 @@ class SkyportRos {
   void advertise();
   void register_pushes();
   void register_transparent();
-  void floating_window(const std::string& text);
   void on_to_mobile(const std_msgs::UInt8MultiArray::ConstPtr& msg);
   void on_to_onboard(const std_msgs::UInt8MultiArray::ConstPtr& msg);
   bool on_get_position(k40t_driver::GetPosition::Request& req,
@@ -69,6 +69,7 @@ class SkyportRos {
   std::unique_ptr<psdk::Session> session_;
   std::unique_ptr<RosPodPort> pod_;
   std::unique_ptr<SkyportBridge> bridge_;
+  std::atomic<SkyportBridge*> bridge_ptr_{nullptr};
 
   ros::Publisher attitude_, imu_, gps_, relative_height_, raw_gps_, raw_gps_velocity_, rtk_,
       rtk_velocity_, battery_, power_off_, uav_state_, link_, baro_, app_time_, utc_time_,
