@@ -1,6 +1,7 @@
 #include "k40t_driver/ros/pod_driver.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <ctime>
 
 #include "k40t_driver/protocol/messages/camera_system.h"
@@ -204,8 +205,16 @@ void PodDriver::send_rate_output(const RateCommander::Output& output) {
 }
 
 void PodDriver::set_clock_offset_ms(int64_t offset_ms) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  clock_offset_ms_ = offset_ms;
+  bool changed = false;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    changed = std::llabs(offset_ms - clock_offset_ms_) > 1000;
+    clock_offset_ms_ = offset_ms;
+  }
+  // A new reference (the first one, or a jump): set the pod's clock now, not a period later.
+  if (changed && options_.time_sync_period_s > 0 && session_ &&
+      link_state() == transport::LinkState::kConnected)
+    send_time_sync();
 }
 
 void PodDriver::set_vehicle_state(const VehicleState& state) {

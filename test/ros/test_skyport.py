@@ -76,6 +76,17 @@ class Skyport(unittest.TestCase):
         """Sends a command through skyport_sim; (code, data) of the bridge's ACK."""
         return ack(self.skyport(line, 15.0))
 
+    def command_ok(self, line):
+        """Like command(), retried while the pod refuses because it is still storing the photo of
+        an earlier test ("taking photo", 0x0203, comes back as 0x01); asserts 0x00 in the end."""
+        replies = []
+
+        def done():
+            replies.append(self.command(line))
+            return replies[-1][0] == 0x00
+        self.assertTrue(wait_until(done, 15.0, step=0.3), "%s: %s" % (line, replies[-1:]))
+        return replies[-1]
+
     def pod_status(self):
         return self.pod.ok("status")
 
@@ -161,12 +172,10 @@ class Skyport(unittest.TestCase):
 
     def test_shoot_photo_is_geotagged_with_the_pushed_position(self):
         self.assertTrue(self.fix.wait_for(1, 15.0), "no fix for the pod yet")
-        code, _ = self.command("work_mode photo")
-        self.assertEqual(code, 0x00)
+        self.command_ok("work_mode photo")
         before = self.pod.ok("photos")
         count = int(before.split()[1])
-        code, _ = self.command("photo")
-        self.assertEqual(code, 0x00)
+        self.command_ok("photo")
         new_photo = lambda: [p for p in self.pod.ok("photos").split("; ")[1:]][count:]
         self.assertTrue(wait_until(new_photo, 10.0), "the pod took no photo: %s" % self.pod.ok("photos"))
         # The geotag is attached when the driver answered the pod's GPS request: wait for it.
@@ -176,16 +185,27 @@ class Skyport(unittest.TestCase):
 
     def video_mode(self):
         # The pod records in video mode only (DJI Pilot switches the work mode first, too).
-        code, _ = self.command("work_mode video")
-        self.assertEqual(code, 0x00)
+        self.command_ok("work_mode video")
         # Read back from the pod's camera status (1 Hz): wait for it to show the change.
         self.assertTrue(wait_until(lambda: self.command("send 4 2") == (0x00, b"\x01"), 10.0),
                         "work mode: %s" % self.skyport("send 4 2"))
 
+    def test_pod_clock_is_set_from_the_skyport_utc(self):
+        # The simulated flight's UTC is 2024-07-01: once the driver set the pod's clock from it, the
+        # pod names its photos with that date.
+        self.assertTrue(self.utc.wait_for(1, 15.0), "no skyport/utc_time")
+        self.command_ok("work_mode photo")
+
+        def photo_of_2024():
+            self.command("photo")  # may be refused while the previous one is stored: retried
+            photos = self.pod.ok("photos").split("; ")[1:]
+            return photos and "_20240701_" in photos[-1]
+        self.assertTrue(wait_until(photo_of_2024, 30.0, step=1.0),
+                        "the pod's clock was not set from the SKYPORT: %s" % self.pod.ok("photos"))
+
     def test_record_start_and_stop(self):
         self.video_mode()
-        code, _ = self.command("record start")
-        self.assertEqual(code, 0x00)
+        self.command_ok("record start")
         self.assertTrue(wait_until(lambda: "recording yes" in self.pod_status(), 10.0), self.pod_status())
         code, data = self.command("record_state")
         self.assertEqual(code, 0x00)
@@ -282,8 +302,7 @@ class Skyport(unittest.TestCase):
 
     def test_zz_power_off_stops_recording_then_acks_ready(self):
         self.video_mode()
-        code, _ = self.command("record start")
-        self.assertEqual(code, 0x00)
+        self.command_ok("record start")
         self.assertTrue(wait_until(lambda: "recording yes" in self.pod_status(), 10.0), self.pod_status())
         self.skyport.ok("power_off")
         self.assertTrue(self.power_off.wait_for_match(lambda m: m.data, 10.0), "no power-off warning topic")

@@ -171,6 +171,29 @@ TEST(PodDriver, TimeSyncEveryPeriodWithTheWallClock) {
   EXPECT_NEAR(gap_s, 0.25, 0.1);
 }
 
+TEST(PodDriver, TimeSyncFollowsABetterClock) {
+  // The SKYPORT's UTC says the system clock is an hour ahead: the pod is set an hour back.
+  const std::string pty = unique_pty("timeref");
+  FakePod pod(pty);
+  DriverOptions o = options_for(pty);
+  o.time_sync_period_s = 0.25;
+  std::unique_ptr<PodDriver> driver = make_driver(o);
+  driver->set_clock_offset_ms(-3'600'000);
+  ASSERT_TRUE(driver->start().is_ok());
+  wait_until_linked(pod, *driver);
+  pod.wait_for(FakePod::count_of(protocol::TimeSyncRequest::kId, 2), milliseconds(3000));
+  const std::vector<SentFrame> syncs = pod.frames_with_id(protocol::TimeSyncRequest::kId);
+  ASSERT_GE(syncs.size(), 2u);
+  Result<protocol::TimeSyncRequest> sync = protocol::decode_payload<protocol::TimeSyncRequest>(
+      syncs.back().payload.data(), syncs.back().payload.size());
+  ASSERT_TRUE(sync.is_ok()) << sync.error();
+  const int64_t now_ms =
+      std::chrono::duration_cast<milliseconds>(std::chrono::system_clock::now().time_since_epoch())
+          .count();
+  EXPECT_NEAR(static_cast<double>(sync->unix_time_ms), static_cast<double>(now_ms - 3'600'000),
+              1000.0);
+}
+
 TEST(PodDriver, PodOnlineOnFirstFrameAndAfterSilence) {
   const std::string pty = unique_pty("online");
   FakePod pod(pty);
