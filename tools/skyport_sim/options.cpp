@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "k40t_driver/sim/number_text.h"
+#include "k40t_driver/sim/option_table.h"
 #include "k40t_driver/sim/sim_options.h"
 
 namespace k40t::skyport_sim {
@@ -12,12 +13,7 @@ namespace {
 
 using psdk::sim::AdapterOptions;
 
-struct OptionSpec {
-  const char* name;
-  const char* argument;  // nullptr for flags
-  const char* help;
-  Status (*apply)(SkyportSimOptions& options, const std::string& option, const std::string& value);
-};
+using OptionSpec = sim::OptionSpec<SkyportSimOptions>;
 
 Status set_number(double& field, const std::string& option, const std::string& value, double lo,
                   double hi) {
@@ -145,10 +141,6 @@ const std::vector<OptionSpec>& option_table() {
   return kOptions;
 }
 
-bool is_ros_argument(const std::string& arg) {
-  return arg.rfind("__", 0) == 0 && arg.find(":=") != std::string::npos;
-}
-
 }  // namespace
 
 Result<std::string> read_key_file(const std::string& path) {
@@ -163,34 +155,8 @@ Result<std::string> read_key_file(const std::string& path) {
 
 Result<SkyportSimOptions> parse_options(const std::vector<std::string>& args) {
   SkyportSimOptions options;
-  for (size_t i = 0; i < args.size(); ++i) {
-    std::string arg = args[i];
-    if (is_ros_argument(arg)) continue;
-    std::optional<std::string> inline_value;
-    if (const size_t eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos) {
-      inline_value = arg.substr(eq + 1);
-      arg = arg.substr(0, eq);
-    }
-    const OptionSpec* spec = nullptr;
-    for (const OptionSpec& candidate : option_table()) {
-      if (arg == candidate.name) spec = &candidate;
-    }
-    if (!spec) return Status::fail("unknown argument '" + arg + "' (see --help)");
-    std::string value;
-    if (spec->argument) {
-      if (inline_value) {
-        value = *inline_value;
-      } else if (i + 1 < args.size()) {
-        value = args[++i];
-      } else {
-        return Status::fail(arg + ": missing " + spec->argument);
-      }
-    } else if (inline_value) {
-      return Status::fail(arg + ": takes no value");
-    }
-    const Status applied = spec->apply(options, arg, value);
-    if (!applied) return applied;
-  }
+  const Status parsed = parse_option_table(option_table(), args, options);
+  if (!parsed) return parsed;
   if (!options.help && options.adapter.credentials.app_key.empty())
     return Status::fail("--app-key-file is required (the key the payload must prove)");
   return options;
@@ -201,10 +167,7 @@ std::string usage() {
   out << "usage: skyport_sim --app-key-file PATH [options]\n"
          "A simulated DJI SKYPORT adapter (PSDK v1): identity verification, data pushes from a\n"
          "simulated flight, camera and gimbal commands on demand (control socket).\n\n";
-  for (const OptionSpec& spec : option_table()) {
-    out << "  " << spec.name << (spec.argument ? std::string(" ") + spec.argument : "") << "\n"
-        << "      " << spec.help << "\n";
-  }
+  out << option_table_usage(option_table());
   return out.str();
 }
 
