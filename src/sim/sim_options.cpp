@@ -16,23 +16,6 @@ Result<double> parse_number(const std::string& option, const std::string& text, 
   return parse_number_in(text, option, lo, hi);
 }
 
-// "AT:AMOUNT", both numbers.
-Result<ScheduledFault> parse_scheduled(const std::string& option, const std::string& text,
-                                       ScheduledFault::Kind kind, double max_amount) {
-  const size_t colon = text.find(':');
-  if (colon == std::string::npos)
-    return Status::fail(option + ": expected AT:AMOUNT (seconds:value), got '" + text + "'");
-  const auto at = parse_number(option + " AT", text.substr(0, colon), 0, 86400);
-  if (!at) return at.status();
-  const auto amount = parse_number(option + " AMOUNT", text.substr(colon + 1), 0, max_amount);
-  if (!amount) return amount.status();
-  ScheduledFault fault;
-  fault.kind = kind;
-  fault.at = std::chrono::milliseconds(std::llround(*at * 1000));
-  fault.amount = *amount;
-  return fault;
-}
-
 using OptionSpec = sim::OptionSpec<SimOptions>;
 
 // Sets a double field from a number within [lo, hi].
@@ -146,21 +129,21 @@ const std::vector<OptionSpec>& option_table() {
        }},
       {"--silence", "AT:S", "send nothing for S seconds, AT seconds after the start",
        [](SimOptions& o, const std::string& option, const std::string& v) {
-         const auto f = parse_scheduled(option, v, ScheduledFault::Kind::kSilence, 3600);
+         const auto f = parse_scheduled_fault(option, v, ScheduledFault::Kind::kSilence, 3600);
          if (!f) return f.status();
          o.scheduled.push_back(*f);
          return Status::ok();
        }},
       {"--disconnect", "AT:S", "close the link for S seconds, AT seconds after the start",
        [](SimOptions& o, const std::string& option, const std::string& v) {
-         const auto f = parse_scheduled(option, v, ScheduledFault::Kind::kDisconnect, 3600);
+         const auto f = parse_scheduled_fault(option, v, ScheduledFault::Kind::kDisconnect, 3600);
          if (!f) return f.status();
          o.scheduled.push_back(*f);
          return Status::ok();
        }},
       {"--seq-jump", "AT:N", "skip N sequence numbers, AT seconds after the start",
        [](SimOptions& o, const std::string& option, const std::string& v) {
-         const auto f = parse_scheduled(option, v, ScheduledFault::Kind::kSequenceJump, 255);
+         const auto f = parse_scheduled_fault(option, v, ScheduledFault::Kind::kSequenceJump, 255);
          if (!f) return f.status();
          o.scheduled.push_back(*f);
          return Status::ok();
@@ -213,6 +196,23 @@ const std::vector<OptionSpec>& option_table() {
 }
 
 }  // namespace
+
+// "AT:AMOUNT", both numbers.
+Result<ScheduledFault> parse_scheduled_fault(const std::string& option, const std::string& text,
+                                             ScheduledFault::Kind kind, double max_amount) {
+  const size_t colon = text.find(':');
+  if (colon == std::string::npos)
+    return Status::fail(option + ": expected AT:AMOUNT (seconds:value), got '" + text + "'");
+  const auto at = parse_number(option + " AT", text.substr(0, colon), 0, 86400);
+  if (!at) return at.status();
+  const auto amount = parse_number(option + " AMOUNT", text.substr(colon + 1), 0, max_amount);
+  if (!amount) return amount.status();
+  ScheduledFault fault;
+  fault.kind = kind;
+  fault.at = std::chrono::milliseconds(std::llround(*at * 1000));
+  fault.amount = *amount;
+  return fault;
+}
 
 Result<std::string> server_side_url(const std::string& link) {
   const auto starts = [&](const char* prefix) { return link.rfind(prefix, 0) == 0; };

@@ -298,6 +298,21 @@ class Skyport(unittest.TestCase):
         self.assertEqual(len(response.positions), 2)
         self.assertAlmostEqual(response.positions[0].latitude, HOME_LAT, delta=CIRCLE_DEG)
 
+    def test_y_diagnostics_error_while_the_adapter_is_silent(self):
+        self.assertTrue(self.diagnostics.wait_level("SKYPORT link", DiagnosticStatus.OK, 20.0))
+        since = time.time()
+        self.skyport.ok("silence 3")
+
+        def silent_error():
+            with self.diagnostics.lock:
+                return [m for t, n, lv, m in self.diagnostics.history
+                        if t >= since and n.endswith(": SKYPORT link") and lv == DiagnosticStatus.ERROR]
+        errors = wait_until(silent_error, 10.0)
+        self.assertTrue(errors, "no ERROR while the adapter was silent: %s" % self.diagnostics.status("SKYPORT link"))
+        self.assertIn("silent", errors[0])
+        self.assertTrue(self.diagnostics.wait_level("SKYPORT link", DiagnosticStatus.OK, 15.0),
+                        "not OK again after the silence")
+
     # --- power-off: last (the announcement stays) -------------------------------------------------
 
     def test_zz_power_off_stops_recording_then_acks_ready(self):

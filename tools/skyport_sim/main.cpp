@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "control.h"
+#include "fault_schedule.h"
 #include "k40t_driver/sim/control_server.h"
 #include "k40t_driver/transport/transport.h"
 #include "options.h"
@@ -59,6 +60,7 @@ int main(int argc, char** argv) {
     }
     std::printf("skyport_sim: control socket %s\n", options->control_endpoint->c_str());
   }
+  skyport_sim::FaultSchedule schedule(adapter, options->scheduled);
   std::fflush(stdout);
 
   int signal = 0;
@@ -67,6 +69,7 @@ int main(int argc, char** argv) {
   std::printf("skyport_sim: stopping; identity passed %llu, failed %llu\n",
               static_cast<unsigned long long>(stats.identity_passed),
               static_cast<unsigned long long>(stats.identity_failed));
+  schedule.stop();
   control.stop();
   adapter.stop();
   return 0;

@@ -29,6 +29,14 @@ Status set_text(std::string& field, const std::string& option, const std::string
   return Status::ok();
 }
 
+Status schedule(SkyportSimOptions& o, const std::string& option, const std::string& value,
+                sim::ScheduledFault::Kind kind, double max_amount) {
+  const auto fault = sim::parse_scheduled_fault(option, value, kind, max_amount);
+  if (!fault) return fault.status();
+  o.scheduled.push_back(*fault);
+  return Status::ok();
+}
+
 const std::vector<OptionSpec>& option_table() {
   static const std::vector<OptionSpec> kOptions = {
       {"--link", "URL",
@@ -116,6 +124,18 @@ const std::vector<OptionSpec>& option_table() {
       {"--seq-jump-rate", "P", "probability per command of a jump of 1..100 sequence numbers",
        [](SkyportSimOptions& o, const std::string& option, const std::string& v) {
          return set_number(o.adapter.protocol_faults.sequence_jump_rate, option, v, 0.0, 1.0);
+       }},
+      {"--silence", "AT:S", "send nothing for S seconds, AT seconds after the start",
+       [](SkyportSimOptions& o, const std::string& option, const std::string& v) {
+         return schedule(o, option, v, sim::ScheduledFault::Kind::kSilence, 3600);
+       }},
+      {"--disconnect", "AT:S", "close the link for S seconds, AT seconds after the start",
+       [](SkyportSimOptions& o, const std::string& option, const std::string& v) {
+         return schedule(o, option, v, sim::ScheduledFault::Kind::kDisconnect, 3600);
+       }},
+      {"--seq-jump", "AT:N", "skip N sequence numbers, AT seconds after the start",
+       [](SkyportSimOptions& o, const std::string& option, const std::string& v) {
+         return schedule(o, option, v, sim::ScheduledFault::Kind::kSequenceJump, 65535);
        }},
       {"--seed", "N", "seed of the random bytes and the fault dice (default 1)",
        [](SkyportSimOptions& o, const std::string& option, const std::string& v) {

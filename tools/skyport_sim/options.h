@@ -9,6 +9,7 @@
 
 #include "k40t_driver/protocol/result.h"
 #include "k40t_driver/psdk/sim/adapter_simulator.h"
+#include "k40t_driver/sim/sim_options.h"
 
 namespace k40t::skyport_sim {
 
@@ -16,6 +17,7 @@ struct SkyportSimOptions {
   std::string link = "pty:///tmp/skyport";  // the transport URL opened (server side)
   psdk::sim::AdapterOptions adapter;
   std::optional<std::string> control_endpoint;
+  std::vector<sim::ScheduledFault> scheduled;  // --silence, --disconnect, --seq-jump
   bool help = false;
 };
 
