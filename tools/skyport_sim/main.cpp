@@ -11,6 +11,7 @@
 #include "control.h"
 #include "fault_schedule.h"
 #include "k40t_driver/sim/control_server.h"
+#include "k40t_driver/sim/stop_signals.h"
 #include "k40t_driver/transport/transport.h"
 #include "options.h"
 
@@ -28,11 +29,7 @@ int main(int argc, char** argv) {
   }
 
   // Signals are taken by this thread (sigwait); every thread started below inherits the mask.
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  const k40t::sim::StopSignals stop_signals;
 
   auto link = transport::make_transport(options->link);
   if (!link) {
@@ -63,10 +60,10 @@ int main(int argc, char** argv) {
   skyport_sim::FaultSchedule schedule(adapter, options->scheduled);
   std::fflush(stdout);
 
-  int signal = 0;
-  sigwait(&signals, &signal);
+  const int signal = stop_signals.wait();
   const psdk::sim::AdapterStats stats = adapter.stats();
-  std::printf("skyport_sim: stopping; identity passed %llu, failed %llu\n",
+  std::printf("skyport_sim: %s, stopping; identity passed %llu, failed %llu\n",
+              signal == SIGINT ? "interrupted" : "terminated",
               static_cast<unsigned long long>(stats.identity_passed),
               static_cast<unsigned long long>(stats.identity_failed));
   schedule.stop();
