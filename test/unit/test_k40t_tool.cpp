@@ -5,11 +5,14 @@
 #include <string>
 #include <vector>
 
-#include "golden_frames.h"
+#include "golden_file.h"
 #include "run_tool.h"
 
 namespace k40t::test {
 namespace {
+
+using testing::GoldenFrame;
+using testing::read_golden_file;
 
 // Section 3.2.5.1 request (see test_frame.cpp) and its ACK (see core_examples.txt).
 const char* kLaserRequestHex = "FD 02 04 01 00 01 01 00 04 00 01 00 A2 56";
