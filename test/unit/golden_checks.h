@@ -20,6 +20,30 @@
 
 namespace k40t::testing {
 
+// Bytes as the golden files write them ("FD 02 04"), so a mismatch reads like the file.
+inline std::string hex_bytes(const std::vector<uint8_t>& bytes) {
+  static const char kDigits[] = "0123456789ABCDEF";
+  std::string out;
+  for (uint8_t b : bytes) {
+    if (!out.empty()) out += ' ';
+    out += kDigits[b >> 4];
+    out += kDigits[b & 0x0F];
+  }
+  return out;
+}
+
+// THE byte comparison: equal, or a failure with both sides in hex and the first differing byte.
+inline ::testing::AssertionResult same_bytes(const std::vector<uint8_t>& actual,
+                                             const std::vector<uint8_t>& expected) {
+  if (actual == expected) return ::testing::AssertionSuccess();
+  size_t at = 0;
+  while (at < actual.size() && at < expected.size() && actual[at] == expected[at]) ++at;
+  return ::testing::AssertionFailure()
+         << "bytes differ from byte " << at << " on (of " << expected.size() << " expected, "
+         << actual.size() << " got)\n  expected: " << hex_bytes(expected)
+         << "\n  got:      " << hex_bytes(actual);
+}
+
 // The frames of test/data/golden/<file>; a file that cannot be read fails the test.
 inline std::vector<GoldenFrame> load_golden(const std::string& file) {
   Result<std::vector<GoldenFrame>> read = read_golden_file(golden_path(file));
@@ -28,9 +52,10 @@ inline std::vector<GoldenFrame> load_golden(const std::string& file) {
 }
 
 // ok: the bytes are exactly one frame with the document's header_excluded checksum (NOTES A1)
-// and nothing before or after it.
+// and nothing before or after it; otherwise `problem` says what the parser saw.
 struct SplitFrame {
   bool ok = false;
+  std::string problem;
   protocol::FrameHeader header;
   std::vector<uint8_t> payload;
 };
@@ -45,14 +70,20 @@ inline SplitFrame split_frame(const GoldenFrame& golden) {
   });
   split.ok = frames == 1 && parser.stats().bytes_discarded == 0 &&
              protocol::kFrameOverhead + split.payload.size() == golden.bytes.size();
+  if (!split.ok) {
+    split.problem = "the bytes are not exactly one frame with a good checksum and nothing else: " +
+                    std::to_string(frames) + " frame(s), " +
+                    std::to_string(parser.stats().checksum_errors) + " checksum error(s), " +
+                    std::to_string(parser.stats().bytes_discarded) + " byte(s) discarded, " +
+                    std::to_string(golden.bytes.size()) + " bytes";
+  }
   return split;
 }
 
 // As split_frame, failing the test (naming the frame) unless the bytes are one good frame.
 inline SplitFrame checked_split(const GoldenFrame& golden) {
   SplitFrame split = split_frame(golden);
-  EXPECT_TRUE(split.ok) << golden.where()
-                        << ": the bytes are not exactly one frame with a good checksum";
+  EXPECT_TRUE(split.ok) << golden.where() << ": " << split.problem;
   return split;
 }
 
@@ -136,7 +167,7 @@ std::vector<uint8_t> encode_like(const T& message, const GoldenFrame& golden,
 template <class T>
 void expect_encodes_to(const T& message, const GoldenFrame& golden,
                        const protocol::CodecOptions& options = {}) {
-  EXPECT_EQ(encode_like(message, golden, options), golden.bytes)
+  EXPECT_TRUE(same_bytes(encode_like(message, golden, options), golden.bytes))
       << golden.where() << ": encoding " << T::kName << " differs from the hand-written bytes";
 }
 
@@ -193,7 +224,7 @@ void expect_matches_golden(const T& hand_built, const std::string& file, size_t 
   ASSERT_TRUE(payload) << golden.where() << ": " << payload.error();
   const std::vector<uint8_t> encoded(payload->data(), payload->data() + payload->size);
   if (encoded.size() == split.payload.size()) {
-    EXPECT_EQ(encoded, split.payload) << golden.where();
+    EXPECT_TRUE(same_bytes(encoded, split.payload)) << golden.where() << ": payload";
   } else {
     // Golden frames that carry less than kSize (a refusal without its settings) only decode.
     EXPECT_LT(split.payload.size(), T::kSize) << golden.where();

@@ -20,7 +20,10 @@ struct GoldenFrame {
   std::vector<uint8_t> bytes;
   FieldValues expected;  // the '=' line, in its order
 
-  std::string where() const { return file + ":" + std::to_string(line); }  // for failures
+  // For failure messages; a frame whose lookup failed (already reported) has no file.
+  std::string where() const {
+    return file.empty() ? "(no golden frame)" : file + ":" + std::to_string(line);
+  }
   protocol::FieldArgs args() const { return {expected.begin(), expected.end()}; }
 };
 

@@ -38,7 +38,7 @@ constexpr Route kCameraToFlightController{kCameraAddress, kFlightControllerAddre
 template <class T>
 void check_golden(const GoldenFrame& golden, Route route) {
   const testing::SplitFrame frame = testing::split_frame(golden);
-  ASSERT_TRUE(frame.ok) << "the bytes are not one frame with a good checksum";
+  ASSERT_TRUE(frame.ok) << frame.problem;
   EXPECT_EQ(frame.header.source, route.source);
   EXPECT_EQ(frame.header.destination, route.destination);
 

@@ -61,7 +61,7 @@ TEST(GimbalLaserSbusGolden, ListsEveryFieldAndUsesTheDirectionsAddresses) {
   ASSERT_FALSE(frames.empty());
   for (const auto& [g, split] : frames) {
     SCOPED_TRACE(g.where());
-    ASSERT_TRUE(split.ok);
+    ASSERT_TRUE(split.ok) << split.problem;
     const MessageInfo* info = find_message(split.header.message_id);
     ASSERT_NE(info, nullptr);
     const Address destination = split.header.destination;

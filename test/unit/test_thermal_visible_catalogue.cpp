@@ -29,7 +29,7 @@ TEST(ThermalVisibleGoldenFile, EveryFrameDecodesToItsExpectedLine) {
   for (const testing::GoldenFrame& frame : golden) {
     SCOPED_TRACE(frame.where() + " " + frame.name);
     const testing::SplitFrame split = testing::split_frame(frame);
-    ASSERT_TRUE(split.ok) << "not exactly one frame with a good checksum";
+    ASSERT_TRUE(split.ok) << split.problem;
     const MessageInfo* info = find_message(split.header.message_id);
     ASSERT_NE(info, nullptr) << "id not in the catalogue";
     EXPECT_TRUE(in_families(info->id));
