@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "byte_checks.h"
 #include "field_recorder.h"
 #include "k40t_driver/protocol/message.h"
 
@@ -32,8 +33,9 @@ void expect_round_trip(const T& message, const protocol::CodecOptions& options =
   EXPECT_EQ(field_differences(record_fields(message), record_fields(decoded.value())), "");
   Result<protocol::Payload> second = protocol::encode_payload(decoded.value(), options);
   ASSERT_TRUE(second) << second.error();
-  EXPECT_EQ(std::vector<uint8_t>(first->data(), first->data() + first->size),
-            std::vector<uint8_t>(second->data(), second->data() + second->size));
+  EXPECT_TRUE(same_bytes(std::vector<uint8_t>(second->data(), second->data() + second->size),
+                         std::vector<uint8_t>(first->data(), first->data() + first->size)))
+      << "re-encoding the decoded message";
 }
 
 // encode_payload refuses `message`, naming `field` and the message in its error.
