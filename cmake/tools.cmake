@@ -7,3 +7,14 @@ if(K40T_TOOL_SOURCES)
     install(TARGETS k40t RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
   endif()
 endif()
+
+# skyport_sim: the simulated DJI SKYPORT adapter (PSDK v1), ROS-free; the control socket is
+# k40t_sim's (k40t_sim_model).
+file(GLOB SKYPORT_SIM_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tools/skyport_sim/*.cpp)
+if(SKYPORT_SIM_SOURCES AND TARGET k40t_psdk AND TARGET k40t_sim_model)
+  add_executable(skyport_sim ${SKYPORT_SIM_SOURCES})
+  target_link_libraries(skyport_sim PRIVATE k40t_psdk k40t_sim_model)
+  if(K40T_WITH_ROS)
+    install(TARGETS skyport_sim RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+  endif()
+endif()

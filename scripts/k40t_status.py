@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Live telemetry of the K40T driver on one line, refreshed twice a second: gimbal angles, zoom,
-thermal extremes, laser range, SD card, link health. With --tour it also drives the pod through
+thermal extremes, laser range, SD card, video (frame rate, size and frame id from camera_info),
+link health. With --tour it also drives the pod through
 its services (turn, zoom, look down and range, palette, photo) so the numbers move.
 
   scripts/k40t_status.py [--ns /k40t] [--tour] [--seconds N]"""
@@ -11,8 +12,9 @@ import threading
 import time
 
 import rospy
+from dynamic_reconfigure.client import Client as ReconfigureClient
 from diagnostic_msgs.msg import DiagnosticArray
-from sensor_msgs.msg import JointState, Range
+from sensor_msgs.msg import CameraInfo, JointState, Range
 from std_srvs.srv import Trigger
 
 from k40t_driver.msg import CameraStatus, ThermalStats, VisibleStatus
@@ -29,6 +31,14 @@ class Status:
                            ("thermal/stats", ThermalStats), ("laser/range", Range), ("camera/status", CameraStatus)]:
             rospy.Subscriber(ns + "/" + topic, cls, self._keep, callback_args=topic, queue_size=1)
         rospy.Subscriber("/diagnostics", DiagnosticArray, self._diagnostics, queue_size=10)
+        # camera_info has the image's header and size without the pixels: cheap to count.
+        self.video_stamps = []
+        rospy.Subscriber(ns + "/camera_info", CameraInfo, self._camera_info, queue_size=10)
+
+    def _camera_info(self, info):
+        self.latest["camera_info"] = info
+        now = time.time()
+        self.video_stamps = [t for t in self.video_stamps if now - t < 2.0] + [now]
 
     def _keep(self, msg, topic):
         self.latest[topic] = msg
@@ -56,6 +66,12 @@ class Status:
         cam = self.latest.get("camera/status")
         if cam:
             parts.append("SD %s %.0f/%.0f MB" % (cam.sd_state_text, cam.sd_used_mb, cam.sd_total_mb))
+        info = self.latest.get("camera_info")
+        if info and self.video_stamps and time.time() - self.video_stamps[-1] < 1.0:
+            parts.append("video %.0f fps %dx%d %s" % (len(self.video_stamps) / 2.0, info.width, info.height,
+                                                     info.header.frame_id))
+        elif info:
+            parts.append("video stalled")
         parts.append("link %s" % self.link)
         return " | ".join(parts)
 
@@ -71,7 +87,15 @@ def tour(ns):
         except (rospy.ROSException, rospy.ServiceException) as e:
             print("\n  %s: %s" % (name, e))
 
+    def reconfigure(**settings):
+        try:
+            done = ReconfigureClient(ns + "/driver", timeout=10.0).update_configuration(settings)
+            print("\n  reconfigure %s: now %s" % (settings, {k: done[k] for k in settings}))
+        except Exception as e:  # the client raises plain Exceptions on timeouts
+            print("\n  reconfigure %s: %s" % (settings, e))
+
     steps = [
+        ("image_mode", None, dict(image_mode=7)),  # split screen: visible | thermal
         ("gimbal/set_angle", SetAngle, dict(pitch=0.35, yaw=0.8)),
         ("set_zoom", SetZoom, dict(ratio=10.0)),
         ("gimbal/look_down", Trigger, {}),
@@ -81,12 +105,16 @@ def tour(ns):
         ("set_zoom", SetZoom, dict(ratio=1.0)),
         ("gimbal/set_angle", SetAngle, dict(pitch=0.1, yaw=-0.8)),
         ("gimbal/center", Trigger, {}),
+        ("image_mode", None, dict(image_mode=0)),  # thermal only
     ]
     while not rospy.is_shutdown():
         for name, cls, args in steps:
             if rospy.is_shutdown():
                 return
-            call(name, cls, **args)
+            if cls is None:
+                reconfigure(**args)
+            else:
+                call(name, cls, **args)
             time.sleep(3.0)
 
 

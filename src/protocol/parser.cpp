@@ -70,7 +70,11 @@ inline void FrameParser::track_sequence(Address source_address, uint8_t sequence
     }
     if (s.source != source) continue;
     const uint8_t expected = static_cast<uint8_t>(s.last + 1);
-    if (sequence != expected) {
+    if (sequence == s.last) {
+      // A duplicated frame (a link that repeats, a sender retrying with the same number): counting
+      // it as a gap would report 255 frames lost for one extra frame.
+      ++stats_.frames_repeated;
+    } else if (sequence != expected) {
       ++stats_.sequence_gaps;
       stats_.frames_lost += static_cast<uint8_t>(sequence - expected);
     }

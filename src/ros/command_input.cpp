@@ -17,6 +17,8 @@ CommandInput::CommandInput(ros::NodeHandle nh, PodDriver& driver) : driver_(driv
   cmd_rate_ = nh.subscribe("gimbal/cmd_rate", 1, &CommandInput::on_cmd_rate, this, hints);
   fix_ = nh.subscribe("fix", 1, &CommandInput::on_fix, this, hints);
   attitude_ = nh.subscribe("attitude", 1, &CommandInput::on_attitude, this, hints);
+  time_reference_ =
+      nh.subscribe("time_reference", 1, &CommandInput::on_time_reference, this, hints);
 }
 
 void CommandInput::on_cmd_angle(const geometry_msgs::Vector3Stamped::ConstPtr& msg) {
@@ -45,6 +47,13 @@ void CommandInput::on_attitude(const sensor_msgs::Imu::ConstPtr& msg) {
   VehicleState state = driver_.vehicle_state();
   update_from_imu(state, *msg);
   driver_.set_vehicle_state(state);
+}
+
+void CommandInput::on_time_reference(const sensor_msgs::TimeReference::ConstPtr& msg) {
+  // The stamp is the system (ROS) time at which the reference clock read time_ref.
+  const int64_t offset_ns = static_cast<int64_t>(msg->time_ref.toNSec()) -
+                            static_cast<int64_t>(msg->header.stamp.toNSec());
+  driver_.set_clock_offset_ms(offset_ns / 1000000);
 }
 
 }  // namespace k40t::driver

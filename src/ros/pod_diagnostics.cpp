@@ -119,6 +119,7 @@ void PodDiagnostics::link(DiagnosticStatusWrapper& stat) {
   stat.add("unknown ids", parser.unknown_ids);
   stat.add("sequence gaps", parser.sequence_gaps);
   stat.add("frames lost", parser.frames_lost);
+  stat.add("frames repeated", parser.frames_repeated);
   stat.add("decode errors", s.session.decode_errors);
   stat.add("requests", s.session.requests);
   stat.add("acks", s.session.acks);

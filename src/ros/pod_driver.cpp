@@ -1,6 +1,7 @@
 #include "k40t_driver/ros/pod_driver.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <ctime>
 
 #include "k40t_driver/protocol/messages/camera_system.h"
@@ -203,6 +204,19 @@ void PodDriver::send_rate_output(const RateCommander::Output& output) {
   if (output.control) request_async(*output.control, ignore);
 }
 
+void PodDriver::set_clock_offset_ms(int64_t offset_ms) {
+  bool changed = false;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    changed = std::llabs(offset_ms - clock_offset_ms_) > 1000;
+    clock_offset_ms_ = offset_ms;
+  }
+  // A new reference (the first one, or a jump): set the pod's clock now, not a period later.
+  if (changed && options_.time_sync_period_s > 0 && session_ &&
+      link_state() == transport::LinkState::kConnected)
+    send_time_sync();
+}
+
 void PodDriver::set_vehicle_state(const VehicleState& state) {
   std::lock_guard<std::mutex> lock(mutex_);
   vehicle_ = state;
@@ -215,7 +229,10 @@ VehicleState PodDriver::vehicle_state() const {
 
 void PodDriver::send_time_sync() {
   protocol::TimeSyncRequest sync;
-  sync.unix_time_ms = unix_time_ms_now();
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    sync.unix_time_ms = unix_time_ms_now() + clock_offset_ms_;
+  }
   sync.tz_minutes_west = 0;  // UTC: the pod's files are named in UTC
   request_async(sync, [](const AckResult&) {});
   std::lock_guard<std::mutex> lock(mutex_);

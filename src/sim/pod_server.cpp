@@ -259,7 +259,8 @@ std::string PodServer::status() {
     out << " | t " << pod.now_s() << " s yaw " << pose.joint_yaw_deg << " pitch "
         << pose.joint_pitch_deg << " zoom " << pod.zoom().zoom() << "x sd "
         << to_string(pod.camera().sd().state()) << " camera "
-        << (pod.camera_available() ? "up" : "down");
+        << (pod.camera_available() ? "up" : "down") << " recording "
+        << (pod.camera().recording() ? "yes" : "no");
   });
   out << " | faults " << faults_.describe();
   return out.str();

@@ -1,6 +1,7 @@
 #include "k40t_driver/sim/sim_options.h"
 
 #include "k40t_driver/sim/number_text.h"
+#include "k40t_driver/sim/option_table.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -15,29 +16,7 @@ Result<double> parse_number(const std::string& option, const std::string& text, 
   return parse_number_in(text, option, lo, hi);
 }
 
-// "AT:AMOUNT", both numbers.
-Result<ScheduledFault> parse_scheduled(const std::string& option, const std::string& text,
-                                       ScheduledFault::Kind kind, double max_amount) {
-  const size_t colon = text.find(':');
-  if (colon == std::string::npos)
-    return Status::fail(option + ": expected AT:AMOUNT (seconds:value), got '" + text + "'");
-  const auto at = parse_number(option + " AT", text.substr(0, colon), 0, 86400);
-  if (!at) return at.status();
-  const auto amount = parse_number(option + " AMOUNT", text.substr(colon + 1), 0, max_amount);
-  if (!amount) return amount.status();
-  ScheduledFault fault;
-  fault.kind = kind;
-  fault.at = std::chrono::milliseconds(std::llround(*at * 1000));
-  fault.amount = *amount;
-  return fault;
-}
-
-struct OptionSpec {
-  const char* name;
-  const char* argument;  // nullptr for flags
-  const char* help;
-  Status (*apply)(SimOptions& options, const std::string& option, const std::string& value);
-};
+using OptionSpec = sim::OptionSpec<SimOptions>;
 
 // Sets a double field from a number within [lo, hi].
 Status set_number(double& field, const std::string& option, const std::string& value, double lo,
@@ -150,21 +129,21 @@ const std::vector<OptionSpec>& option_table() {
        }},
       {"--silence", "AT:S", "send nothing for S seconds, AT seconds after the start",
        [](SimOptions& o, const std::string& option, const std::string& v) {
-         const auto f = parse_scheduled(option, v, ScheduledFault::Kind::kSilence, 3600);
+         const auto f = parse_scheduled_fault(option, v, ScheduledFault::Kind::kSilence, 3600);
          if (!f) return f.status();
          o.scheduled.push_back(*f);
          return Status::ok();
        }},
       {"--disconnect", "AT:S", "close the link for S seconds, AT seconds after the start",
        [](SimOptions& o, const std::string& option, const std::string& v) {
-         const auto f = parse_scheduled(option, v, ScheduledFault::Kind::kDisconnect, 3600);
+         const auto f = parse_scheduled_fault(option, v, ScheduledFault::Kind::kDisconnect, 3600);
          if (!f) return f.status();
          o.scheduled.push_back(*f);
          return Status::ok();
        }},
       {"--seq-jump", "AT:N", "skip N sequence numbers, AT seconds after the start",
        [](SimOptions& o, const std::string& option, const std::string& v) {
-         const auto f = parse_scheduled(option, v, ScheduledFault::Kind::kSequenceJump, 255);
+         const auto f = parse_scheduled_fault(option, v, ScheduledFault::Kind::kSequenceJump, 255);
          if (!f) return f.status();
          o.scheduled.push_back(*f);
          return Status::ok();
@@ -216,11 +195,24 @@ const std::vector<OptionSpec>& option_table() {
   return kOptions;
 }
 
-bool is_ros_argument(const std::string& arg) {
-  return arg.rfind("__", 0) == 0 && arg.find(":=") != std::string::npos;
-}
-
 }  // namespace
+
+// "AT:AMOUNT", both numbers.
+Result<ScheduledFault> parse_scheduled_fault(const std::string& option, const std::string& text,
+                                             ScheduledFault::Kind kind, double max_amount) {
+  const size_t colon = text.find(':');
+  if (colon == std::string::npos)
+    return Status::fail(option + ": expected AT:AMOUNT (seconds:value), got '" + text + "'");
+  const auto at = parse_number(option + " AT", text.substr(0, colon), 0, 86400);
+  if (!at) return at.status();
+  const auto amount = parse_number(option + " AMOUNT", text.substr(colon + 1), 0, max_amount);
+  if (!amount) return amount.status();
+  ScheduledFault fault;
+  fault.kind = kind;
+  fault.at = std::chrono::milliseconds(std::llround(*at * 1000));
+  fault.amount = *amount;
+  return fault;
+}
 
 Result<std::string> server_side_url(const std::string& link) {
   const auto starts = [&](const char* prefix) { return link.rfind(prefix, 0) == 0; };
@@ -235,64 +227,10 @@ Result<std::string> server_side_url(const std::string& link) {
 
 Result<SimOptions> parse_sim_options(const std::vector<std::string>& args) {
   SimOptions options;
-  for (size_t i = 0; i < args.size(); ++i) {
-    std::string arg = args[i];
-    if (is_ros_argument(arg)) continue;
-    std::optional<std::string> inline_value;
-    if (const size_t eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos) {
-      inline_value = arg.substr(eq + 1);
-      arg = arg.substr(0, eq);
-    }
-    const OptionSpec* spec = nullptr;
-    for (const OptionSpec& candidate : option_table()) {
-      if (arg == candidate.name) spec = &candidate;
-    }
-    if (!spec) return Status::fail("unknown argument '" + args[i] + "' (see --help)");
-    std::string value;
-    if (spec->argument) {
-      if (inline_value) {
-        value = *inline_value;
-      } else if (i + 1 < args.size()) {
-        value = args[++i];
-      } else {
-        return Status::fail(arg + ": missing " + spec->argument);
-      }
-    } else if (inline_value) {
-      return Status::fail(arg + ": takes no value");
-    }
-    const Status applied = spec->apply(options, arg, value);
-    if (!applied) return applied;
-  }
+  const Status parsed = parse_option_table(option_table(), args, options);
+  if (!parsed) return parsed;
   return options;
 }
-
-namespace {
-// "  --name ARG   help..." with the help wrapped to `width` and aligned in one column.
-void append_option(std::ostringstream& out, const OptionSpec& spec) {
-  constexpr size_t kColumn = 30;
-  constexpr size_t kWidth = 100;
-  std::string head =
-      std::string("  ") + spec.name + (spec.argument ? std::string(" ") + spec.argument : "");
-  if (head.size() + 1 > kColumn) {
-    out << head << "\n";
-    head.clear();
-  }
-  head.resize(kColumn, ' ');
-  std::istringstream words(spec.help);
-  std::string line = head;
-  bool first = true;
-  for (std::string word; words >> word;) {
-    if (!first && line.size() + 1 + word.size() > kWidth) {
-      out << line << "\n";
-      line = std::string(kColumn, ' ');
-      first = true;
-    }
-    line += (first ? "" : " ") + word;
-    first = false;
-  }
-  out << line << "\n";
-}
-}  // namespace
 
 std::string sim_usage() {
   std::ostringstream out;
@@ -301,7 +239,7 @@ std::string sim_usage() {
          "model\n"
          "(gimbal, zoom, thermal scene, laser, camera and SD card) and misbehaves on demand.\n"
          "See docs/simulator.md. Exit codes: 0, 1 could not start, 2 bad arguments.\n\n";
-  for (const OptionSpec& spec : option_table()) append_option(out, spec);
+  out << option_table_usage(option_table());
   out << "\nArguments of the form __name:=value (added by roslaunch) are ignored.\n";
   return out.str();
 }

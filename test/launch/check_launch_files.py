@@ -21,6 +21,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 VARIANTS = {
     "k40t.launch": [["sim:=true"], ["manager:=/pod_manager"], ["publish_tf:=false", "ns:=pod2"],
                     ["video:=true"], ["sim:=true", "video:=true", "manager:=/pod_manager"]],
+    "skyport.launch": [["sim:=true"], ["app_key_file:=/etc/k40t/app_key", "encryption:=false"],
+                       ["sim:=true", "app_name:=a", "app_id:=1", "developer_account:=d"]],
     "sim.launch": [["manager:=/pod_manager"], ["video:=true"]],
     "video.launch": [["manager:=/pod_manager", "backend:=ffmpeg"]],
     "demo.launch": [["video:=false"]],

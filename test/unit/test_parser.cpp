@@ -314,6 +314,18 @@ TEST(Parser, SequenceGapsPerSourceAcrossTheWrap) {
   EXPECT_EQ(parser.stats().sequence_gaps, 3u);
 }
 
+TEST(Parser, ARepeatedSequenceNumberIsADuplicateNotAGap) {
+  // Gimbal 7, 7 (the same frame twice), 8: one repeat, no gap, nothing lost.
+  Bytes stream;
+  for (int s : {7, 7, 8}) append(stream, attitude_frame(static_cast<uint8_t>(s), kGimbalAddress));
+  FrameParser parser(CrcCoverage::kHeaderExcluded);
+  feed(parser, stream);
+  EXPECT_EQ(parser.stats().frames_good, 3u);
+  EXPECT_EQ(parser.stats().frames_repeated, 1u);
+  EXPECT_EQ(parser.stats().sequence_gaps, 0u);
+  EXPECT_EQ(parser.stats().frames_lost, 0u);
+}
+
 TEST(Parser, AutoCoverageLocksOntoWholeFrameChecksums) {
   FrameParser parser(CrcCoverage::kAuto);
   EXPECT_EQ(parser.coverage(), CrcCoverage::kAuto);

@@ -155,9 +155,9 @@ std::string counters_text(const session::DispatcherStats& stats, uint64_t undeco
       std::to_string(p.checksum_errors) + ", length errors " + std::to_string(p.length_errors) +
       ", discarded bytes " + std::to_string(p.bytes_discarded) + ", unknown ids " +
       std::to_string(p.unknown_ids) + ", sequence gaps " + std::to_string(p.sequence_gaps) + " (" +
-      std::to_string(p.frames_lost) + " frames lost), decode errors " +
-      std::to_string(stats.decode_errors + undecodable) + ", crc coverage " +
-      protocol::to_string(stats.locked_coverage);
+      std::to_string(p.frames_lost) + " frames lost, " + std::to_string(p.frames_repeated) +
+      " repeated), decode errors " + std::to_string(stats.decode_errors + undecodable) +
+      ", crc coverage " + protocol::to_string(stats.locked_coverage);
   return text;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "k40t_driver/sim/pod_server.h"
+#include "k40t_driver/sim/stop_signals.h"
 #include "k40t_driver/sim/video/model_snapshot.h"
 #include "k40t_driver/sim/video/rtsp_stream_server.h"
 
@@ -38,11 +39,7 @@ int main(int argc, char** argv) {
 
   // Signals are taken synchronously by this thread (sigwait), so every thread started below
   // inherits the blocked mask and no handler runs in the middle of the simulation.
-  sigset_t signals;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  const k40t::sim::StopSignals stop_signals;
 
   k40t::sim::PodServer server(*options);
   const k40t::Status started = server.start();
@@ -81,8 +78,7 @@ int main(int argc, char** argv) {
   }
   std::fflush(stdout);
 
-  int signal = 0;
-  sigwait(&signals, &signal);
+  const int signal = stop_signals.wait();
   std::printf("k40t_sim: %s, stopping; %s\n", signal == SIGINT ? "interrupted" : "terminated",
               server.status().c_str());
   video.reset();

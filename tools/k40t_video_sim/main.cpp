@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "k40t_driver/sim/stop_signals.h"
 #include "k40t_driver/sim/video/rtsp_stream_server.h"
 #include "k40t_driver/sim/video/snapshot_commands.h"
 #include "k40t_driver/sim/world.h"
@@ -132,11 +133,7 @@ int main(int argc, char** argv) {
   }
 
   // Block the stop signals before any thread starts, so that only sigwait() below sees them.
-  sigset_t stop_signals;
-  sigemptyset(&stop_signals);
-  sigaddset(&stop_signals, SIGINT);
-  sigaddset(&stop_signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+  const k40t::sim::StopSignals stop_signals;
 
   const auto started = std::chrono::steady_clock::now();
   auto server = k40t::sim::video::RtspStreamServer::start(options.server, [&] {
@@ -167,8 +164,7 @@ int main(int argc, char** argv) {
   });
   control.detach();  // blocked in getline until stdin closes; the process exit ends it
 
-  int signal = 0;
-  sigwait(&stop_signals, &signal);
+  stop_signals.wait();
   const auto counters = server.value()->counters();
   std::cout << "k40t_video_sim: stopping after " << counters.frames_pushed << " frames"
             << std::endl;

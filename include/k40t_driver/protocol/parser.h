@@ -26,6 +26,7 @@ struct ParserStats {
   uint64_t unknown_ids = 0;      // good frames whose id the catalogue does not know
   uint64_t sequence_gaps = 0;    // gap events, per source, with 8-bit wrap
   uint64_t frames_lost = 0;      // frames missing according to those gaps
+  uint64_t frames_repeated = 0;  // a source's sequence number again (a duplicate, not 255 lost)
 };
 
 class FrameParser {

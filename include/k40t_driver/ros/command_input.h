@@ -8,6 +8,8 @@
 //   fix               sensor_msgs/NavSatFix  the vehicle's position }  answers to the pod's GPS
 //   attitude          sensor_msgs/Imu        its orientation (ENU)  }  requests, laser-target
 //   requests
+//   time_reference    sensor_msgs/TimeReference  a better clock (time_ref at header.stamp): the
+//                     pod's clock is set from it (0x00030E) instead of from the system clock
 #pragma once
 
 #include <cmath>
@@ -19,6 +21,7 @@
 #include <ros/subscriber.h>
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/NavSatFix.h>
+#include <sensor_msgs/TimeReference.h>
 
 #include "k40t_driver/ros/pod_driver.h"
 
@@ -33,11 +36,12 @@ class CommandInput {
   void on_cmd_rate(const geometry_msgs::Twist::ConstPtr& msg);
   void on_fix(const sensor_msgs::NavSatFix::ConstPtr& msg);
   void on_attitude(const sensor_msgs::Imu::ConstPtr& msg);
+  void on_time_reference(const sensor_msgs::TimeReference::ConstPtr& msg);
 
   PodDriver& driver_;
   std::mutex mutex_;
   double reference_altitude_m_ = std::nan("");
-  ros::Subscriber cmd_angle_, cmd_rate_, fix_, attitude_;
+  ros::Subscriber cmd_angle_, cmd_rate_, fix_, attitude_, time_reference_;
 };
 
 }  // namespace k40t::driver

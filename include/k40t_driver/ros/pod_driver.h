@@ -96,6 +96,10 @@ class PodDriver {
   void command_rate(double pitch_deg_s, double yaw_deg_s);
   void set_vehicle_state(const VehicleState& state);
   VehicleState vehicle_state() const;
+  // Time syncs (0x00030E) use the system clock plus this offset from now on: a better clock's
+  // reading minus the system clock at the same instant (e.g. the SKYPORT's UTC/PPS, through the
+  // time_reference topic).
+  void set_clock_offset_ms(int64_t offset_ms);
 
   DriverStats stats() const;
   transport::LinkState link_state() const;
@@ -143,6 +147,7 @@ class PodDriver {
   bool reconnected_since_frame_ = true;  // the first frame ever is an online event
   bool online_pending_ = false;
   VehicleState vehicle_;
+  int64_t clock_offset_ms_ = 0;
   RateCommander rate_;
   DriverStats counters_;  // the driver's own counters (session stats are read live)
 

@@ -39,6 +39,11 @@ struct SimOptions {
   bool help = false;
 };
 
+// "AT:AMOUNT" (seconds after the start : seconds, or frames for a sequence jump), for --silence,
+// --disconnect and --seq-jump; errors name `option`.
+Result<ScheduledFault> parse_scheduled_fault(const std::string& option, const std::string& text,
+                                             ScheduledFault::Kind kind, double max_amount);
+
 // Parses argv (without the program name). Errors name the option and what is wrong.
 Result<SimOptions> parse_sim_options(const std::vector<std::string>& args);
 std::string sim_usage();

@@ -5,6 +5,7 @@
 #include <unistd.h>
 #include <atomic>
 #include <cmath>
+#include <optional>
 
 #include "fake_pod.h"
 #include "k40t_driver/protocol/messages/camera_system.h"
@@ -149,6 +150,26 @@ TEST(PodDriver, RateCommandsStopHalfASecondAfterTheLast) {
   EXPECT_EQ(driver->stats().deadman_stops, 1u);
 }
 
+std::vector<SentFrame> wait_for_time_syncs(FakePod& pod, size_t n) {
+  pod.wait_for(FakePod::count_of(protocol::TimeSyncRequest::kId, n), milliseconds(3000));
+  return pod.frames_with_id(protocol::TimeSyncRequest::kId);
+}
+
+// The time a sync frame sets the pod to (ms since the epoch).
+std::optional<int64_t> time_sync_ms(const SentFrame& frame) {
+  Result<protocol::TimeSyncRequest> sync = protocol::decode_payload<protocol::TimeSyncRequest>(
+      frame.payload.data(), frame.payload.size());
+  EXPECT_TRUE(sync.is_ok()) << sync.error();
+  if (!sync) return std::nullopt;
+  return sync->unix_time_ms;
+}
+
+int64_t system_now_ms() {
+  return std::chrono::duration_cast<milliseconds>(
+             std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
 TEST(PodDriver, TimeSyncEveryPeriodWithTheWallClock) {
   const std::string pty = unique_pty("timesync");
   FakePod pod(pty);
@@ -157,18 +178,31 @@ TEST(PodDriver, TimeSyncEveryPeriodWithTheWallClock) {
   std::unique_ptr<PodDriver> driver = make_driver(o);
   ASSERT_TRUE(driver->start().is_ok());
   wait_until_linked(pod, *driver);
-  pod.wait_for(FakePod::count_of(protocol::TimeSyncRequest::kId, 4), milliseconds(3000));
-  const std::vector<SentFrame> syncs = pod.frames_with_id(protocol::TimeSyncRequest::kId);
+  const std::vector<SentFrame> syncs = wait_for_time_syncs(pod, 4);
   ASSERT_GE(syncs.size(), 4u);
-  Result<protocol::TimeSyncRequest> sync = protocol::decode_payload<protocol::TimeSyncRequest>(
-      syncs.back().payload.data(), syncs.back().payload.size());
-  ASSERT_TRUE(sync.is_ok()) << sync.error();
-  const int64_t now_ms =
-      std::chrono::duration_cast<milliseconds>(std::chrono::system_clock::now().time_since_epoch())
-          .count();
-  EXPECT_NEAR(static_cast<double>(sync->unix_time_ms), static_cast<double>(now_ms), 1000.0);
+  const std::optional<int64_t> sent_ms = time_sync_ms(syncs.back());
+  ASSERT_TRUE(sent_ms);
+  EXPECT_NEAR(static_cast<double>(*sent_ms), static_cast<double>(system_now_ms()), 1000.0);
   const double gap_s = std::chrono::duration<double>(syncs[3].at - syncs[2].at).count();
   EXPECT_NEAR(gap_s, 0.25, 0.1);
+}
+
+TEST(PodDriver, TimeSyncFollowsABetterClock) {
+  // The SKYPORT's UTC says the system clock is an hour ahead: the pod is set an hour back.
+  const std::string pty = unique_pty("timeref");
+  FakePod pod(pty);
+  DriverOptions o = options_for(pty);
+  o.time_sync_period_s = 0.25;
+  std::unique_ptr<PodDriver> driver = make_driver(o);
+  driver->set_clock_offset_ms(-3'600'000);
+  ASSERT_TRUE(driver->start().is_ok());
+  wait_until_linked(pod, *driver);
+  const std::vector<SentFrame> syncs = wait_for_time_syncs(pod, 2);
+  ASSERT_GE(syncs.size(), 2u);
+  const std::optional<int64_t> sent_ms = time_sync_ms(syncs.back());
+  ASSERT_TRUE(sent_ms);
+  EXPECT_NEAR(static_cast<double>(*sent_ms), static_cast<double>(system_now_ms() - 3'600'000),
+              1000.0);
 }
 
 TEST(PodDriver, PodOnlineOnFirstFrameAndAfterSilence) {

@@ -1,0 +1,90 @@
+// The SKYPORT bridge's ROS glue: the payload-side PSDK session on the SKYPORT UART, the
+// SkyportBridge (commands answered by driving the pod), every data push as ROS messages under
+// skyport/, the pod fed from them (fix, attitude, time_reference, when feed_pod), floating-window
+// messages for pod events, transparent data to and from topics, positioning as a service, and
+// diagnostics. Run by SkyportNodelet and k40t_skyport_node. See docs/skyport.md.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <memory>
+#include <mutex>
+#include <optional>
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/node_handle.h>
+#include <ros/publisher.h>
+#include <ros/service_server.h>
+#include <ros/subscriber.h>
+#include <ros/timer.h>
+#include <std_msgs/UInt8MultiArray.h>
+
+#include "k40t_driver/GetPosition.h"
+#include "k40t_driver/protocol/result.h"
+#include "k40t_driver/psdk/session.h"
+#include "k40t_driver/ros/skyport/ros_pod_port.h"
+#include "k40t_driver/ros/skyport/skyport_bridge.h"
+
+namespace k40t::driver::skyport {
+
+struct SkyportConfig {
+  std::string device;  // SKYPORT UART URL
+  int baud = 115200;
+  psdk::Credentials credentials;  // never logged
+  bool encryption = true;
+  BridgeOptions bridge;
+  bool feed_pod = true;              // publish fix/attitude/time_reference for the PodNodelet
+  std::string feed_fix = "raw_gps";  // raw_gps or rtk: which push becomes `fix`
+  std::string world_frame = "enu";
+  std::string base_frame = "base_link";
+  std::string reconfigure = "driver/set_parameters";
+  double service_timeout_s = 2.0;
+  double ack_timeout_s = 1.0;
+  double silence_timeout_s = 1.0;  // no frame for this long: the adapter is silent (ERROR)
+  double diagnostic_period_s = 1.0;
+};
+
+// Reads the private parameters; the app key comes from `app_key_file` (or `app_key`).
+Result<SkyportConfig> read_skyport_config(const ros::NodeHandle& private_nh);
+
+class SkyportRos {
+ public:
+  static Result<std::unique_ptr<SkyportRos>> create(ros::NodeHandle nh, ros::NodeHandle private_nh);
+  ~SkyportRos();
+
+ private:
+  SkyportRos(ros::NodeHandle nh, ros::NodeHandle private_nh, SkyportConfig config,
+             std::unique_ptr<psdk::Session> session);
+  void advertise();
+  void register_pushes();
+  void register_transparent();
+  void on_to_mobile(const std_msgs::UInt8MultiArray::ConstPtr& msg);
+  void on_to_onboard(const std_msgs::UInt8MultiArray::ConstPtr& msg);
+  bool on_get_position(k40t_driver::GetPosition::Request& req,
+                       k40t_driver::GetPosition::Response& res);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  ros::NodeHandle nh_, private_nh_;
+  SkyportConfig config_;
+  std::unique_ptr<psdk::Session> session_;
+  std::unique_ptr<RosPodPort> pod_;
+  std::unique_ptr<SkyportBridge> bridge_;
+  std::atomic<SkyportBridge*> bridge_ptr_{nullptr};
+
+  ros::Publisher attitude_, imu_, gps_, relative_height_, raw_gps_, raw_gps_velocity_, rtk_,
+      rtk_velocity_, battery_, power_off_, uav_state_, link_, baro_, app_time_, utc_time_,
+      other_payload_, from_mobile_, from_onboard_;
+  ros::Publisher feed_fix_, feed_attitude_, feed_time_;
+  ros::Subscriber to_mobile_, to_onboard_;
+  ros::ServiceServer get_position_;
+  diagnostic_updater::Updater diagnostics_;
+  ros::Timer diagnostic_timer_;
+
+  std::mutex mutex_;
+  std::optional<std::chrono::steady_clock::time_point> last_frame_;
+  std::optional<bool> power_off_soon_;
+  uint8_t other_payload_type_ = 0;
+  float other_payload_focal_mm_ = std::nanf("");
+};
+
+}  // namespace k40t::driver::skyport

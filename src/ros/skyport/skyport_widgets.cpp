@@ -1,0 +1,150 @@
+// DJI Pilot widgets of the K40T (APP function set 0x02, ids 0x04..0x08, sections 3.2.4..3.2.8):
+//   0 choose list "Palette"      ten of the pod's 20 thermal palettes (dynamic_reconfigure)
+//   1 choose list "Image mode"   thermal, visible, split screen (dynamic_reconfigure)
+//   2 button      "Laser range"  one ranging (laser/measure); the result as a floating window
+//   3 switch      "Record"       record start/stop; reads back the pod's recording state
+// All values fit one group.
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+#include "k40t_driver/ros/skyport/skyport_bridge.h"
+
+namespace k40t::driver::skyport {
+
+using namespace psdk;
+using detail::refused;
+
+namespace {
+
+enum Widget : uint8_t { kPalette = 0, kImageMode = 1, kLaser = 2, kRecord = 3, kWidgetCount = 4 };
+
+struct Choice {
+  const char* name;  // at most 15 bytes (3.2.5)
+  int pod_value;
+};
+// K40t.cfg's palette numbers.
+constexpr std::array<Choice, 10> kPalettes{{{"White hot", 1},
+                                            {"Black hot", 2},
+                                            {"Rainbow", 3},
+                                            {"HC rainbow", 4},
+                                            {"Iron red", 5},
+                                            {"Magma", 6},
+                                            {"Sky", 7},
+                                            {"Medium grey", 8},
+                                            {"Warning red", 12},
+                                            {"Ice fire", 13}}};
+// K40t.cfg's image modes.
+constexpr std::array<Choice, 3> kImageModes{{{"Thermal", 0}, {"Visible", 5}, {"Split", 7}}};
+
+template <size_t N>
+void fill_choices(WidgetListDataAck& ack, const std::array<Choice, N>& choices) {
+  ack.choose_item_count = static_cast<uint8_t>(N);
+  for (size_t i = 0; i < N; ++i) ack.choose_items[i] = choices[i].name;
+}
+
+WidgetListDataAck describe_widget(uint8_t index) {
+  WidgetListDataAck ack;
+  ack.index = index;
+  switch (index) {
+    case kPalette:
+      ack.type = WidgetType::kChooseList;
+      ack.name = "Palette";
+      fill_choices(ack, kPalettes);
+      break;
+    case kImageMode:
+      ack.type = WidgetType::kChooseList;
+      ack.name = "Image mode";
+      fill_choices(ack, kImageModes);
+      break;
+    case kLaser:
+      ack.type = WidgetType::kButton;
+      ack.name = "Laser range";
+      break;
+    case kRecord:
+      ack.type = WidgetType::kSwitch;
+      ack.name = "Record";
+      break;
+    default:
+      return refused<WidgetListDataAck>(AckCode::kError);
+  }
+  return ack;
+}
+
+int32_t image_mode_item(uint8_t pod_image_mode) {
+  for (size_t i = 0; i < kImageModes.size(); ++i) {
+    if (kImageModes[i].pod_value == pod_image_mode) return static_cast<int32_t>(i);
+  }
+  return pod_image_mode == 6 ? 1 : 0;  // the document's second code for visible
+}
+
+}  // namespace
+
+void SkyportBridge::register_widgets() {
+  session_.handle<GetWidgetListLength>([](const GetWidgetListLength&) {
+    WidgetListLengthAck ack;
+    ack.count = kWidgetCount;
+    return ack;
+  });
+  session_.handle<GetWidgetListData>(
+      [](const GetWidgetListData& c) { return describe_widget(c.index); });
+  session_.handle<GetWidgetGroupCount>([](const GetWidgetGroupCount&) {
+    WidgetGroupCountAck ack;
+    ack.count = 1;
+    return ack;
+  });
+  deferred<GetWidgetGroupData>([this](const GetWidgetGroupData& c) {
+    if (c.group != 0) return refused<WidgetGroupDataAck>(AckCode::kError);
+    const PodSnapshot s = pod_.snapshot();
+    WidgetGroupDataAck ack;
+    ack.count = kWidgetCount;
+    ack.widgets[kPalette] = {WidgetType::kChooseList, kPalette, palette_item_};
+    ack.widgets[kImageMode] = {WidgetType::kChooseList, kImageMode, image_mode_item(s.image_mode)};
+    ack.widgets[kLaser] = {WidgetType::kButton, kLaser, 0};
+    ack.widgets[kRecord] = {WidgetType::kSwitch, kRecord, s.recording ? 1 : 0};
+    return ack;
+  });
+  deferred<SetWidgetValue>([this](const SetWidgetValue& c) { return set_widget(c.widget); });
+}
+
+AckCode SkyportBridge::set_widget(const WidgetValue& widget) {
+  const int32_t v = widget.value;
+  switch (widget.index) {
+    case kPalette: {
+      if (v < 0 || v >= static_cast<int32_t>(kPalettes.size())) return AckCode::kError;
+      const AckCode code = pod_code(pod_.set_palette(kPalettes[v].pod_value), "palette widget");
+      if (code == AckCode::kOk) palette_item_ = v;
+      return code;
+    }
+    case kImageMode:
+      if (v < 0 || v >= static_cast<int32_t>(kImageModes.size())) return AckCode::kError;
+      return pod_code(pod_.set_image_mode(kImageModes[v].pod_value), "image mode widget");
+    case kLaser: {
+      double range_m = 0;
+      const AckCode code = pod_code(pod_.measure_range(range_m), "laser widget");
+      if (code != AckCode::kOk) return code;
+      char text[64];
+      if (std::isfinite(range_m)) {
+        std::snprintf(text, sizeof text, "K40T laser range: %.1f m", range_m);
+      } else {
+        std::snprintf(text, sizeof text, "K40T laser range: no return");
+      }
+      floating_window(text);
+      return code;
+    }
+    case kRecord:
+      if (v != 0 && v != 1) return AckCode::kError;
+      return pod_code(pod_.record(v == 1), "record widget");
+    default:
+      return AckCode::kError;
+  }
+}
+
+void SkyportBridge::floating_window(const std::string& text) {
+  FloatingWindowMessage message;
+  message.text = text.substr(0, 127);
+  const Status sent = session_.send(message);
+  if (!sent && log_) log_("SKYPORT floating window: " + sent.message());
+}
+
+}  // namespace k40t::driver::skyport
