@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "camera_golden.h"
+#include "field_assigner.h"
+#include "golden_checks.h"
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/messages/camera.h"
 #include "k40t_driver/protocol/parser.h"
@@ -17,10 +18,13 @@ namespace k40t::protocol {
 namespace {
 
 using testing::assign_fields;
+using testing::decode_golden;
+using testing::expect_encodes_to;
 using testing::fields_match;
 using testing::GoldenFrame;
 using testing::record_fields;
-using testing::RecordedFields;
+
+const char kFile[] = "camera.txt";
 
 struct Route {
   Address source;
@@ -31,27 +35,10 @@ constexpr Route kFromCamera{kCameraAddress, kHostAddress};
 constexpr Route kFlightControllerToCamera{kFlightControllerAddress, kCameraAddress};
 constexpr Route kCameraToFlightController{kCameraAddress, kFlightControllerAddress};
 
-struct ParsedFrame {
-  FrameHeader header;
-  std::vector<uint8_t> payload;
-};
-
-// The golden bytes must be exactly one good frame with the document's header_excluded checksum.
-std::vector<ParsedFrame> parse(const std::vector<uint8_t>& bytes) {
-  FrameParser parser(CrcCoverage::kHeaderExcluded);
-  std::vector<ParsedFrame> frames;
-  parser.feed(bytes.data(), bytes.size(), [&](const FrameView& f) {
-    frames.push_back({f.header, std::vector<uint8_t>(f.payload, f.payload + f.payload_size)});
-  });
-  EXPECT_EQ(parser.stats().bytes_discarded, 0u);
-  return frames;
-}
-
 template <class T>
 void check_golden(const GoldenFrame& golden, Route route) {
-  const std::vector<ParsedFrame> frames = parse(golden.bytes);
-  ASSERT_EQ(frames.size(), 1u) << "the bytes are not one frame with a good checksum";
-  const ParsedFrame& frame = frames.front();
+  const testing::SplitFrame frame = testing::split_frame(golden);
+  ASSERT_TRUE(frame.ok) << frame.problem;
   EXPECT_EQ(frame.header.source, route.source);
   EXPECT_EQ(frame.header.destination, route.destination);
 
@@ -61,30 +48,19 @@ void check_golden(const GoldenFrame& golden, Route route) {
   EXPECT_EQ(std::string(info->name), golden.name);
   EXPECT_EQ(std::string(info->section), golden.section);
   if constexpr (!std::is_same_v<T, PlainAck>) {
-    EXPECT_EQ(frame.header.message_id, T::kId);
     EXPECT_EQ(frame.payload.size(), T::kSize);
   }
 
-  // Document bytes -> typed decode -> the expected fields.
-  Result<T> decoded = decode_payload<T>(frame.payload.data(), frame.payload.size());
-  ASSERT_TRUE(decoded) << decoded.error();
-  EXPECT_TRUE(fields_match(record_fields(decoded.value()), golden.expected));
+  // Document bytes -> typed decode (of T's id) -> the expected fields.
+  EXPECT_TRUE(fields_match(record_fields(decode_golden<T>(golden)), golden.expected));
 
   // The same through the catalogue's type-erased decoder.
-  RecordedFields described;
-  ASSERT_TRUE(
-      info->describe(frame.payload.data(), frame.payload.size(), CodecOptions{}, described));
-  EXPECT_TRUE(fields_match(described, golden.expected));
+  testing::expect_describes_to_expected(golden);
 
   // Expected values -> typed encode -> the hand-written bytes.
   T built{};
   ASSERT_TRUE(assign_fields(built, golden.expected));
-  Result<Payload> payload = encode_payload(built);
-  ASSERT_TRUE(payload) << payload.error();
-  Result<EncodedFrame> encoded =
-      encode_frame(frame.header, payload->data(), payload->size, CrcCoverage::kHeaderExcluded);
-  ASSERT_TRUE(encoded) << encoded.error();
-  EXPECT_EQ(std::vector<uint8_t>(encoded->data(), encoded->data() + encoded->size()), golden.bytes);
+  expect_encodes_to(built, golden);
 }
 
 struct TypedCase {
@@ -139,11 +115,11 @@ const std::vector<TypedCase>& typed_cases() {
 }
 
 TEST(CameraGolden, EveryFrameDecodesToItsFieldsAndEncodesBackToItsBytes) {
-  const std::vector<GoldenFrame> golden = testing::load_camera_golden();
+  const std::vector<GoldenFrame> golden = testing::load_golden(kFile);
   ASSERT_FALSE(golden.empty());
   std::set<std::string> seen;
   for (const GoldenFrame& frame : golden) {
-    SCOPED_TRACE("camera.txt:" + std::to_string(frame.line) + " " + frame.name);
+    SCOPED_TRACE(frame.where() + " " + frame.name);
     EXPECT_TRUE(seen.insert(frame.name).second) << "two entries named " << frame.name;
     const TypedCase* typed = nullptr;
     for (const TypedCase& c : typed_cases()) {
@@ -163,12 +139,13 @@ bool in_camera_family(MessageId id) {
 // Every id this family registers has a hand-written frame; of the ACKs that are the bare
 // response code, at least one does.
 TEST(CameraGolden, CoversEveryCameraMessageOfTheCatalogue) {
-  const std::vector<GoldenFrame> golden = testing::load_camera_golden();
+  std::set<std::string> golden_names;
+  for (const GoldenFrame& frame : testing::load_golden(kFile)) golden_names.insert(frame.name);
   int plain_acks = 0;
   int covered = 0;
   for (const MessageInfo& info : catalogue()) {
     if (!in_camera_family(info.id)) continue;
-    const bool has_frame = testing::find_golden(golden, info.name) != nullptr;
+    const bool has_frame = golden_names.count(info.name) > 0;
     if (info.describe == &describe_payload<PlainAck>) {
       plain_acks += has_frame ? 1 : 0;
       continue;
@@ -182,25 +159,8 @@ TEST(CameraGolden, CoversEveryCameraMessageOfTheCatalogue) {
 }
 
 // A few requests built field by field in C++ rather than from the file's "=" lines.
-std::vector<uint8_t> encode_as_golden(const GoldenFrame& golden, const Payload& payload) {
-  const std::vector<ParsedFrame> frames = parse(golden.bytes);
-  EXPECT_EQ(frames.size(), 1u);
-  if (frames.size() != 1) return {};
-  Result<EncodedFrame> encoded =
-      encode_frame(frames[0].header, payload.data(), payload.size, CrcCoverage::kHeaderExcluded);
-  EXPECT_TRUE(encoded) << encoded.error();
-  if (!encoded) return {};
-  return std::vector<uint8_t>(encoded->data(), encoded->data() + encoded->size());
-}
-
-template <class T>
-void expect_encodes_to(const T& message, const char* golden_name) {
-  const std::vector<GoldenFrame> golden = testing::load_camera_golden();
-  const GoldenFrame* frame = testing::find_golden(golden, golden_name);
-  ASSERT_NE(frame, nullptr) << golden_name;
-  Result<Payload> payload = encode_payload(message);
-  ASSERT_TRUE(payload) << payload.error();
-  EXPECT_EQ(encode_as_golden(*frame, payload.value()), frame->bytes) << golden_name;
+GoldenFrame golden(const char* name) {
+  return testing::golden(kFile, name);
 }
 
 TEST(CameraGolden, TakePhotoBuiltInCode) {
@@ -209,7 +169,7 @@ TEST(CameraGolden, TakePhotoBuiltInCode) {
   m.action = PhotoAction::kStart;
   m.folder = "survey";
   m.name = "img_0001";
-  expect_encodes_to(m, "take_photo");
+  expect_encodes_to(m, golden("take_photo"));
 }
 
 TEST(CameraGolden, RecordWithFullWidthTextsBuiltInCode) {
@@ -218,7 +178,7 @@ TEST(CameraGolden, RecordWithFullWidthTextsBuiltInCode) {
   m.action = RecordAction::kStart;
   m.folder = "flight_2024_06_01_ab";            // 20 bytes
   m.name = "thermal_inspection_line_07_pass2";  // 32 bytes
-  expect_encodes_to(m, "record");
+  expect_encodes_to(m, golden("record"));
 }
 
 TEST(CameraGolden, TimeSyncBuiltInCode) {
@@ -226,7 +186,7 @@ TEST(CameraGolden, TimeSyncBuiltInCode) {
   m.unix_time_ms = 1718000000123;
   m.tz_minutes_west = -480;
   m.tz_dst_type = 0;
-  expect_encodes_to(m, "time_sync");
+  expect_encodes_to(m, golden("time_sync"));
 }
 
 TEST(CameraGolden, SetIpBuiltInCode) {
@@ -235,7 +195,7 @@ TEST(CameraGolden, SetIpBuiltInCode) {
   m.address = "192.168.144.100";
   m.netmask = "255.255.255.0";
   m.gateway = "192.168.144.1";
-  expect_encodes_to(m, "set_ip");
+  expect_encodes_to(m, golden("set_ip"));
 }
 
 TEST(CameraGolden, GpsAnswerBuiltInCodeEchoesTheRequestTime) {
@@ -252,7 +212,7 @@ TEST(CameraGolden, GpsAnswerBuiltInCodeEchoesTheRequestTime) {
   m.yaw_deg = -45.25;
   m.roll_deg = 1.5;
   m.pitch_deg = -2.75;
-  expect_encodes_to(m, "camera_gps_request_ack");
+  expect_encodes_to(m, golden("camera_gps_request_ack"));
 }
 
 TEST(CameraGolden, TargetGpsRequestBuiltInCode) {
@@ -272,7 +232,7 @@ TEST(CameraGolden, TargetGpsRequestBuiltInCode) {
   m.heading_deg = 314.75;
   m.throttle_percent = 55;
   m.climb_rate_m_s = -1.2;
-  expect_encodes_to(m, "target_gps_request");
+  expect_encodes_to(m, golden("target_gps_request"));
 }
 
 TEST(CameraGolden, BoxTrackingBuiltInCode) {
@@ -282,7 +242,7 @@ TEST(CameraGolden, BoxTrackingBuiltInCode) {
   m.y_px = 440;
   m.width_px = 200;
   m.height_px = 200;
-  expect_encodes_to(m, "box_tracking");
+  expect_encodes_to(m, golden("box_tracking"));
 }
 
 }  // namespace

@@ -10,14 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "camera_golden.h"
 #include "k40t_driver/protocol/messages/camera.h"
+#include "message_checks.h"
 
 namespace k40t::protocol {
 namespace {
-
-using testing::fields_match;
-using testing::record_fields;
 
 // ---- samples: every field away from its default ------------------------------------------------
 template <class T>
@@ -213,14 +210,7 @@ TargetGpsAck sample() {
 // ---- round trips --------------------------------------------------------------------------------
 template <class T>
 void expect_round_trip(const CodecOptions& options) {
-  const T original = sample<T>();
-  Result<Payload> payload = encode_payload(original, options);
-  ASSERT_TRUE(payload) << T::kName << ": " << payload.error();
-  EXPECT_EQ(payload->size, T::kSize) << T::kName;
-  Result<T> decoded = decode_payload<T>(payload->data(), payload->size, options);
-  ASSERT_TRUE(decoded) << T::kName << ": " << decoded.error();
-  EXPECT_TRUE(fields_match(record_fields(decoded.value()), record_fields(original).values()))
-      << T::kName;
+  testing::expect_round_trip(sample<T>(), options);
 }
 
 template <class... T>
@@ -605,9 +595,7 @@ TEST(CameraMessages, GpsAckIsAnAckInEveryField) {
 // ---- code tables -------------------------------------------------------------------------------
 template <class E>
 int defined_codes() {
-  int count = 0;
-  for (int code = 0; code <= 0xFF; ++code) count += to_string(static_cast<E>(code)) != nullptr;
-  return count;
+  return static_cast<int>(testing::defined_codes<E>().size());
 }
 
 TEST(CameraEnums, EachTableHasExactlyTheDocumentsCodes) {

@@ -6,16 +6,26 @@
 
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
-#include "field_recorder.h"
+#include "golden_checks.h"
 #include "k40t_driver/protocol/catalogue.h"
-#include "message_test_util.h"
 
 namespace k40t::protocol {
 namespace {
 
-using testing::gimbal_laser_sbus_golden;
-using testing::id_of;
+using testing::GoldenFrame;
+
+const char kGolden[] = "gimbal_laser_sbus.txt";
+
+// Every frame of the file; each must be one good frame (failing the test otherwise).
+std::vector<std::pair<GoldenFrame, testing::SplitFrame>> split_golden() {
+  std::vector<std::pair<GoldenFrame, testing::SplitFrame>> frames;
+  for (const GoldenFrame& g : testing::load_golden(kGolden))
+    frames.emplace_back(g, testing::checked_split(g));
+  return frames;
+}
 
 bool in_families(MessageId id) {
   const MessageId request = request_id_of(id);
@@ -31,7 +41,7 @@ bool is_plain_ack(const MessageInfo& m) {
 
 TEST(GimbalLaserSbusGolden, HasAFrameForEveryMessageOfTheFamilies) {
   std::set<MessageId> ids;
-  for (const auto& g : gimbal_laser_sbus_golden()) ids.insert(id_of(g));
+  for (const auto& [g, split] : split_golden()) ids.insert(split.header.message_id);
   bool has_plain_ack = false;
   for (const MessageInfo& m : catalogue()) {
     if (!in_families(m.id)) continue;
@@ -47,13 +57,15 @@ TEST(GimbalLaserSbusGolden, HasAFrameForEveryMessageOfTheFamilies) {
 }
 
 TEST(GimbalLaserSbusGolden, ListsEveryFieldAndUsesTheDirectionsAddresses) {
-  ASSERT_FALSE(gimbal_laser_sbus_golden().empty());
-  for (const auto& g : gimbal_laser_sbus_golden()) {
-    SCOPED_TRACE(g.where);
-    const MessageInfo* info = find_message(id_of(g));
+  const auto frames = split_golden();
+  ASSERT_FALSE(frames.empty());
+  for (const auto& [g, split] : frames) {
+    SCOPED_TRACE(g.where());
+    ASSERT_TRUE(split.ok) << split.problem;
+    const MessageInfo* info = find_message(split.header.message_id);
     ASSERT_NE(info, nullptr);
-    const Address destination{g.bytes[2], g.bytes[3]};
-    const Address source{g.bytes[5], g.bytes[6]};
+    const Address destination = split.header.destination;
+    const Address source = split.header.source;
     const Address pod = request_id_of(info->id) <= 0x0000FF ? kGimbalAddress : kCameraAddress;
     if (info->direction == Direction::kHostToPod) {
       EXPECT_EQ(source, kHostAddress);
@@ -64,10 +76,10 @@ TEST(GimbalLaserSbusGolden, ListsEveryFieldAndUsesTheDirectionsAddresses) {
     }
 
     testing::FieldRecorder decoded;
-    const std::vector<uint8_t> payload = testing::payload_of(g);
-    ASSERT_TRUE(info->describe(payload.data(), payload.size(), CodecOptions{}, decoded));
+    ASSERT_TRUE(
+        info->describe(split.payload.data(), split.payload.size(), CodecOptions{}, decoded));
     std::set<std::string> decoded_names;
-    for (const auto& [name, value] : decoded.fields()) decoded_names.insert(name);
+    for (const auto& field : decoded.fields()) decoded_names.insert(field.name);
     std::set<std::string> listed;
     for (const auto& [name, value] : g.expected) listed.insert(name);
     EXPECT_EQ(listed, decoded_names) << info->name << ": the '=' line must list every field";

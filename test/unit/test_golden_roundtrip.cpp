@@ -7,61 +7,38 @@
 #include <string>
 #include <vector>
 
-#include "golden_frames.h"
+#include "golden_checks.h"
 #include "k40t_driver/protocol/catalogue.h"
-#include "k40t_driver/protocol/parser.h"
 
-namespace k40t::test {
+namespace k40t::testing {
 namespace {
-
-std::vector<std::string> golden_files() {
-  std::vector<std::string> files;
-  for (const auto& entry : std::filesystem::directory_iterator(K40T_TEST_DATA_DIR "/golden")) {
-    if (entry.path().extension() == ".txt") files.push_back(entry.path().string());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
 
 // The checks of one frame; failures are reported with the frame's file and line.
 void check_frame(const GoldenFrame& golden) {
-  SCOPED_TRACE(golden.where);
+  SCOPED_TRACE(golden.where());
   const protocol::CodecOptions codec;
-  protocol::FrameParser parser(protocol::CrcCoverage::kHeaderExcluded);
-  std::vector<protocol::FrameHeader> headers;
-  std::vector<std::vector<uint8_t>> payloads;
-  parser.feed(golden.bytes.data(), golden.bytes.size(), [&](const protocol::FrameView& f) {
-    headers.push_back(f.header);
-    payloads.emplace_back(f.payload, f.payload + f.payload_size);
-  });
-  ASSERT_EQ(headers.size(), 1u) << "the bytes must hold exactly one frame (checksum errors: "
-                                << parser.stats().checksum_errors << ")";
-  EXPECT_EQ(parser.stats().bytes_discarded, 0u);
-  EXPECT_EQ(protocol::kFrameOverhead + payloads[0].size(), golden.bytes.size())
-      << "bytes after the frame";
+  const SplitFrame split = split_frame(golden);
+  ASSERT_TRUE(split.ok) << split.problem;
 
-  const protocol::MessageInfo* info = protocol::find_message(headers[0].message_id);
+  const protocol::MessageInfo* info = protocol::find_message(split.header.message_id);
   ASSERT_NE(info, nullptr) << "the catalogue does not know "
-                           << protocol::display_name(headers[0].message_id);
-  DecodedFields decoded;
-  const Status described = info->describe(payloads[0].data(), payloads[0].size(), codec, decoded);
-  ASSERT_TRUE(described) << described.message();
-  for (const auto& [name, value] : golden.expected) {
-    const Status match = decoded.matches(name, value);
-    EXPECT_TRUE(match) << info->name << ": " << match.message();
-  }
+                           << protocol::display_name(split.header.message_id);
+  EXPECT_EQ(golden.name, info->name) << "the title comment names another message";
+  EXPECT_EQ(golden.section, info->section) << "the title comment cites another section";
+  expect_describes_to_expected(golden, codec);
 
   if (info->direction == protocol::Direction::kHostToPod) {
-    Result<protocol::Payload> encoded = info->encode_args(golden.expected, codec);
+    Result<protocol::Payload> encoded = info->encode_args(golden.args(), codec);
     ASSERT_TRUE(encoded) << encoded.error();
-    EXPECT_EQ(std::vector<uint8_t>(encoded->data(), encoded->data() + encoded->size), payloads[0])
+    EXPECT_TRUE(same_bytes(std::vector<uint8_t>(encoded->data(), encoded->data() + encoded->size),
+                           split.payload))
         << info->name
         << ": encode_args of the expected fields differs from the hand-written payload";
   }
 }
 
 TEST(GoldenFiles, EveryFrameParsesDecodesAndReencodes) {
-  const std::vector<std::string> files = golden_files();
+  const std::vector<std::string> files = golden_file_paths();
   ASSERT_FALSE(files.empty()) << "no golden files in " << K40T_TEST_DATA_DIR "/golden";
   size_t frames = 0;
   for (const std::string& path : files) {
@@ -75,12 +52,18 @@ TEST(GoldenFiles, EveryFrameParsesDecodesAndReencodes) {
 
 TEST(GoldenFileReader, ReadsFramesOverSeveralLines) {
   Result<std::vector<GoldenFrame>> frames = parse_golden_text(
-      "# comment\n\nFD 02\n04 01\n= a=1 b=\"two words\"\n# next\nFD\n=\n", "t.txt");
+      "# comment\n\n# 3.2.5.1 laser_range: title\n# more\nFD 02\n04 01\n= a=1 b=\"two words\"\n"
+      "# next\nFD\n=\n",
+      "t.txt");
   ASSERT_TRUE(frames) << frames.error();
   ASSERT_EQ(frames->size(), 2u);
   EXPECT_EQ(frames->at(0).bytes, (std::vector<uint8_t>{0xFD, 0x02, 0x04, 0x01}));
-  EXPECT_EQ(frames->at(0).where, "t.txt:3");
-  EXPECT_EQ(frames->at(0).expected.at("b"), "two words");
+  EXPECT_EQ(frames->at(0).where(), "t.txt:5");
+  EXPECT_EQ(frames->at(0).section, "3.2.5.1");
+  EXPECT_EQ(frames->at(0).name, "laser_range");
+  EXPECT_EQ(frames->at(1).name, "");  // no title comment
+  EXPECT_EQ(frames->at(0).expected,
+            (FieldValues{{"a", "1"}, {"b", "two words"}}));  // in the line's order
   EXPECT_TRUE(frames->at(1).expected.empty());
 }
 
@@ -93,6 +76,8 @@ TEST(GoldenFileReader, MalformedFilesFailWithFileAndLine) {
       {"FD\n= a\n", "t.txt:2: expected name=value"},
       {"FD\n= a=1 a=2\n", "given twice"},
       {"FD\n= a=\"open\n", "unterminated quote"},
+      {"# 3.1.1.1 a: x\nFD\n# 3.1.1.2 b: y\nFD\n=\n",
+       "t.txt:3: the frame starting at t.txt:2 has no '=' line"},
       {"# only comments\n", "no frames"},
   };
   for (const auto& [text, expected] : cases) {
@@ -103,21 +88,46 @@ TEST(GoldenFileReader, MalformedFilesFailWithFileAndLine) {
 }
 
 TEST(GoldenFileReader, FieldComparisonNamesTheMismatch) {
-  DecodedFields fields;
+  FieldRecorder fields;
   fields.real("distance_m", 12.3);
   fields.enumeration("code", 8, "busy (repeated request)");
   fields.bytes("ip", std::vector<uint8_t>{192, 168, 144, 64}.data(), 4);
-  EXPECT_TRUE(fields.matches("distance_m", "12.3"));
-  EXPECT_TRUE(fields.matches("code", "8"));
-  EXPECT_TRUE(fields.matches("code", "Busy_Repeated_Request"));
-  EXPECT_TRUE(fields.matches("ip", "192.168.144.64"));
-  EXPECT_EQ(fields.matches("distance_m", "12.4").message(),
-            "field 'distance_m': expected 12.4, decoded 12.300000000000001");
-  EXPECT_FALSE(fields.matches("code", "0"));
-  EXPECT_FALSE(fields.matches("ip", "192.168.144.65"));
-  EXPECT_NE(fields.matches("range_m", "1").message().find("its fields: distance_m, code, ip"),
-            std::string::npos);
+  fields.boolean("on", true);
+  fields.text("name", "img_0001");
+  EXPECT_EQ(field_differences({{"distance_m", "12.3"},
+                               {"code", "8"},
+                               {"ip", "192.168.144.64"},
+                               {"on", "1"},
+                               {"name", "img_0001"}},
+                              fields),
+            "");
+  EXPECT_EQ(value_difference(fields.fields()[1], "Busy_Repeated_Request"), "");
+  EXPECT_EQ(value_difference(fields.fields()[3], "true"), "");
+  EXPECT_EQ(value_difference(fields.fields()[0], "12.4"),
+            "field 'distance_m': expected 12.4, got 12.300000000000001");
+  EXPECT_EQ(value_difference(fields.fields()[1], "0"),
+            "field 'code': expected 0, got 8 (busy (repeated request))");
+  EXPECT_EQ(value_difference(fields.fields()[2], "192.168.144.65"),
+            "field 'ip': expected 192.168.144.65, got 192,168,144,64");
+  EXPECT_EQ(value_difference(fields.fields()[3], "0"), "field 'on': expected 0, got 1");
+  EXPECT_EQ(value_difference(fields.fields()[4], "img_0002"),
+            "field 'name': expected img_0002, got \"img_0001\"");
+
+  // A list of fields: missing, extra and misordered fields are named too.
+  FieldRecorder two;
+  two.integer("a", -1);
+  two.unsigned_integer("b", 2);
+  EXPECT_EQ(field_differences({{"a", "-1"}, {"b", "2"}}, two), "");
+  EXPECT_EQ(field_differences({{"a", "-1"}}, two),
+            "  field 'b' = 2 is not expected (only 1 fields are)\n");
+  EXPECT_EQ(field_differences({{"a", "-1"}, {"b", "2"}, {"c", "3"}}, two),
+            "  field 'c': expected 3, but the message has no field #2\n");
+  EXPECT_EQ(field_differences({{"b", "2"}, {"a", "-1"}}, two),
+            "  field #0 is 'a', expected 'b' (fields in wire order)\n"
+            "  field #1 is 'b', expected 'a' (fields in wire order)\n");
+  EXPECT_EQ(field_differences({{"a", "-2"}, {"b", "2"}}, two),
+            "  field 'a': expected -2, got -1\n");
 }
 
 }  // namespace
-}  // namespace k40t::test
+}  // namespace k40t::testing

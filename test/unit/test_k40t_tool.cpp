@@ -5,11 +5,15 @@
 #include <string>
 #include <vector>
 
-#include "golden_frames.h"
+#include "golden_checks.h"
 #include "run_tool.h"
 
 namespace k40t::test {
 namespace {
+
+using testing::golden_file_paths;
+using testing::GoldenFrame;
+using testing::read_golden_file;
 
 // Section 3.2.5.1 request (see test_frame.cpp) and its ACK (see core_examples.txt).
 const char* kLaserRequestHex = "FD 02 04 01 00 01 01 00 04 00 01 00 A2 56";
@@ -142,29 +146,20 @@ std::vector<std::string> decoded_frames(const std::string& json_lines) {
   return frames;
 }
 
-// The same pairs from the golden files, in the capture script's order (sorted file names).
+// The same pairs from the golden files, in the capture script's order (file names sorted
+// bytewise, as the script's sorted() does).
 std::vector<std::string> golden_frames() {
-  const ToolRun ls =
-      run_shell(std::string("ls '") + K40T_TEST_DATA_DIR + "/golden/'*.txt | LC_ALL=C sort");
   std::vector<std::string> frames;
-  size_t start = 0;
-  while (start < ls.out.size()) {
-    const size_t end = ls.out.find('\n', start);
-    Result<std::vector<GoldenFrame>> file = read_golden_file(ls.out.substr(start, end - start));
+  for (const std::string& path : golden_file_paths()) {
+    Result<std::vector<GoldenFrame>> file = read_golden_file(path);
     EXPECT_TRUE(file) << file.error();
     if (!file) break;
     for (const GoldenFrame& g : file.value()) {
+      const testing::SplitFrame split = testing::checked_split(g);
       char id[16];
-      std::snprintf(id, sizeof(id), "0x%02X%02X%02X", g.bytes[9], g.bytes[8], g.bytes[7]);
-      std::string payload;
-      for (size_t i = 10; i + 2 < g.bytes.size(); ++i) {
-        char b[4];
-        std::snprintf(b, sizeof(b), "%s%02X", payload.empty() ? "" : " ", g.bytes[i]);
-        payload += b;
-      }
-      frames.push_back(std::string(id) + " " + payload);
+      std::snprintf(id, sizeof(id), "0x%06X", static_cast<unsigned>(split.header.message_id));
+      frames.push_back(std::string(id) + " " + testing::hex_bytes(split.payload));
     }
-    start = end + 1;
   }
   return frames;
 }

@@ -6,9 +6,10 @@
 #include <limits>
 #include <type_traits>
 
+#include "golden_checks.h"
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
-#include "message_test_util.h"
+#include "message_checks.h"
 
 namespace k40t::protocol {
 namespace {
@@ -20,6 +21,8 @@ using testing::expect_encodes_to;
 using testing::expect_range_error;
 using testing::expect_round_trip;
 using testing::golden;
+
+const char kGolden[] = "gimbal_laser_sbus.txt";
 
 // Every request names its ACK type; the data-carrying one is its own struct.
 static_assert(std::is_same_v<GimbalControlRequest::Ack, PlainAck>);
@@ -37,7 +40,7 @@ static_assert(std::is_same_v<GimbalStabilisationRequest::Ack, PlainAck>);
 
 // ---- golden: 3.1.1.1 status -----------------------------------------------------------------
 TEST(GimbalGolden, StatusNibblesBitsAndStates) {
-  const GimbalStatus m = decode_golden<GimbalStatus>(golden("gimbal_status"));
+  const GimbalStatus m = decode_golden<GimbalStatus>(golden(kGolden, "gimbal_status"));
   EXPECT_EQ(m.gimbal_link, GimbalLinkState::kNormal);    // low nibble of 0x10
   EXPECT_EQ(m.camera_link, GimbalLinkState::kAbnormal);  // high nibble of 0x10
   EXPECT_EQ(m.upgrade, GimbalUpgradeState::kFirmwareUpgradeIncomplete);
@@ -47,7 +50,7 @@ TEST(GimbalGolden, StatusNibblesBitsAndStates) {
   EXPECT_TRUE(m.laser_ok);
   EXPECT_EQ(m.stabilisation, GimbalStabilisationState::kStabilising);
   // The simulator sends it: encoding gives the document's bytes back.
-  expect_encodes_to(m, golden("gimbal_status"));
+  expect_encodes_to(m, golden(kGolden, "gimbal_status"));
 }
 
 TEST(GimbalGolden, StatusAcceptsTheFourMeaningfulBytesAlone) {
@@ -73,7 +76,7 @@ TEST(GimbalGolden, StatusReportsUndefinedCodesWithoutALabel) {
 
 // ---- golden: 3.1.1.2 attitude ---------------------------------------------------------------
 TEST(GimbalGolden, AttitudeCentidegreesAndRateOrder) {
-  const GimbalAttitude m = decode_golden<GimbalAttitude>(golden("gimbal_attitude"));
+  const GimbalAttitude m = decode_golden<GimbalAttitude>(golden(kGolden, "gimbal_attitude"));
   EXPECT_DOUBLE_EQ(m.joint_yaw_deg, 12.34);
   EXPECT_DOUBLE_EQ(m.joint_roll_deg, -1.5);
   EXPECT_DOUBLE_EQ(m.joint_pitch_deg, -45.0);
@@ -83,7 +86,7 @@ TEST(GimbalGolden, AttitudeCentidegreesAndRateOrder) {
   EXPECT_DOUBLE_EQ(m.yaw_rate_deg_s, 10.5);    // bytes 13-14
   EXPECT_DOUBLE_EQ(m.pitch_rate_deg_s, -2.0);  // bytes 15-16: pitch before roll
   EXPECT_DOUBLE_EQ(m.roll_rate_deg_s, 0.0);
-  expect_encodes_to(m, golden("gimbal_attitude"));
+  expect_encodes_to(m, golden(kGolden, "gimbal_attitude"));
 }
 
 // ---- golden: 3.1.2.1 control ----------------------------------------------------------------
@@ -92,22 +95,22 @@ TEST(GimbalGolden, ControlModeInTheUpperNibble) {
   centre.mode = GimbalMode::kCentre;
   centre.yaw = GimbalYawDirection::kRight;
   centre.pitch = GimbalPitchDirection::kStop;
-  expect_encodes_to(centre, golden("gimbal_control", 0));
+  expect_encodes_to(centre, golden(kGolden, "gimbal_control", 0));
 
   GimbalControlRequest look_down;
   look_down.mode = GimbalMode::kLookDown;
   look_down.yaw = GimbalYawDirection::kLeft;
   look_down.pitch = GimbalPitchDirection::kDown;
-  expect_encodes_to(look_down, golden("gimbal_control", 1));
+  expect_encodes_to(look_down, golden(kGolden, "gimbal_control", 1));
 
-  const auto decoded = decode_golden<GimbalControlRequest>(golden("gimbal_control", 1));
+  const auto decoded = decode_golden<GimbalControlRequest>(golden(kGolden, "gimbal_control", 1));
   EXPECT_EQ(decoded.mode, GimbalMode::kLookDown);
   EXPECT_EQ(decoded.yaw, GimbalYawDirection::kLeft);
   EXPECT_EQ(decoded.pitch, GimbalPitchDirection::kDown);
 }
 
 TEST(GimbalGolden, ControlAckIsTheBareResponseCode) {
-  const PlainAck ack = decode_golden<PlainAck>(golden("gimbal_control_ack"));
+  const PlainAck ack = decode_golden<PlainAck>(golden(kGolden, "gimbal_control_ack"));
   EXPECT_EQ(ack.code, ResponseCode::kOk);
 }
 
@@ -116,8 +119,8 @@ TEST(GimbalGolden, AngleDownAndLeftAreNegative) {
   GimbalAngleRequest m;
   m.pitch_deg = -45.5;  // direction 1 (down), 4550
   m.yaw_deg = -120.25;  // direction 0 (left), 12025
-  expect_encodes_to(m, golden("gimbal_angle", 0));
-  const auto d = decode_golden<GimbalAngleRequest>(golden("gimbal_angle", 0));
+  expect_encodes_to(m, golden(kGolden, "gimbal_angle", 0));
+  const auto d = decode_golden<GimbalAngleRequest>(golden(kGolden, "gimbal_angle", 0));
   EXPECT_TRUE(d.pitch_move);
   EXPECT_DOUBLE_EQ(d.pitch_deg, -45.5);
   EXPECT_TRUE(d.yaw_move);
@@ -129,8 +132,8 @@ TEST(GimbalGolden, AngleUpLimitAndNoYawMovement) {
   m.pitch_deg = 30;
   m.yaw_move = false;
   m.yaw_deg = 77;  // ignored when not moving: sent as 0
-  expect_encodes_to(m, golden("gimbal_angle", 1));
-  const auto d = decode_golden<GimbalAngleRequest>(golden("gimbal_angle", 1));
+  expect_encodes_to(m, golden(kGolden, "gimbal_angle", 1));
+  const auto d = decode_golden<GimbalAngleRequest>(golden(kGolden, "gimbal_angle", 1));
   EXPECT_DOUBLE_EQ(d.pitch_deg, 30);
   EXPECT_FALSE(d.yaw_move);
   EXPECT_EQ(d.yaw_deg, 0);
@@ -140,14 +143,14 @@ TEST(GimbalGolden, AngleRightLimitAndNoPitchMovement) {
   GimbalAngleRequest m;
   m.pitch_move = false;
   m.yaw_deg = 180;  // direction 1 (right)
-  expect_encodes_to(m, golden("gimbal_angle", 2));
-  const auto d = decode_golden<GimbalAngleRequest>(golden("gimbal_angle", 2));
+  expect_encodes_to(m, golden(kGolden, "gimbal_angle", 2));
+  const auto d = decode_golden<GimbalAngleRequest>(golden(kGolden, "gimbal_angle", 2));
   EXPECT_FALSE(d.pitch_move);
   EXPECT_DOUBLE_EQ(d.yaw_deg, 180);
 }
 
 TEST(GimbalGolden, AngleNackIsBigEndianBusy) {
-  EXPECT_EQ(decode_golden<PlainAck>(golden("gimbal_angle_ack")).code, ResponseCode::kBusy);
+  EXPECT_EQ(decode_golden<PlainAck>(golden(kGolden, "gimbal_angle_ack")).code, ResponseCode::kBusy);
 }
 
 TEST(GimbalAngle, ScaleComesFromTheCodecOptions) {
@@ -179,17 +182,17 @@ TEST(GimbalAngle, RejectsUndefinedDirectionsAndAZeroScale) {
 
 // ---- golden: one-byte commands 3.1.2.3, 3.1.2.5, 3.1.2.7..3.1.2.11 --------------------------
 TEST(GimbalGolden, FixedCommandRequests) {
-  expect_encodes_to(GimbalDriftCalibrationRequest{}, golden("gimbal_drift_calibration"));
-  expect_encodes_to(GimbalVersionRequest{}, golden("gimbal_version"));
-  expect_encodes_to(GimbalServoOffRequest{}, golden("gimbal_servo_off"));  // command 0x00
-  expect_encodes_to(GimbalLinearCalibrationRequest{}, golden("gimbal_linear_calibration"));
-  expect_encodes_to(GimbalRestartRequest{}, golden("gimbal_restart"));
+  expect_encodes_to(GimbalDriftCalibrationRequest{}, golden(kGolden, "gimbal_drift_calibration"));
+  expect_encodes_to(GimbalVersionRequest{}, golden(kGolden, "gimbal_version"));
+  expect_encodes_to(GimbalServoOffRequest{}, golden(kGolden, "gimbal_servo_off"));  // command 0x00
+  expect_encodes_to(GimbalLinearCalibrationRequest{}, golden(kGolden, "gimbal_linear_calibration"));
+  expect_encodes_to(GimbalRestartRequest{}, golden(kGolden, "gimbal_restart"));
   expect_encodes_to(GimbalUseFlightControllerAttitudeRequest{},
-                    golden("gimbal_use_flight_controller_attitude"));
+                    golden(kGolden, "gimbal_use_flight_controller_attitude"));
   expect_encodes_to(GimbalAccelerationCalibrationRequest{},
-                    golden("gimbal_acceleration_calibration"));
-  decode_golden<GimbalRestartRequest>(golden("gimbal_restart"));
-  decode_golden<GimbalServoOffRequest>(golden("gimbal_servo_off"));
+                    golden(kGolden, "gimbal_acceleration_calibration"));
+  decode_golden<GimbalRestartRequest>(golden(kGolden, "gimbal_restart"));
+  decode_golden<GimbalServoOffRequest>(golden(kGolden, "gimbal_servo_off"));
 }
 
 TEST(GimbalCommands, RejectOtherCommandBytes) {
@@ -203,15 +206,15 @@ TEST(GimbalGolden, DialSpeedIsDegreesPerSecondTimesFive) {
   GimbalDialSpeedRequest m;
   m.pitch_speed_deg_s = 20;  // 100
   m.yaw_speed_deg_s = 1;     // 5, the document's minimum
-  expect_encodes_to(m, golden("gimbal_dial_speed"));
-  const auto d = decode_golden<GimbalDialSpeedRequest>(golden("gimbal_dial_speed"));
+  expect_encodes_to(m, golden(kGolden, "gimbal_dial_speed"));
+  const auto d = decode_golden<GimbalDialSpeedRequest>(golden(kGolden, "gimbal_dial_speed"));
   EXPECT_DOUBLE_EQ(d.pitch_speed_deg_s, 20);
   EXPECT_DOUBLE_EQ(d.yaw_speed_deg_s, 1);
 }
 
 // ---- golden: 3.1.2.5 version ACK ------------------------------------------------------------
 TEST(GimbalGolden, VersionAck) {
-  const auto v = decode_golden<GimbalVersionAck>(golden("gimbal_version_ack", 0));
+  const auto v = decode_golden<GimbalVersionAck>(golden(kGolden, "gimbal_version_ack", 0));
   EXPECT_EQ(v.code, ResponseCode::kOk);
   EXPECT_EQ(v.hardware_major, 1);
   EXPECT_EQ(v.hardware_minor, 2);
@@ -219,11 +222,11 @@ TEST(GimbalGolden, VersionAck) {
   EXPECT_EQ(v.software_major, 2);
   EXPECT_EQ(v.software_minor, 10);
   EXPECT_EQ(v.software_patch, 7);
-  expect_encodes_to(v, golden("gimbal_version_ack", 0));
+  expect_encodes_to(v, golden(kGolden, "gimbal_version_ack", 0));
 }
 
 TEST(GimbalGolden, VersionRefusalCarriesTheCodeAlone) {
-  const auto v = decode_golden<GimbalVersionAck>(golden("gimbal_version_ack", 1));
+  const auto v = decode_golden<GimbalVersionAck>(golden(kGolden, "gimbal_version_ack", 1));
   EXPECT_EQ(v.code, ResponseCode::kFailure);  // 00 01, big-endian
   EXPECT_EQ(v.software_major, 0);
 }
@@ -246,8 +249,8 @@ TEST(GimbalGolden, PointAtWideLens) {
   m.zoom_x = 4;
   m.x_px = 1600;
   m.y_px = 300;
-  expect_encodes_to(m, golden("gimbal_point_at", 0));
-  const auto d = decode_golden<GimbalPointAtRequest>(golden("gimbal_point_at", 0));
+  expect_encodes_to(m, golden(kGolden, "gimbal_point_at", 0));
+  const auto d = decode_golden<GimbalPointAtRequest>(golden(kGolden, "gimbal_point_at", 0));
   EXPECT_EQ(d.lens, GimbalAimLens::kWide);
   EXPECT_DOUBLE_EQ(d.zoom_x, 4);
   EXPECT_EQ(d.x_px, 1600);
@@ -260,19 +263,21 @@ TEST(GimbalGolden, PointAtTelephotoAtTheCorner) {
   m.zoom_x = 35.5;
   m.x_px = 1920;
   m.y_px = 1;
-  expect_encodes_to(m, golden("gimbal_point_at", 1));
-  EXPECT_DOUBLE_EQ(decode_golden<GimbalPointAtRequest>(golden("gimbal_point_at", 1)).zoom_x, 35.5);
+  expect_encodes_to(m, golden(kGolden, "gimbal_point_at", 1));
+  EXPECT_DOUBLE_EQ(
+      decode_golden<GimbalPointAtRequest>(golden(kGolden, "gimbal_point_at", 1)).zoom_x, 35.5);
 }
 
 // ---- golden: 3.1.2.12 stabilisation ---------------------------------------------------------
 TEST(GimbalGolden, StabilisationOnAndOff) {
   GimbalStabilisationRequest on;
   on.enable = true;
-  expect_encodes_to(on, golden("gimbal_stabilisation", 0));
+  expect_encodes_to(on, golden(kGolden, "gimbal_stabilisation", 0));
   GimbalStabilisationRequest off;
   off.enable = false;
-  expect_encodes_to(off, golden("gimbal_stabilisation", 1));
-  EXPECT_FALSE(decode_golden<GimbalStabilisationRequest>(golden("gimbal_stabilisation", 1)).enable);
+  expect_encodes_to(off, golden(kGolden, "gimbal_stabilisation", 1));
+  EXPECT_FALSE(
+      decode_golden<GimbalStabilisationRequest>(golden(kGolden, "gimbal_stabilisation", 1)).enable);
   expect_decode_error<GimbalStabilisationRequest>({0x02, 0x00}, "0 (off) or 1 (on), got 2");
 }
 

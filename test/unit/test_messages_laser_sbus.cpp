@@ -4,10 +4,11 @@
 
 #include <type_traits>
 
+#include "golden_checks.h"
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/messages/laser.h"
 #include "k40t_driver/protocol/messages/sbus.h"
-#include "message_test_util.h"
+#include "message_checks.h"
 
 namespace k40t::protocol {
 namespace {
@@ -19,6 +20,8 @@ using testing::expect_encodes_to;
 using testing::expect_range_error;
 using testing::expect_round_trip;
 using testing::golden;
+
+const char kGolden[] = "gimbal_laser_sbus.txt";
 
 static_assert(std::is_same_v<LaserRangeRequest::Ack, LaserRangeAck>);
 static_assert(std::is_same_v<LaserPeriodicRangeRequest::Ack, PlainAck>);
@@ -36,28 +39,29 @@ CodecOptions little_endian_acks() {
 TEST(LaserGolden, SingleRangingRequestAndAck) {
   LaserRangeRequest request;
   request.enable = true;
-  expect_encodes_to(request, golden("laser_range"));
+  expect_encodes_to(request, golden(kGolden, "laser_range"));
 
-  const auto ack = decode_golden<LaserRangeAck>(golden("laser_range_ack"));
+  const auto ack = decode_golden<LaserRangeAck>(golden(kGolden, "laser_range_ack"));
   EXPECT_EQ(ack.code, ResponseCode::kOk);
   EXPECT_DOUBLE_EQ(ack.distance_m, 1234.5);  // 30 39 read high byte first (NOTES A2)
-  expect_encodes_to(ack, golden("laser_range_ack"));
+  expect_encodes_to(ack, golden(kGolden, "laser_range_ack"));
 }
 
 TEST(LaserGolden, PeriodicRangingRequestAckAndStatusFrames) {
   LaserPeriodicRangeRequest request;
   request.enable = true;
-  expect_encodes_to(request, golden("laser_periodic_range"));
-  EXPECT_EQ(decode_golden<PlainAck>(golden("laser_periodic_range_ack")).code, ResponseCode::kOk);
+  expect_encodes_to(request, golden(kGolden, "laser_periodic_range"));
+  EXPECT_EQ(decode_golden<PlainAck>(golden(kGolden, "laser_periodic_range_ack")).code,
+            ResponseCode::kOk);
 
   const auto status =
-      decode_golden<LaserPeriodicRangeStatus>(golden("laser_periodic_range_status", 0));
+      decode_golden<LaserPeriodicRangeStatus>(golden(kGolden, "laser_periodic_range_status", 0));
   EXPECT_EQ(status.code, ResponseCode::kOk);
   EXPECT_DOUBLE_EQ(status.distance_m, 87.6);
-  expect_encodes_to(status, golden("laser_periodic_range_status", 0));
+  expect_encodes_to(status, golden(kGolden, "laser_periodic_range_status", 0));
 
   const auto no_return =
-      decode_golden<LaserPeriodicRangeStatus>(golden("laser_periodic_range_status", 1));
+      decode_golden<LaserPeriodicRangeStatus>(golden(kGolden, "laser_periodic_range_status", 1));
   EXPECT_EQ(no_return.distance_m, 0);
 }
 
@@ -90,11 +94,12 @@ TEST(SbusGolden, RangeRequestIsLittleEndian) {
   SbusRangeRequest m;
   m.max_value = 1811;
   m.min_value = 172;
-  expect_encodes_to(m, golden("sbus_range"));
-  const auto d = decode_golden<SbusRangeRequest>(golden("sbus_range"));
+  expect_encodes_to(m, golden(kGolden, "sbus_range"));
+  const auto d = decode_golden<SbusRangeRequest>(golden(kGolden, "sbus_range"));
   EXPECT_EQ(d.max_value, 1811);
   EXPECT_EQ(d.min_value, 172);
-  EXPECT_EQ(decode_golden<PlainAck>(golden("sbus_range_ack")).code, ResponseCode::kFailure);
+  EXPECT_EQ(decode_golden<PlainAck>(golden(kGolden, "sbus_range_ack")).code,
+            ResponseCode::kFailure);
 }
 
 TEST(SbusGolden, ChannelsAreNumberedFromOne) {
@@ -106,16 +111,16 @@ TEST(SbusGolden, ChannelsAreNumberedFromOne) {
   m.pitch_channel = 2;
   m.yaw_channel = 1;      // wire 0
   m.centre_channel = 16;  // wire 15
-  expect_encodes_to(m, golden("sbus_channels"));
-  const auto d = decode_golden<SbusChannelsRequest>(golden("sbus_channels"));
+  expect_encodes_to(m, golden(kGolden, "sbus_channels"));
+  const auto d = decode_golden<SbusChannelsRequest>(golden(kGolden, "sbus_channels"));
   EXPECT_EQ(d.yaw_channel, 1);
   EXPECT_EQ(d.centre_channel, 16);
   EXPECT_EQ(d.record_channel, 12);
 }
 
 TEST(SbusGolden, ConfigRequestAndAck) {
-  expect_encodes_to(SbusConfigRequest{}, golden("sbus_config"));
-  const auto ack = decode_golden<SbusConfigAck>(golden("sbus_config_ack"));
+  expect_encodes_to(SbusConfigRequest{}, golden(kGolden, "sbus_config"));
+  const auto ack = decode_golden<SbusConfigAck>(golden(kGolden, "sbus_config_ack"));
   EXPECT_EQ(ack.code, ResponseCode::kOk);
   EXPECT_EQ(ack.range.max_value, 2000);  // 07 D0, big-endian (NOTES A2)
   EXPECT_EQ(ack.range.min_value, 100);
@@ -126,7 +131,7 @@ TEST(SbusGolden, ConfigRequestAndAck) {
   EXPECT_EQ(ack.channels.pitch_channel, 5);
   EXPECT_EQ(ack.channels.yaw_channel, 6);
   EXPECT_EQ(ack.channels.centre_channel, 7);
-  expect_encodes_to(ack, golden("sbus_config_ack"));
+  expect_encodes_to(ack, golden(kGolden, "sbus_config_ack"));
 }
 
 TEST(SbusConfigAck, RefusalReportsNoConfiguration) {

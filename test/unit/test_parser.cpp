@@ -7,11 +7,10 @@
 #include <random>
 #include <vector>
 
-#include "golden_frames.h"
+#include "golden_checks.h"
 #include "k40t_driver/protocol/crc.h"
 #include "k40t_driver/protocol/frame.h"
 #include "k40t_driver/protocol/parser.h"
-#include "message_test_util.h"
 
 namespace k40t::protocol {
 namespace {
@@ -41,14 +40,14 @@ Bytes attitude_frame(uint8_t sequence, Address source = kGimbalAddress,
 
 Bytes golden_stream() {
   Bytes all;
-  for (const auto& g : testing::gimbal_laser_sbus_golden())
+  for (const auto& g : testing::load_golden("gimbal_laser_sbus.txt"))
     all.insert(all.end(), g.bytes.begin(), g.bytes.end());
   return all;
 }
 
 std::vector<Bytes> golden_frames() {
   std::vector<Bytes> frames;
-  for (const auto& g : testing::gimbal_laser_sbus_golden()) frames.push_back(g.bytes);
+  for (const auto& g : testing::load_golden("gimbal_laser_sbus.txt")) frames.push_back(g.bytes);
   return frames;
 }
 

@@ -7,10 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "golden_checks.h"
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/messages/thermal.h"
 #include "k40t_driver/protocol/messages/visible.h"
-#include "message_test_support.h"
+#include "message_checks.h"
 
 namespace k40t::protocol {
 namespace {
@@ -23,28 +24,24 @@ bool in_families(MessageId id) {
 }
 
 TEST(ThermalVisibleGoldenFile, EveryFrameDecodesToItsExpectedLine) {
-  const std::vector<testing::GoldenFrame> golden =
-      testing::load_golden(testing::golden_path(kGolden));
+  const std::vector<testing::GoldenFrame> golden = testing::load_golden(kGolden);
   ASSERT_GE(golden.size(), 30u);
   for (const testing::GoldenFrame& frame : golden) {
-    SCOPED_TRACE(std::string(kGolden) + ":" + std::to_string(frame.line) + " " + frame.name);
+    SCOPED_TRACE(frame.where() + " " + frame.name);
     const testing::SplitFrame split = testing::split_frame(frame);
-    ASSERT_TRUE(split.ok) << "not exactly one frame with a good checksum";
+    ASSERT_TRUE(split.ok) << split.problem;
     const MessageInfo* info = find_message(split.header.message_id);
     ASSERT_NE(info, nullptr) << "id not in the catalogue";
     EXPECT_TRUE(in_families(info->id));
     EXPECT_EQ(frame.name, info->name) << "the comment names another message";
     EXPECT_EQ(frame.section, info->section) << "the comment cites another section";
-    testing::RecordedFields fields;
-    const Status described = info->describe(split.payload.data(), split.payload.size(), {}, fields);
-    ASSERT_TRUE(described) << described.message();
-    EXPECT_TRUE(testing::fields_match(fields, frame.expected));
+    testing::expect_describes_to_expected(frame);
   }
 }
 
 TEST(ThermalVisibleGoldenFile, CoversEveryMessageIdOfBothFamilies) {
   std::set<MessageId> covered;
-  for (const testing::GoldenFrame& frame : testing::load_golden(testing::golden_path(kGolden))) {
+  for (const testing::GoldenFrame& frame : testing::load_golden(kGolden)) {
     covered.insert(testing::split_frame(frame).header.message_id);
   }
   size_t plain_acks = 0;

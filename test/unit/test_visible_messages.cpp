@@ -6,8 +6,9 @@
 #include <set>
 #include <string>
 
+#include "golden_checks.h"
 #include "k40t_driver/protocol/messages/visible.h"
-#include "message_test_support.h"
+#include "message_checks.h"
 
 namespace k40t::protocol {
 namespace {
