@@ -48,14 +48,16 @@ class SimStreamProcess {
   }
   ~SimStreamProcess() {
     if (pid_ > 0) {
-      kill(pid_, SIGCONT);
+      // SIGTERM first, so a frozen server ends as soon as it runs again: left to run on with the
+      // connections its clients dropped meanwhile, gst-rtsp-server floods stderr with GLib
+      // criticals until it is stopped.
       kill(pid_, SIGTERM);
+      kill(pid_, SIGCONT);
       waitpid(pid_, nullptr, 0);
     }
   }
   const std::string& url() const { return url_; }
   void freeze() { kill(pid_, SIGSTOP); }
-  void thaw() { kill(pid_, SIGCONT); }
 
  private:
   pid_t pid_ = -1;
