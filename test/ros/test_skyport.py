@@ -97,10 +97,36 @@ class Skyport(unittest.TestCase):
         self.assertTrue(self.identity.startswith("ok passed"), self.identity)
         self.assertNotIn("identity_passed=0", self.skyport.ok("status"))
 
+    def check(self, what):
+        """skyport_sim's scripted `check WHAT` (what DJI Pilot sends, every ACK checked); asserts
+        that every step passed and returns the steps."""
+        reply = self.skyport("check " + what, 90.0)
+        self.assertTrue(reply.startswith("ok "), reply)
+        steps = [s.strip() for s in reply.split("|")[1:]]
+        report = "\n".join(steps)
+        self.assertTrue(steps, "check %s: no steps: %s" % (what, reply))
+        failed = [s for s in steps if not s.startswith("PASS ")]
+        self.assertEqual(failed, [], "check %s:\n%s" % (what, report))
+        self.assertTrue(reply.startswith("ok passed"), "check %s:\n%s" % (what, report))
+        return steps
+
     def test_payload_state_exchanges(self):
-        reply = self.skyport("check payload", 15.0)
-        self.assertTrue(reply.startswith("ok passed"), reply)
-        self.assertIn("'K40T'", reply)
+        steps = self.check("payload")
+        self.assertTrue(any("'K40T'" in s for s in steps), steps)
+
+    def test_check_camera_every_step_passes(self):
+        # Photo, photo state until stored, video, record start/stop, focal length until the lens
+        # arrives, continuous zoom, focus, metering.
+        steps = self.check("camera")
+        self.assertTrue(any(s.startswith("PASS photo_stored") for s in steps), steps)
+        self.assertTrue(any("focal length reads back" in s for s in steps), steps)
+
+    def test_check_gimbal_every_step_passes(self):
+        steps = self.check("gimbal")
+        self.assertTrue(any(s.startswith("PASS gimbal_reaches_angle") for s in steps), steps)
+
+    def test_check_unsupported_every_step_passes(self):
+        self.check("unsupported")
 
     def test_unknown_command_is_unsupported(self):
         code, data = self.command("unknown")

@@ -1,5 +1,7 @@
 // The simulated adapter's scripted exchanges: what DJI Pilot would send, with every ACK checked.
+#include <chrono>
 #include <cmath>
+#include <string>
 #include <thread>
 
 #include "k40t_driver/psdk/sim/adapter_simulator.h"
@@ -34,20 +36,44 @@ typename Cmd::Ack exchange(Session& session, CheckReport& report, const Cmd& com
                   [](const typename Cmd::Ack&, std::string&) { return true; });
 }
 
-// Polls the gimbal state until `near` holds or a generous deadline passes: the gimbal moves at a
-// finite speed.
-bool wait_for_gimbal(Session& session, const std::function<bool(const GimbalStateAck&)>& near,
-                     GimbalStateAck* last) {
+// Polls with `command` until `done` holds for its ACK or a generous deadline passes, as DJI Pilot
+// does: the gimbal and the lens move at a finite speed, the camera takes time to store a photo.
+// `last` keeps the last OK answer; a refusal ends the polling (asking again will not help) and
+// `why` says what went wrong.
+template <class Cmd, class Done>
+bool poll_until(Session& session, const Cmd& command, Done done, typename Cmd::Ack* last,
+                std::string* why) {
   const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  *why = "no answer";
   while (std::chrono::steady_clock::now() < until) {
-    const Result<GimbalStateAck> state = session.request(GetGimbalState{});
-    if (state && state->code == AckCode::kOk) {
-      *last = state.value();
-      if (near(*last)) return true;
+    const Result<typename Cmd::Ack> ack = session.request(command);
+    if (!ack) {
+      *why = ack.error();
+    } else if (ack->code != AckCode::kOk) {
+      *why = "payload answered " + ack_code_text(static_cast<uint8_t>(ack->code));
+      return false;
+    } else {
+      *last = ack.value();
+      if (done(*last)) return true;
+      *why = "not within 10 s";
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   return false;
+}
+
+bool shooting(const ShootPhotoState& s) {
+  return s.shooting_single || s.shooting_burst || s.shooting_interval || s.storing;
+}
+
+std::string photo_state_text(const ShootPhotoState& s) {
+  if (!shooting(s)) return "idle";
+  std::string out;
+  if (s.shooting_single) out += " single";
+  if (s.shooting_burst) out += " burst";
+  if (s.shooting_interval) out += " interval";
+  if (s.storing) out += " storing";
+  return "shooting:" + out;
 }
 
 std::string angles_text(const GimbalAngles& a) {
@@ -103,7 +129,19 @@ CheckReport AdapterSimulator::check_camera() {
   ShootPhoto photo;
   photo.action = ShootPhotoAction::kStart;
   exchange(s, report, photo, "shoot photo");
-  exchange(s, report, GetShootPhotoState{}, "photo state");
+  exchange(s, report, GetShootPhotoState{}, "photo state",
+           [](const ShootPhotoStateAck& a, std::string& d) {
+             d += ", " + photo_state_text(a.state);
+             return true;
+           });
+  // Like DJI Pilot: no further camera command while the camera is still shooting or storing.
+  std::string why;
+  ShootPhotoStateAck photo_state;
+  const bool stored = poll_until(
+      s, GetShootPhotoState{}, [](const ShootPhotoStateAck& a) { return !shooting(a.state); },
+      &photo_state, &why);
+  report.add("photo_stored", stored,
+             "photo state " + photo_state_text(photo_state.state) + (stored ? "" : ", " + why));
 
   mode.mode = CameraWorkMode::kRecordVideo;
   exchange(s, report, mode, "work mode: video");
@@ -134,11 +172,17 @@ CheckReport AdapterSimulator::check_camera() {
       std::round((spec.min_focal_length_mm + spec.max_focal_length_mm) / 2.0 * 10.0) / 10.0;
   exchange(s, report, focal, "focal length " + std::to_string(focal.focal_length_mm) + " mm");
   const double tolerance_mm = std::max(spec.focal_length_step_mm, 0.1);
-  exchange(s, report, GetOpticalZoomFocalLength{}, "focal length reads back",
-           [&](const OpticalZoomFocalLengthAck& a, std::string& d) {
-             d += " " + std::to_string(a.focal_length_mm) + " mm";
-             return std::abs(a.focal_length_mm - focal.focal_length_mm) <= tolerance_mm;
-           });
+  // The lens moves at a finite speed: the read-back follows it until it arrives.
+  OpticalZoomFocalLengthAck focal_read;
+  const bool arrived = poll_until(
+      s, GetOpticalZoomFocalLength{},
+      [&](const OpticalZoomFocalLengthAck& a) {
+        return std::abs(a.focal_length_mm - focal.focal_length_mm) <= tolerance_mm;
+      },
+      &focal_read, &why);
+  report.add(GetOpticalZoomFocalLength::kName, arrived,
+             "focal length reads back: " + std::to_string(focal_read.focal_length_mm) + " mm" +
+                 (arrived ? "" : ", " + why));
   exchange(s, report, GetOpticalZoomFactor{}, "optical zoom factor");
   StartContinuousZoom zoom;
   zoom.direction = ZoomDirection::kIn;
@@ -163,27 +207,42 @@ CheckReport AdapterSimulator::check_gimbal() {
   Session& s = *session_;
   exchange(s, report, GetGimbalCapability{}, "capability",
            [](const GimbalCapabilityAck& a, std::string&) { return a.supported; });
-  exchange(s, report, GetGimbalState{}, "state", [](const GimbalStateAck& a, std::string& d) {
-    d += ", " + angles_text(a.angles);
-    return true;
-  });
+  const GimbalStateAck state =
+      exchange(s, report, GetGimbalState{}, "state", [](const GimbalStateAck& a, std::string& d) {
+        d += ", " + std::string(to_string(a.mode)) + ", " + angles_text(a.angles);
+        return true;
+      });
+  // The mode the gimbal says it is in must be accepted; PSDK lets a gimbal answer 0x02 for a mode
+  // it does not have (a pod whose yaw is relative to the aircraft has no free mode), never 0x01.
   SetGimbalMode mode;
+  mode.mode = GimbalMode::kFollowing;
+  for (const GimbalMode m : {GimbalMode::kFree, GimbalMode::kFpv, GimbalMode::kFollowing}) {
+    if (to_state_mode(m) == state.mode) mode.mode = m;
+  }
+  exchange(s, report, mode, std::string("mode: ") + to_string(mode.mode) + " (its own)");
   mode.mode = GimbalMode::kFree;
-  exchange(s, report, mode, "mode: free");
+  const Result<SetGimbalMode::Ack> free = s.request(mode);
+  const bool free_answered =
+      free && (free->code == AckCode::kOk || free->code == AckCode::kUnsupported);
+  report.add(
+      SetGimbalMode::kName, free_answered,
+      "mode: free: " + (free ? ack_code_text(static_cast<uint8_t>(free->code)) : free.error()));
 
   ControlGimbalAngle angle;
   angle.pitch_deg = -30.0f;
   angle.yaw_deg = 20.0f;
   exchange(s, report, angle, "angle pitch -30, yaw 20 deg");
   GimbalStateAck last;
-  const bool reached = wait_for_gimbal(
-      s,
+  std::string why;
+  const bool reached = poll_until(
+      s, GetGimbalState{},
       [](const GimbalStateAck& a) {
         return std::abs(a.angles.pitch_deg + 30.0) <= 2.0 &&
                std::abs(a.angles.yaw_deg - 20.0) <= 2.0;
       },
-      &last);
-  report.add("gimbal_reaches_angle", reached, angles_text(last.angles));
+      &last, &why);
+  report.add("gimbal_reaches_angle", reached,
+             angles_text(last.angles) + (reached ? "" : ", " + why));
 
   ControlGimbalSpeed speed;
   speed.yaw_rate_deg_s = 10.0;
@@ -193,13 +252,14 @@ CheckReport AdapterSimulator::check_gimbal() {
   exchange(s, report, speed, "speed control stop");
 
   exchange(s, report, GimbalReturnHead{}, "return head");
-  const bool centred = wait_for_gimbal(
-      s,
+  const bool centred = poll_until(
+      s, GetGimbalState{},
       [](const GimbalStateAck& a) {
         return std::abs(a.angles.pitch_deg) <= 2.0 && std::abs(a.angles.yaw_deg) <= 2.0;
       },
-      &last);
-  report.add("gimbal_returns_to_centre", centred, angles_text(last.angles));
+      &last, &why);
+  report.add("gimbal_returns_to_centre", centred,
+             angles_text(last.angles) + (centred ? "" : ", " + why));
 
   exchange(s, report, CalibrateGimbal{}, "calibration");
   exchange(s, report, GetCalibrationProgress{}, "calibration progress",

@@ -14,6 +14,7 @@
 #include "k40t_driver/SetZoom.h"
 #include "k40t_driver/TakePhoto.h"
 #include "k40t_driver/Zoom.h"
+#include "k40t_driver/protocol/response_code.h"
 
 namespace k40t::driver::skyport {
 
@@ -37,6 +38,7 @@ RosPodPort::RosPodPort(ros::NodeHandle nh, std::string reconfigure, double servi
   camera_ = nh_.subscribe("camera/status", 1, &RosPodPort::on_camera, this);
   visible_ = nh_.subscribe("visible/status", 1, &RosPodPort::on_visible, this);
   record_ = nh_.subscribe("record/status", 1, &RosPodPort::on_record, this);
+  photo_ = nh_.subscribe("photo/status", 10, &RosPodPort::on_photo, this);
 }
 
 template <class Srv>
@@ -45,7 +47,12 @@ PodCall RosPodPort::call(const std::string& name, Srv& srv) {
   if (!client.waitForExistence(timeout_))
     return {false, "the driver's service " + client.getService() + " is not there"};
   if (!client.call(srv)) return {false, "call of " + client.getService() + " failed"};
-  return {static_cast<bool>(srv.response.success), srv.response.message};
+  PodCall result{static_cast<bool>(srv.response.success), srv.response.message};
+  // The driver's refusal message carries the pod's response text ("... refused by the pod:
+  // taking photo (response code 0x0203)").
+  const std::string busy = protocol::response_text(protocol::ResponseCode::kPhotoInProgress);
+  result.photo_in_progress = !result.ok && result.message.find(busy) != std::string::npos;
+  return result;
 }
 
 PodCall RosPodPort::reconfigure_int(const std::string& name, int value) {
@@ -220,6 +227,12 @@ void RosPodPort::on_visible(const k40t_driver::VisibleStatus::ConstPtr& msg) {
   state_.have_visible = true;
   state_.zoom_ratio = msg->zoom_ratio;
   state_.focal_length_mm = msg->focal_length_mm;
+}
+
+void RosPodPort::on_photo(const k40t_driver::PhotoStatus::ConstPtr& msg) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++state_.photo_status_count;
+  state_.photo_state = msg->state;
 }
 
 void RosPodPort::on_record(const k40t_driver::RecordStatus::ConstPtr& msg) {

@@ -34,7 +34,9 @@ SkyportBridge::SkyportBridge(Session& session, PodPort& pod, BridgeOptions optio
       pod_(pod),
       options_(std::move(options)),
       battery_(std::move(battery)),
-      log_(std::move(log)) {
+      log_(std::move(log)),
+      photo_progress_(std::chrono::duration_cast<PhotoProgress::Clock::duration>(
+          std::chrono::duration<double>(options_.photo_storing_s))) {
   register_payload_state();
   register_camera();
   register_camera_lens();
@@ -78,6 +80,11 @@ AckCode SkyportBridge::pod_code(const PodCall& call, const char* what) {
   ++stats_.pod_call_failures;
   if (log_) log_(std::string("SKYPORT ") + what + ": the pod refused: " + call.message);
   return AckCode::kError;
+}
+
+AckCode SkyportBridge::capture_code(const PodCall& call, const char* what) {
+  photo_progress_.capture_answered(call, PhotoProgress::Clock::now());
+  return pod_code(call, what);
 }
 
 AckCode SkyportBridge::unsupported() {
@@ -144,26 +151,31 @@ void SkyportBridge::register_camera() {
     return ack;
   });
   deferred<ShootPhoto>([this](const ShootPhoto& c) {
-    return pod_code(pod_.take_photo(c.action == ShootPhotoAction::kStop), "shoot photo");
+    const bool stop = c.action == ShootPhotoAction::kStop;
+    const PodSnapshot before = pod_.snapshot();
+    const PodCall call = pod_.take_photo(stop);
+    if (stop) return pod_code(call, "stop photo");
+    if (!call.ok) return capture_code(call, "shoot photo");
+    photo_progress_.started(before, PhotoProgress::Clock::now());
+    return pod_code(call, "shoot photo");
   });
   deferred<GetShootPhotoState>([this](const GetShootPhotoState&) {
-    // The pod reports no "shooting" state for single shots; a running time-lapse is the only
-    // shooting it shows (camera/status photo mode while the interval runs is not reported).
+    // The pod reports no state for single shots: what the bridge saw of it (photo_progress.h).
     const PodSnapshot s = pod_.snapshot();
     if (!s.have_camera) return refused<ShootPhotoStateAck>(AckCode::kError);
-    return ShootPhotoStateAck{};
+    return photo_progress_.state(s, PhotoProgress::Clock::now());
   });
   deferred<SetShootPhotoMode>([this](const SetShootPhotoMode& c) {
     switch (c.type) {
       case ShootPhotoType::kSingle:
-        return pod_code(pod_.set_photo_mode(kPhotoSingle, 0, 0), "photo mode");
+        return capture_code(pod_.set_photo_mode(kPhotoSingle, 0, 0), "photo mode");
       case ShootPhotoType::kBurst:
         if (c.burst_count != 3 && c.burst_count != 5) return AckCode::kError;  // pod: 3 or 5
-        return pod_code(pod_.set_photo_mode(kPhotoBurst, 0, c.burst_count), "photo mode");
+        return capture_code(pod_.set_photo_mode(kPhotoBurst, 0, c.burst_count), "photo mode");
       case ShootPhotoType::kInterval:
         if (c.interval_s != 5 && c.interval_s != 7 && c.interval_s != 30 && c.interval_s != 60)
           return AckCode::kError;  // the pod's time-lapse intervals
-        return pod_code(pod_.set_photo_mode(kPhotoTimelapse, c.interval_s, 0), "photo mode");
+        return capture_code(pod_.set_photo_mode(kPhotoTimelapse, c.interval_s, 0), "photo mode");
     }
     return AckCode::kError;
   });
@@ -182,7 +194,7 @@ void SkyportBridge::register_camera() {
     return ack;
   });
   deferred<RecordVideo>([this](const RecordVideo& c) {
-    return pod_code(pod_.record(c.action == RecordAction::kStart), "record");
+    return capture_code(pod_.record(c.action == RecordAction::kStart), "record");
   });
   deferred<GetRecordState>([this](const GetRecordState&) {
     const PodSnapshot s = pod_.snapshot();
@@ -205,7 +217,7 @@ void SkyportBridge::register_camera() {
     return ack;  // remaining shots and record time: the pod does not say (0)
   });
   deferred<FormatSdCard>([this](const FormatSdCard&) {
-    return refused<FormatSdCardAck>(pod_code(pod_.format_sd(), "format SD card"));
+    return refused<FormatSdCardAck>(capture_code(pod_.format_sd(), "format SD card"));
   });
 }
 

@@ -110,6 +110,10 @@ Result<SkyportConfig> read_skyport_config(const ros::NodeHandle& p) {
   c.bridge.tele_focal_length_mm = param(p, "tele_focal_length_mm", c.bridge.tele_focal_length_mm);
   c.bridge.max_optical_zoom = param(p, "max_optical_zoom", c.bridge.max_optical_zoom);
   c.bridge.max_hybrid_zoom = param(p, "max_hybrid_zoom", c.bridge.max_hybrid_zoom);
+  c.bridge.photo_storing_s = param(p, "photo_storing_time", c.bridge.photo_storing_s);
+  if (!(c.bridge.photo_storing_s >= 0 && c.bridge.photo_storing_s <= 60))
+    return Status::fail("~photo_storing_time must be 0..60 s, got " +
+                        std::to_string(c.bridge.photo_storing_s));
   c.feed_pod = param(p, "feed_pod", c.feed_pod);
   c.feed_fix = param(p, "feed_fix", c.feed_fix);
   if (c.feed_fix != "raw_gps" && c.feed_fix != "rtk")

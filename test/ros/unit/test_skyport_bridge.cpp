@@ -47,19 +47,41 @@ class FakePod : public PodPort {
     state_.recording = recording;
   }
   void refuse(bool refuse) { refuse_ = refuse; }
+  // Like the pod: after a photo, capture commands are refused ("taking photo") for `storing`.
+  void store_photos_for(std::chrono::milliseconds storing) { storing_ = storing; }
+  void photo_stored() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    storing_until_ = std::chrono::steady_clock::now();
+  }
+  // A photo/status message from the driver (PhotoStatus STATE_*).
+  void report_photo(uint8_t state) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++state_.photo_status_count;
+    state_.photo_state = state;
+  }
 
-  PodCall take_photo(bool stop) override { return log(stop ? "photo stop" : "photo"); }
+  PodCall take_photo(bool stop) override {
+    if (stop) return log("photo stop");
+    PodCall r = capture("photo");
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (r.ok) storing_until_ = std::chrono::steady_clock::now() + storing_;
+    return r;
+  }
   PodCall record(bool start) override {
-    PodCall r = log(start ? "record start" : "record stop");
+    PodCall r = capture(start ? "record start" : "record stop");
     std::lock_guard<std::mutex> lock(mutex_);
     if (r.ok) state_.recording = start;
     return r;
   }
   PodCall set_photo_mode(uint8_t mode, uint8_t interval, uint8_t burst) override {
-    return log("photo mode " + std::to_string(mode) + " " + std::to_string(interval) + " " +
-               std::to_string(burst));
+    return capture("photo mode " + std::to_string(mode) + " " + std::to_string(interval) + " " +
+                   std::to_string(burst));
   }
-  PodCall set_video_mode(bool video) override { return log(video ? "video" : "photo mode"); }
+  PodCall set_video_mode(bool video) override {
+    PodCall r = capture(video ? "video" : "photo mode");
+    r.photo_in_progress = false;  // dynamic_reconfigure says only "not applied"
+    return r;
+  }
   PodCall set_metering(int m) override { return log("metering " + std::to_string(m)); }
   PodCall set_zoom(double ratio) override {
     char text[32];
@@ -70,7 +92,7 @@ class FakePod : public PodPort {
   PodCall focus(PodFocus m, uint16_t, uint16_t, uint16_t, uint16_t) override {
     return log("focus " + std::to_string(int(m)));
   }
-  PodCall format_sd() override { return log("format"); }
+  PodCall format_sd() override { return capture("format"); }
   PodCall set_angle(double pitch, double yaw) override {
     char text[64];
     std::snprintf(text, sizeof text, "angle %.4f %.4f", pitch, yaw);
@@ -104,14 +126,28 @@ class FakePod : public PodPort {
     calls_.push_back(call);
     return {!refuse_, refuse_ ? "refused" : "ok"};
   }
+  // A call the pod refuses while it stores a photo.
+  PodCall capture(const std::string& call) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (std::chrono::steady_clock::now() < storing_until_) {
+        calls_.push_back(call + " (refused: taking photo)");
+        return {false, "refused by the pod: taking photo (response code 0x0203)", true};
+      }
+    }
+    return log(call);
+  }
   mutable std::mutex mutex_;
+  std::chrono::milliseconds storing_{0};
+  std::chrono::steady_clock::time_point storing_until_{};
   std::vector<std::string> calls_;
   PodSnapshot state_;
   std::atomic<bool> refuse_{false};
 };
 
 struct Rig {
-  explicit Rig(const Credentials& payload_credentials = kCredentials) {
+  explicit Rig(const Credentials& payload_credentials = kCredentials,
+               double photo_storing_s = BridgeOptions{}.photo_storing_s) {
     auto adapter_link = std::make_unique<FakeLink>();
     auto payload_link = std::make_unique<FakeLink>();
     FakeLink::pair(*adapter_link, *payload_link);
@@ -120,6 +156,7 @@ struct Rig {
     payload = std::make_unique<Session>(std::move(payload_link), options);
     BridgeOptions bridge_options;
     bridge_options.app_key = payload_credentials.app_key;
+    bridge_options.photo_storing_s = photo_storing_s;
     bridge = std::make_unique<SkyportBridge>(*payload, pod, bridge_options, nullptr, nullptr);
     AdapterOptions adapter_options;
     adapter_options.credentials = kCredentials;
@@ -181,6 +218,65 @@ TEST(SkyportBridge, ShootPhotoDrivesThePodAndReportsItsRefusal) {
   rig.pod.refuse(true);
   ASSERT_TRUE(rig.ask(photo, &raw));
   EXPECT_EQ(raw.code(), 0x01);  // never a made-up success
+}
+
+// PhotoStatus STATE_* (msg/PhotoStatus.msg).
+constexpr uint8_t kPhotoTaken = 0, kSingleInProgress = 5;
+
+bool single_shooting(Rig& rig) {
+  const Result<ShootPhotoStateAck> state = rig.ask(GetShootPhotoState{});
+  EXPECT_TRUE(state && state->code == AckCode::kOk);
+  return state && state->state.shooting_single;
+}
+
+TEST(SkyportBridge, PhotoStateIsIdleUntilAPhotoIsTaken) {
+  Rig rig;
+  EXPECT_FALSE(single_shooting(rig));
+}
+
+TEST(SkyportBridge, PhotoStateFollowsThePodsPhotoStatus) {
+  Rig rig(kCredentials, 60.0);        // the bound never ends it here: the pod's status does
+  rig.pod.report_photo(kPhotoTaken);  // an earlier photo's status does not end this one
+  ASSERT_TRUE(rig.ask(ShootPhoto{}));
+  EXPECT_TRUE(single_shooting(rig));
+  rig.pod.report_photo(kSingleInProgress);
+  EXPECT_TRUE(single_shooting(rig));
+  rig.pod.report_photo(kPhotoTaken);
+  EXPECT_FALSE(single_shooting(rig));
+}
+
+TEST(SkyportBridge, PhotoStateIsShootingWhileThePodRefusesForThePhoto) {
+  Rig rig(kCredentials, 60.0);
+  rig.pod.store_photos_for(std::chrono::hours(1));
+  ASSERT_TRUE(rig.ask(ShootPhoto{}));
+  EXPECT_TRUE(single_shooting(rig));
+  RecordVideo record;
+  AckResult raw;
+  ASSERT_TRUE(rig.ask(record, &raw));
+  EXPECT_EQ(raw.code(), 0x01);  // refused: still storing
+  EXPECT_TRUE(has_call(rig.pod, "record start (refused: taking photo)"));
+  EXPECT_TRUE(single_shooting(rig));
+  rig.pod.photo_stored();
+  ASSERT_TRUE(rig.ask(record, &raw));
+  EXPECT_EQ(raw.code(), 0x00);         // accepted: the pod stores nothing any more...
+  EXPECT_FALSE(single_shooting(rig));  // ...so nothing is in progress
+}
+
+TEST(SkyportBridge, PhotoStateEndsAfterTheStoringBoundWithoutStatus) {
+  Rig rig(kCredentials, 0.2);
+  ASSERT_TRUE(rig.ask(ShootPhoto{}));
+  EXPECT_TRUE(single_shooting(rig));
+  EXPECT_TRUE(eventually([&] { return !single_shooting(rig); }));
+}
+
+// The adapter's own camera check, against a pod that refuses capture commands while it stores a
+// photo (shorter than the bridge's bound): every step passes, as DJI Pilot would see it.
+TEST(SkyportBridge, CameraCheckPassesAgainstAPodStoringItsPhoto) {
+  Rig rig(kCredentials, 1.0);
+  rig.pod.store_photos_for(std::chrono::milliseconds(300));
+  const psdk::sim::CheckReport report = rig.adapter->check_camera();
+  EXPECT_TRUE(report.passed()) << report.summary();
+  EXPECT_NE(report.summary().find("shooting: single"), std::string::npos) << report.summary();
 }
 
 TEST(SkyportBridge, GimbalAnglesAreConvertedToRep103) {

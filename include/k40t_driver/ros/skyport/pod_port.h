@@ -12,6 +12,8 @@ namespace k40t::driver::skyport {
 struct PodCall {
   bool ok = false;
   std::string message;  // the service's message, or why it could not be called
+  // Refused only because the pod is taking or storing a photo (response code 0x0203).
+  bool photo_in_progress = false;
 };
 
 struct PodSnapshot {
@@ -35,6 +37,9 @@ struct PodSnapshot {
   bool have_visible = false;  // visible/status
   double zoom_ratio = 1;
   double focal_length_mm = 0;
+
+  uint64_t photo_status_count = 0;  // photo/status messages received so far
+  uint8_t photo_state = 0;          // the last one's PhotoStatus STATE_*
 };
 
 // The pod's zoom actions (k40t_driver/Zoom.srv) and focus modes (Focus.srv).

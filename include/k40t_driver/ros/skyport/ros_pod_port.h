@@ -1,9 +1,9 @@
 // The PodPort of the SKYPORT bridge over the driver's ROS interface: its services (take_photo,
 // record, set_zoom, zoom, focus, set_photo_mode, format_sd, gimbal/set_angle, gimbal/center,
 // gimbal/calibrate), dynamic_reconfigure (camera_mode, metering), the gimbal/cmd_rate topic, and
-// its status topics (joint_states, camera/status, visible/status, record/status) for the pod's
-// state. `events` hears of pod events worth a floating-window message (recording started or
-// stopped, SD card full).
+// its status topics (joint_states, camera/status, visible/status, record/status, photo/status) for
+// the pod's state. `events` hears of pod events worth a floating-window message (recording started
+// or stopped, SD card full).
 #pragma once
 
 #include <functional>
@@ -16,6 +16,7 @@
 #include <sensor_msgs/JointState.h>
 
 #include "k40t_driver/CameraStatus.h"
+#include "k40t_driver/PhotoStatus.h"
 #include "k40t_driver/RecordStatus.h"
 #include "k40t_driver/VisibleStatus.h"
 #include "k40t_driver/ros/skyport/pod_port.h"
@@ -54,13 +55,14 @@ class RosPodPort : public PodPort {
   void on_camera(const k40t_driver::CameraStatus::ConstPtr& msg);
   void on_visible(const k40t_driver::VisibleStatus::ConstPtr& msg);
   void on_record(const k40t_driver::RecordStatus::ConstPtr& msg);
+  void on_photo(const k40t_driver::PhotoStatus::ConstPtr& msg);
 
   ros::NodeHandle nh_;
   std::string reconfigure_;
   ros::Duration timeout_;
   Events events_;
   ros::Publisher cmd_rate_;
-  ros::Subscriber joints_, camera_, visible_, record_;
+  ros::Subscriber joints_, camera_, visible_, record_, photo_;
 
   mutable std::mutex mutex_;
   PodSnapshot state_;

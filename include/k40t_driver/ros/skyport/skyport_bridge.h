@@ -18,6 +18,7 @@
 #include "k40t_driver/psdk/commands/all.h"
 #include "k40t_driver/psdk/session.h"
 #include "k40t_driver/ros/skyport/ack_reply.h"
+#include "k40t_driver/ros/skyport/photo_progress.h"
 #include "k40t_driver/ros/skyport/pod_port.h"
 
 namespace k40t::driver::skyport {
@@ -34,6 +35,8 @@ struct BridgeOptions {
   double tele_focal_length_mm = 4.7;
   double max_optical_zoom = 11.0;
   double max_hybrid_zoom = 160.0;
+  // How long the pod may take to store a single photo when nothing else tells (photo_progress.h).
+  double photo_storing_s = 2.0;
 };
 
 struct BridgeStats {
@@ -79,6 +82,8 @@ class SkyportBridge {
   psdk::AckCode pod_code(const PodCall& call, const char* what);
   psdk::AckCode unsupported();
   psdk::AckCode apply_zoom();
+  // pod_code() for a capture command the pod refuses while it takes a photo (photo_progress_).
+  psdk::AckCode capture_code(const PodCall& call, const char* what);
   void run_worker();
 
   psdk::Session& session_;
@@ -97,6 +102,7 @@ class SkyportBridge {
   bool calibrated_ = false;
   bool power_off_job_pending_ = false;  // the pod acknowledged a calibration
   int32_t palette_item_ = 0;            // the palette widget's choice (worker thread only)
+  PhotoProgress photo_progress_;
 
   std::mutex jobs_mutex_;
   std::condition_variable jobs_wake_;
