@@ -77,8 +77,10 @@ class Skyport(unittest.TestCase):
         return ack(self.skyport(line, 15.0))
 
     def command_ok(self, line):
-        """Like command(), retried while the pod refuses because it is still storing the photo of
-        an earlier test ("taking photo", 0x0203, comes back as 0x01); asserts 0x00 in the end."""
+        """Like command(), retried while the pod refuses because it is still busy with an earlier
+        test: storing a photo ("taking photo", 0x0203) or calibrating the gimbal (`check gimbal`
+        ends with a calibration, "busy", 0x0008), both come back as 0x01; asserts 0x00 in the
+        end."""
         replies = []
 
         def done():
@@ -263,8 +265,7 @@ class Skyport(unittest.TestCase):
 
     def test_gimbal_angle(self):
         # DJI signs: pitch -30 = 30 degrees down, yaw +20 = 20 degrees right.
-        code, _ = self.command("gimbal -30 0 20")
-        self.assertEqual(code, 0x00)
+        self.command_ok("gimbal -30 0 20")
         reached = lambda: (abs(pod_status_number(self.pod_status(), "pitch") + 30) < 1.0 and
                            abs(pod_status_number(self.pod_status(), "yaw") - 20) < 1.0)
         self.assertTrue(wait_until(reached, 20.0), self.pod_status())
