@@ -78,14 +78,14 @@ class Status:
 
 def tour(ns):
     """Drives the pod in a loop so the telemetry changes; prints each call's outcome."""
-    def call(name, cls, **args):
+    def call(srv, cls, args):  # args as a dict: TakePhoto has a field called "name"
         try:
-            rospy.wait_for_service(ns + "/" + name, timeout=10.0)
-            r = rospy.ServiceProxy(ns + "/" + name, cls)(**args)
+            rospy.wait_for_service(ns + "/" + srv, timeout=10.0)
+            r = rospy.ServiceProxy(ns + "/" + srv, cls)(**args)
             extra = " range %.1f m" % r.range if cls is MeasureRange and r.success else ""
-            print("\n  %s(%s): %s%s" % (name, ", ".join("%s=%s" % kv for kv in args.items()), r.message, extra))
+            print("\n  %s(%s): %s%s" % (srv, ", ".join("%s=%s" % kv for kv in args.items()), r.message, extra))
         except (rospy.ROSException, rospy.ServiceException) as e:
-            print("\n  %s: %s" % (name, e))
+            print("\n  %s: %s" % (srv, e))
 
     def reconfigure(**settings):
         try:
@@ -114,7 +114,7 @@ def tour(ns):
             if cls is None:
                 reconfigure(**args)
             else:
-                call(name, cls, **args)
+                call(name, cls, args)
             time.sleep(3.0)
 
 
