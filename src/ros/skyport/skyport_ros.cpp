@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <ctime>
-#include <fstream>
 
 #include <geometry_msgs/QuaternionStamped.h>
 #include <geometry_msgs/TwistStamped.h>
@@ -71,62 +70,7 @@ sensor_msgs::NavSatFix fix_message(const ros::Time& stamp, const std::string& fr
   return fix;
 }
 
-template <class T>
-T param(const ros::NodeHandle& nh, const std::string& name, const T& fallback) {
-  T value = fallback;
-  nh.param(name, value, fallback);
-  return value;
-}
-
 }  // namespace
-
-Result<SkyportConfig> read_skyport_config(const ros::NodeHandle& p) {
-  SkyportConfig c;
-  if (!p.getParam("device", c.device) || c.device.empty())
-    return Status::fail("parameter ~device (the SKYPORT UART URL) is required");
-  c.baud = param(p, "baud", c.baud);
-  c.credentials.app_name = param<std::string>(p, "app_name", "");
-  c.credentials.app_id = param<std::string>(p, "app_id", "");
-  c.credentials.developer_account = param<std::string>(p, "developer_account", "");
-  const std::string key_file = param<std::string>(p, "app_key_file", "");
-  if (!key_file.empty()) {
-    std::ifstream in(key_file);
-    std::getline(in, c.credentials.app_key);
-    while (!c.credentials.app_key.empty() &&
-           std::isspace(static_cast<unsigned char>(c.credentials.app_key.back())))
-      c.credentials.app_key.pop_back();
-    if (c.credentials.app_key.empty())
-      return Status::fail("~app_key_file '" + key_file + "' cannot be read or has no key");
-  } else {
-    c.credentials.app_key = param<std::string>(p, "app_key", "");
-  }
-  if (c.credentials.app_key.empty())
-    return Status::fail("no app key: set ~app_key_file (preferred) or ~app_key");
-  c.encryption = param(p, "encryption", c.encryption);
-  c.bridge.app_key = c.credentials.app_key;
-  c.bridge.developer_account = c.credentials.developer_account;
-  c.bridge.product_name = param(p, "product_name", c.bridge.product_name);
-  c.bridge.alias = param(p, "alias", c.bridge.alias);
-  c.bridge.tele_focal_length_mm = param(p, "tele_focal_length_mm", c.bridge.tele_focal_length_mm);
-  c.bridge.max_optical_zoom = param(p, "max_optical_zoom", c.bridge.max_optical_zoom);
-  c.bridge.max_hybrid_zoom = param(p, "max_hybrid_zoom", c.bridge.max_hybrid_zoom);
-  c.bridge.photo_storing_s = param(p, "photo_storing_time", c.bridge.photo_storing_s);
-  if (!(c.bridge.photo_storing_s >= 0 && c.bridge.photo_storing_s <= 60))
-    return Status::fail("~photo_storing_time must be 0..60 s, got " +
-                        std::to_string(c.bridge.photo_storing_s));
-  c.feed_pod = param(p, "feed_pod", c.feed_pod);
-  c.feed_fix = param(p, "feed_fix", c.feed_fix);
-  if (c.feed_fix != "raw_gps" && c.feed_fix != "rtk")
-    return Status::fail("~feed_fix must be raw_gps or rtk, got '" + c.feed_fix + "'");
-  c.world_frame = param(p, "world_frame", c.world_frame);
-  c.base_frame = param(p, "base_frame", c.base_frame);
-  c.reconfigure = param(p, "pod_reconfigure", c.reconfigure);
-  c.service_timeout_s = param(p, "service_timeout", c.service_timeout_s);
-  c.ack_timeout_s = param(p, "ack_timeout", c.ack_timeout_s);
-  c.silence_timeout_s = param(p, "silence_timeout", c.silence_timeout_s);
-  c.diagnostic_period_s = param(p, "diagnostic_period", c.diagnostic_period_s);
-  return c;
-}
 
 Result<std::unique_ptr<SkyportRos>> SkyportRos::create(ros::NodeHandle nh,
                                                        ros::NodeHandle private_nh) {

@@ -1,0 +1,88 @@
+// read_skyport_config against parameters on the rostest's master: bad values are errors naming the
+// parameter, and the key file is read (its first line, trimmed).
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+
+#include "k40t_driver/ros/skyport/skyport_config.h"
+
+namespace k40t::driver::skyport {
+namespace {
+
+class SkyportConfigTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (!ros::isInitialized()) {
+      int argc = 0;
+      ros::init(argc, nullptr, "skyport_config_test", ros::init_options::AnonymousName);
+    }
+  }
+  void SetUp() override {
+    nh_ = ros::NodeHandle(
+        "skyport_config_test_" +
+        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    nh_.setParam("device", "pty:///tmp/skyport_config_test");
+    nh_.setParam("app_key", "0123456789abcdef");
+  }
+  std::string error() const {
+    Result<SkyportConfig> c = read_skyport_config(nh_);
+    return c ? std::string() : c.error();
+  }
+  ros::NodeHandle nh_;
+};
+
+TEST_F(SkyportConfigTest, DefaultsAreReadWithDeviceAndKey) {
+  Result<SkyportConfig> c = read_skyport_config(nh_);
+  ASSERT_TRUE(c) << c.error();
+  EXPECT_EQ(c->device, "pty:///tmp/skyport_config_test");
+  EXPECT_EQ(c->credentials.app_key, "0123456789abcdef");
+  EXPECT_EQ(c->bridge.app_key, "0123456789abcdef");
+  EXPECT_EQ(c->feed_fix, "raw_gps");
+  EXPECT_DOUBLE_EQ(c->bridge.photo_storing_s, 2.0);
+}
+
+TEST_F(SkyportConfigTest, AMissingDeviceOrKeyIsNamed) {
+  nh_.deleteParam("device");
+  EXPECT_NE(error().find("~device"), std::string::npos) << error();
+  nh_.setParam("device", "pty:///tmp/x");
+  nh_.deleteParam("app_key");
+  EXPECT_NE(error().find("app key"), std::string::npos) << error();
+}
+
+TEST_F(SkyportConfigTest, AWrongTypeIsAnErrorNotTheDefault) {
+  nh_.setParam("feed_pod", "yes please");  // a string where a bool belongs
+  EXPECT_NE(error().find("feed_pod"), std::string::npos) << error();
+  EXPECT_NE(error().find("wrong type"), std::string::npos) << error();
+}
+
+TEST_F(SkyportConfigTest, OutOfRangeValuesNameTheParameterAndTheRange) {
+  nh_.setParam("photo_storing_time", 61.0);
+  EXPECT_NE(error().find("photo_storing_time"), std::string::npos) << error();
+  EXPECT_NE(error().find("0..60"), std::string::npos) << error();
+  nh_.setParam("photo_storing_time", 2.0);
+  nh_.setParam("ack_timeout", 0.0);
+  EXPECT_NE(error().find("ack_timeout"), std::string::npos) << error();
+  nh_.setParam("ack_timeout", 1.0);
+  nh_.setParam("feed_fix", "glonass");
+  EXPECT_NE(error().find("feed_fix"), std::string::npos) << error();
+  EXPECT_NE(error().find("glonass"), std::string::npos) << error();
+}
+
+TEST_F(SkyportConfigTest, TheKeyFileGivesItsFirstLineTrimmed) {
+  const std::string path = "/tmp/skyport_config_test_key_" + std::to_string(::getpid());
+  { std::ofstream(path) << "fedcba9876543210  \nsecond line\n"; }
+  nh_.setParam("app_key_file", path);
+  Result<SkyportConfig> c = read_skyport_config(nh_);
+  std::remove(path.c_str());
+  ASSERT_TRUE(c) << c.error();
+  EXPECT_EQ(c->credentials.app_key, "fedcba9876543210");
+  nh_.setParam("app_key_file", path);  // now gone
+  EXPECT_NE(error().find("cannot be read"), std::string::npos) << error();
+}
+
+}  // namespace
+}  // namespace k40t::driver::skyport
