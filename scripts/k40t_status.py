@@ -87,9 +87,13 @@ def tour(ns):
         except (rospy.ROSException, rospy.ServiceException) as e:
             print("\n  %s: %s" % (srv, e))
 
+    clients = []  # one dynamic_reconfigure client, made on first use (it waits for the driver)
+
     def reconfigure(**settings):
         try:
-            done = ReconfigureClient(ns + "/driver", timeout=10.0).update_configuration(settings)
+            if not clients:
+                clients.append(ReconfigureClient(ns + "/driver", timeout=10.0))
+            done = clients[0].update_configuration(settings)
             print("\n  reconfigure %s: now %s" % (settings, {k: done[k] for k in settings}))
         except Exception as e:  # the client raises plain Exceptions on timeouts
             print("\n  reconfigure %s: %s" % (settings, e))
