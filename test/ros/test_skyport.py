@@ -71,6 +71,13 @@ class Skyport(unittest.TestCase):
         # The bridge is up when it answers identity verification (until then: no ACK).
         cls.identity = wait_until(
             lambda: (lambda r: r if "no ACK" not in r else None)(cls.skyport("identity", 10.0)), 60.0)
+        # The bridge answers camera queries from the pod's camera/status (1 Hz); until the first one
+        # has reached it, it honestly answers 0x01. Tests start once it knows the pod's state:
+        # GetCameraWorkMode (0x04/0x02) answered 0x00.
+        def work_mode_answered():
+            reply = cls.skyport("send 4 2", 15.0)
+            return reply.startswith("ok code=") and ack(reply)[0] == 0x00
+        cls.pod_known = wait_until(work_mode_answered, 30.0, step=0.2)
 
     def command(self, line):
         """Sends a command through skyport_sim; (code, data) of the bridge's ACK."""
@@ -93,6 +100,9 @@ class Skyport(unittest.TestCase):
         return self.pod.ok("status")
 
     # --- payload state ---------------------------------------------------------------------------
+
+    def test_bridge_learns_the_pods_state(self):
+        self.assertTrue(self.pod_known, "the bridge never answered GetCameraWorkMode with 0x00")
 
     def test_identity_verification_passes(self):
         self.assertTrue(self.identity, "the bridge never answered identity verification")
