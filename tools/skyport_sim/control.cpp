@@ -76,11 +76,11 @@ std::string status_reply(AdapterSimulator& adapter) {
 }
 
 std::string fault(AdapterSimulator& adapter, const std::string& name, std::istringstream& in) {
-  psdk::sim::ByteFaults bytes;  // the command sets one fault; `clear` resets all
-  psdk::sim::ProtocolFaults protocol;
-  if (name == "clear") {
-    adapter.set_byte_faults(bytes);
-    adapter.set_protocol_faults(protocol);
+  if (name == "clear") {  // every fault off; the seed stays, so runs remain reproducible
+    psdk::sim::ByteFaults none;
+    none.seed = adapter.byte_faults().seed;
+    adapter.set_byte_faults(none);
+    adapter.set_protocol_faults({});
     return "ok faults cleared";
   }
   if (name == "silence" || name == "disconnect") {
@@ -102,6 +102,9 @@ std::string fault(AdapterSimulator& adapter, const std::string& name, std::istri
   }
   const auto p = number(in, name + " probability", 0, 1);
   if (!p) return "error " + p.error();
+  // One fault changes; the others (and the command line's seed and limits) stay as they are.
+  psdk::sim::ByteFaults bytes = adapter.byte_faults();
+  psdk::sim::ProtocolFaults protocol = adapter.protocol_faults();
   if (name == "corrupt") bytes.corrupt_rate = *p;
   if (name == "garbage") bytes.garbage_rate = *p;
   if (name == "drop_ack") protocol.drop_ack_rate = *p;

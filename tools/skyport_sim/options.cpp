@@ -1,8 +1,8 @@
 #include "options.h"
 
-#include <fstream>
 #include <sstream>
 
+#include "k40t_driver/psdk/app_key_file.h"
 #include "k40t_driver/sim/number_text.h"
 #include "k40t_driver/sim/option_table.h"
 #include "k40t_driver/sim/sim_options.h"
@@ -51,7 +51,7 @@ const std::vector<OptionSpec>& option_table() {
       {"--app-key-file", "PATH",
        "file whose first line is the app key the payload must prove (never printed)",
        [](SkyportSimOptions& o, const std::string& option, const std::string& v) {
-         const auto key = read_key_file(v);
+         const auto key = psdk::read_app_key_file(v);
          if (!key) return Status::fail(option + ": " + key.error());
          o.adapter.credentials.app_key = *key;
          return Status::ok();
@@ -162,16 +162,6 @@ const std::vector<OptionSpec>& option_table() {
 }
 
 }  // namespace
-
-Result<std::string> read_key_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return Status::fail("cannot read '" + path + "'");
-  std::string line;
-  std::getline(in, line);
-  while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
-  if (line.empty()) return Status::fail("'" + path + "' has no key on its first line");
-  return line;
-}
 
 Result<SkyportSimOptions> parse_options(const std::vector<std::string>& args) {
   SkyportSimOptions options;

@@ -26,8 +26,4 @@ struct SkyportSimOptions {
 Result<SkyportSimOptions> parse_options(const std::vector<std::string>& args);
 std::string usage();
 
-// The first line of `path` without trailing white space; fails naming the path (not the content)
-// when the file cannot be read or the line is empty.
-Result<std::string> read_key_file(const std::string& path);
-
 }  // namespace k40t::skyport_sim

@@ -189,16 +189,24 @@ CheckReport AdapterSimulator::check_camera() {
   exchange(s, report, zoom, "continuous zoom in");
   exchange(s, report, StopContinuousZoom{}, "zoom stop");
 
-  SetFocusMode focus;
-  focus.mode = FocusMode::kAuto;
-  exchange(s, report, focus, "focus: auto");
-  exchange(s, report, GetFocusMode{}, "focus reads back",
-           [](const FocusModeAck& a, std::string&) { return a.mode == FocusMode::kAuto; });
-  SetMeteringMode metering;
-  metering.mode = MeteringMode::kCenter;
-  exchange(s, report, metering, "metering: centre");
-  exchange(s, report, GetMeteringMode{}, "metering reads back",
-           [](const MeteringModeAck& a, std::string&) { return a.mode == MeteringMode::kCenter; });
+  // Each setting goes to a value other than the usual default and back, so a payload that ignores
+  // the command cannot pass by reporting its default.
+  for (const FocusMode mode : {FocusMode::kManual, FocusMode::kAuto}) {
+    SetFocusMode focus;
+    focus.mode = mode;
+    const std::string name = mode == FocusMode::kAuto ? "auto" : "manual";
+    exchange(s, report, focus, "focus: " + name);
+    exchange(s, report, GetFocusMode{}, "focus reads back " + name,
+             [mode](const FocusModeAck& a, std::string&) { return a.mode == mode; });
+  }
+  for (const MeteringMode mode : {MeteringMode::kAverage, MeteringMode::kCenter}) {
+    SetMeteringMode metering;
+    metering.mode = mode;
+    const std::string name = mode == MeteringMode::kCenter ? "centre" : "average";
+    exchange(s, report, metering, "metering: " + name);
+    exchange(s, report, GetMeteringMode{}, "metering reads back " + name,
+             [mode](const MeteringModeAck& a, std::string&) { return a.mode == mode; });
+  }
   return report;
 }
 

@@ -323,6 +323,15 @@ IdentityResult AdapterSimulator::verify_identity() {
 // --- switches and readings
 // -------------------------------------------------------------------------
 
+ByteFaults AdapterSimulator::byte_faults() const {
+  return faulty_->faults();
+}
+
+ProtocolFaults AdapterSimulator::protocol_faults() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return protocol_faults_;
+}
+
 void AdapterSimulator::set_byte_faults(const ByteFaults& faults) {
   faulty_->set_faults(faults);
 }

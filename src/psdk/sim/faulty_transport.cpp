@@ -19,6 +19,11 @@ void FaultyTransport::close() {
   inner_->close();
 }
 
+ByteFaults FaultyTransport::faults() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return faults_;
+}
+
 void FaultyTransport::set_faults(const ByteFaults& faults) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (faults.seed != faults_.seed) random_.seed(faults.seed);

@@ -235,7 +235,10 @@ void SkyportBridge::register_camera_lens() {
     if (c.mode == MeteringMode::kSpot) return unsupported();
     const AckCode code =
         pod_code(pod_.set_metering(c.mode == MeteringMode::kCenter ? 1 : 3), "metering");
-    if (code == AckCode::kOk) metering_ = c.mode;
+    if (code == AckCode::kOk) {
+      std::lock_guard<std::mutex> lock(mutex_);  // GetMeteringMode reads it on the session thread
+      metering_ = c.mode;
+    }
     return code;
   });
   session_.handle<GetMeteringMode>([this](const GetMeteringMode&) {
@@ -248,7 +251,10 @@ void SkyportBridge::register_camera_lens() {
     const bool autofocus = c.mode == FocusMode::kAuto;
     const AckCode code = pod_code(
         pod_.focus(autofocus ? PodFocus::kAuto : PodFocus::kManualStop, 0, 0, 0, 0), "focus mode");
-    if (code == AckCode::kOk) focus_mode_ = c.mode;
+    if (code == AckCode::kOk) {
+      std::lock_guard<std::mutex> lock(mutex_);  // GetFocusMode reads it on the session thread
+      focus_mode_ = c.mode;
+    }
     return code;
   });
   session_.handle<GetFocusMode>([this](const GetFocusMode&) {
@@ -428,6 +434,8 @@ void SkyportBridge::register_battery() {
           std::lock_guard<std::mutex> lock(mutex_);
           ++stats_.battery_pushes;
           stats_.power_off_announced = push->power_off_soon;
+          // A withdrawn announcement ends the episode: the next one must stop recording again.
+          if (!push->power_off_soon) stats_.power_off_ready = false;
           // Power-off state 0: the ACK's content is ignored (3.3.3). Announced: "ready" once the
           // pod is prepared; while that preparation runs (or failed and is to be retried), not
           // ready.
@@ -447,7 +455,8 @@ void SkyportBridge::register_battery() {
             if (s.recording) ready = pod_code(pod_.record(false), "stop recording") == AckCode::kOk;
             {
               std::lock_guard<std::mutex> lock(mutex_);
-              stats_.power_off_ready = ready;
+              // Withdrawn meanwhile: this preparation does not count for a later announcement.
+              stats_.power_off_ready = ready && stats_.power_off_announced;
               power_off_job_pending_ = false;
             }
             if (log_)

@@ -1,23 +1,9 @@
 #include "k40t_driver/ros/skyport/skyport_config.h"
 
-#include <cctype>
-#include <fstream>
-
+#include "k40t_driver/psdk/app_key_file.h"
 #include "k40t_driver/ros/param_reader.h"
 
 namespace k40t::driver::skyport {
-namespace {
-
-// The first line of the file, trailing white space removed; empty if unreadable.
-std::string read_key_file(const std::string& path) {
-  std::ifstream in(path);
-  std::string key;
-  std::getline(in, key);
-  while (!key.empty() && std::isspace(static_cast<unsigned char>(key.back()))) key.pop_back();
-  return key;
-}
-
-}  // namespace
 
 Result<SkyportConfig> read_skyport_config(const ros::NodeHandle& nh) {
   SkyportConfig c;
@@ -31,9 +17,9 @@ Result<SkyportConfig> read_skyport_config(const ros::NodeHandle& nh) {
   c.credentials.developer_account = p.get<std::string>("developer_account", "");
   const std::string key_file = p.get<std::string>("app_key_file", "");
   if (!key_file.empty()) {
-    c.credentials.app_key = read_key_file(key_file);
-    if (c.credentials.app_key.empty())
-      return Status::fail("~app_key_file '" + key_file + "' cannot be read or has no key");
+    Result<std::string> key = psdk::read_app_key_file(key_file);
+    if (!key) return Status::fail("parameter ~app_key_file: " + key.error());
+    c.credentials.app_key = key.value();
   } else {
     c.credentials.app_key = p.get<std::string>("app_key", "");
   }

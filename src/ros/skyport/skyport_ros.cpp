@@ -145,7 +145,8 @@ SkyportRos::SkyportRos(ros::NodeHandle nh, ros::NodeHandle private_nh, SkyportCo
 }
 
 SkyportRos::~SkyportRos() {
-  // The link stops first: no handler may run into a half-destroyed glue.
+  // The diagnostics timer and the link stop first: no callback may run into a half-destroyed glue.
+  diagnostic_timer_.stop();
   session_->stop();
   bridge_ptr_ = nullptr;  // pod events no longer reach the bridge
   bridge_.reset();        // joins its worker, which may still be calling the pod

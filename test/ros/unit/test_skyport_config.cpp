@@ -81,7 +81,7 @@ TEST_F(SkyportConfigTest, TheKeyFileGivesItsFirstLineTrimmed) {
   ASSERT_TRUE(c) << c.error();
   EXPECT_EQ(c->credentials.app_key, "fedcba9876543210");
   nh_.setParam("app_key_file", path);  // now gone
-  EXPECT_NE(error().find("cannot be read"), std::string::npos) << error();
+  EXPECT_NE(error().find("app_key_file: cannot read"), std::string::npos) << error();
 }
 
 }  // namespace

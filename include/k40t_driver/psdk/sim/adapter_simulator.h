@@ -97,7 +97,9 @@ class AdapterSimulator {
   // A command the document does not define must come back 0x02.
   CheckReport check_unsupported();
 
-  // Fault switches, while running.
+  // Fault switches, while running (read them to change one and keep the others).
+  ByteFaults byte_faults() const;
+  ProtocolFaults protocol_faults() const;
   void set_byte_faults(const ByteFaults& faults);
   void set_protocol_faults(const ProtocolFaults& faults);
   void silence_for(std::chrono::milliseconds duration);

@@ -45,6 +45,7 @@ class FaultyTransport : public transport::Transport {
 
   // Switchable while running.
   void set_faults(const ByteFaults& faults);
+  ByteFaults faults() const;
   // Writes nothing (and reports success, as a silent device would look) for `duration`.
   void silence_for(std::chrono::milliseconds duration);
   // Closes the real link now; poll() reopens it once `duration` has passed. Not from a receive

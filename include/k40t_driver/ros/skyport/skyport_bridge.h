@@ -99,8 +99,8 @@ class SkyportBridge {
   psdk::MeteringMode metering_ = psdk::MeteringMode::kCenter;
   psdk::FocusMode focus_mode_ = psdk::FocusMode::kAuto;
   float focus_x_ = 0.5f, focus_y_ = 0.5f;
-  bool calibrated_ = false;
-  bool power_off_job_pending_ = false;  // the pod acknowledged a calibration
+  bool calibrated_ = false;             // the pod acknowledged a calibration
+  bool power_off_job_pending_ = false;  // stopping the pod's recording before "ready" is under way
   int32_t palette_item_ = 0;            // the palette widget's choice (worker thread only)
   PhotoProgress photo_progress_;
 
