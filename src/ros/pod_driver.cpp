@@ -114,9 +114,12 @@ void PodDriver::stop() {
     stopping_ = true;
   }
   wake_.notify_all();
+  // The session first: a request the online thread is waiting on (the settings read-back) then
+  // completes at once with "session stopped" instead of after its timeouts and retries, and the
+  // requests still to come fail without waiting, so the joins below take no time.
+  if (session_) session_->stop();
   if (timer_thread_.joinable()) timer_thread_.join();
   if (online_thread_.joinable()) online_thread_.join();
-  if (session_) session_->stop();
 }
 
 void PodDriver::replay_frame(const uint8_t* frame, size_t size, StampNs stamp) {
