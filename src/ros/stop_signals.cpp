@@ -10,7 +10,9 @@ namespace {
 
 // ros::requestShutdown() only sets a flag that roscpp's own thread acts on, which is what makes
 // it usable from a signal handler (roscpp's SIGINT handler calls it the same way).
-void request_shutdown(int) { ros::requestShutdown(); }
+void request_shutdown(int) {
+  ros::requestShutdown();
+}
 
 }  // namespace
 

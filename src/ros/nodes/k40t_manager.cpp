@@ -22,7 +22,9 @@ namespace {
 
 std::atomic<bool> g_stop_requested{false};
 
-void request_stop(int) { g_stop_requested = true; }
+void request_stop(int) {
+  g_stop_requested = true;
+}
 
 void install_stop_handlers() {
   struct sigaction action {};
