@@ -3,7 +3,7 @@
 #   build/core  plain CMake with K40T_WITH_ROS=OFF: the ROS-free layers, tools, simulators, unit
 #               tests and benchmarks, compiled with no ROS include path (the proof that the core
 #               needs no ROS);
-#   build/ros   the catkin package (nodelets, messages, rostests) with a devel space; it links the
+#   build/ros   the catkin package (nodelets, messages, rostests), devel space in devel/; it links the
 #               libraries and runs the programs of build/core (K40T_CORE_BUILD_DIR) instead of
 #               compiling them again, so `ros` builds `core` first.
 # Usage: scripts/build.sh [core|ros|all]   (default all)
@@ -18,7 +18,7 @@ if [ "$what" = core ] || [ "$what" = ros ] || [ "$what" = all ]; then
 fi
 if [ "$what" = ros ] || [ "$what" = all ]; then
   cmake -S "$K40T_ROOT" -B "$K40T_BUILD/ros" "${K40T_CMAKE_LAUNCHER[@]}" -DK40T_WITH_ROS=ON -DK40T_CORE_BUILD_DIR="$K40T_BUILD/core" -DPYTHON_EXECUTABLE=/usr/bin/python3 \
-    -DCATKIN_DEVEL_PREFIX="$K40T_BUILD/ros/devel" -DCATKIN_ENABLE_TESTING=ON > "$K40T_BUILD/ros-configure.log" 2>&1 \
+    -DCATKIN_DEVEL_PREFIX="$K40T_DEVEL" -DCATKIN_ENABLE_TESTING=ON > "$K40T_BUILD/ros-configure.log" 2>&1 \
     || { cat "$K40T_BUILD/ros-configure.log"; exit 1; }
   cmake --build "$K40T_BUILD/ros" -j "$JOBS"
 fi
