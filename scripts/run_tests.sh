@@ -8,7 +8,7 @@
 #   fuzz    each libFuzzer target for a few seconds (scripts/fuzz.sh)
 #   launch  roslaunch checks of every launch file (test/launch/check_launch_files.py)
 #   stop    every nodelet unloaded and every manager and node stopped at random moments
-#           (test/stop/clean_stop.py); runs beside the ros tier
+#           (test/stop/clean_stop.py); runs beside the other tiers
 #   ros     every rostest under test/ros/*.test against the simulated pod, K40T_ROSTEST_JOBS
 #           (default 2) files at a time, longest first
 # Environment: K40T_SKIP_INSTALL=1 skips the apt step; K40T_TIERS="unit ros" picks tiers.
@@ -53,6 +53,16 @@ fi
 "$K40T_ROOT/scripts/build.sh" all || { echo "0 passed, 1 failed"; exit 1; }
 tier_done "build"
 
+# The stop tier mostly waits for processes to start and end: it runs beside the other tiers.
+stop_pid=""
+if has_tier stop; then
+  echo "== clean-stop test (in the background, log: $results/stop.log)"
+  (source "$K40T_ROOT/scripts/ros_env.sh" && timeout 900 /usr/bin/python3 test/stop/clean_stop.py \
+     --junit "$results/stop/clean_stop.xml" --logs "$results/stop-logs") > "$results/stop.log" 2>&1 &
+  stop_pid=$!
+  stop_start=$(date +%s)
+fi
+
 if has_tier unit; then
   # gtest shards side by side: most of the time goes to simulated pods and RTSP servers answering
   # in real time (the conformance tests), not to the CPU.
@@ -86,16 +96,6 @@ if has_tier launch && [ -f "$K40T_ROOT/test/launch/check_launch_files.py" ]; the
      --junit "$results/launch/launch_files.xml") || [ -f "$results/launch/launch_files.xml" ] \
      || failed_steps+=("launch checks")
   tier_done "launch"
-fi
-
-# The stop tier mostly waits for processes to start and end: it runs beside the rostests.
-stop_pid=""
-if has_tier stop; then
-  echo "== clean-stop test (in the background, log: $results/stop.log)"
-  (source "$K40T_ROOT/scripts/ros_env.sh" && timeout 900 /usr/bin/python3 test/stop/clean_stop.py \
-     --junit "$results/stop/clean_stop.xml" --logs "$results/stop-logs") > "$results/stop.log" 2>&1 &
-  stop_pid=$!
-  stop_start=$(date +%s)
 fi
 
 # One rostest file; its log and results directory are its own (rostest reuses file names).
@@ -141,7 +141,7 @@ if [ -n "$stop_pid" ]; then
   tail -n 1 "$results/stop.log"
   grep "FAIL" "$results/stop.log"
   [ -f "$results/stop/clean_stop.xml" ] || failed_steps+=("clean-stop test (see $results/stop.log)")
-  echo "== stop: $(( $(date +%s) - stop_start )) s (beside the rostests)"
+  echo "== stop: $(( $(date +%s) - stop_start )) s (beside the other tiers)"
 fi
 
 echo "== total: $(( $(date +%s) - started )) s"
