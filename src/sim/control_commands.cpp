@@ -42,6 +42,17 @@ std::string change_faults(ControlTarget& target, Change change) {
   return "ok " + target.faults().describe();
 }
 
+std::string run_refuse(const Args& args, ControlTarget& target) {
+  const auto id = number(args[0], "ID", 0, 0xFFFF);
+  if (!id) return error(id.error());
+  const auto code = args.size() > 1 ? number(args[1], "CODE", 1, 0xFFFF) : Result<double>(1.0);
+  if (!code) return error(code.error());
+  return change_faults(target, [&](FaultSettings& s) {
+    s.refuse_id = static_cast<uint32_t>(*id);
+    s.refuse_code = static_cast<uint16_t>(*code);
+  });
+}
+
 std::string run_help(const Args&, ControlTarget&) {
   return "ok " + control_help();
 }
@@ -143,6 +154,7 @@ std::string run_photos(const Args&, ControlTarget& target) {
     out << " " << pod.camera().photos().size() << " photos";
     for (const PhotoRecord& photo : pod.camera().photos()) {
       out << "; " << photo.path;
+      if (photo.width_px > 0) out << " " << photo.width_px << "x" << photo.height_px;
       if (photo.gps) {
         out << " lat " << photo.gps->latitude_deg << " lon " << photo.gps->longitude_deg << " alt "
             << photo.gps->altitude_m;
@@ -163,6 +175,7 @@ const std::vector<Command>& commands() {
       {"garbage", "garbage RATE [MAX]", 1, 2, run_garbage},
       {"drop-acks", "drop-acks RATE", 1, 1, run_drop_acks},
       {"delay-acks", "delay-acks MS [RATE]", 1, 2, run_delay_acks},
+      {"refuse", "refuse ID [CODE]", 1, 2, run_refuse},
       {"silence", "silence SECONDS", 1, 1, run_silence},
       {"disconnect", "disconnect SECONDS", 1, 1, run_disconnect},
       {"seq-jump", "seq-jump N", 1, 1, run_seq_jump},

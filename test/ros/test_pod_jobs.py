@@ -1,0 +1,188 @@
+#!/usr/bin/python3
+"""Issue 10 against the simulated pod: every long operation's status frame is a typed topic
+carrying its state and text; precise_reshoot (the simulator keeps the resolution of byte 2),
+tf_upgrade and read_settings work and refuse bad input with nothing sent; set_palette and
+set_photo_mode change the published configuration at once (one write path); sbus/set says
+exactly what took effect; one reconfigure can swap backlight compensation for strong-light
+suppression."""
+import statistics
+import sys
+import time
+import unittest
+
+import rospy
+import rostest
+from dynamic_reconfigure.client import Client as ReconfigureClient
+from sensor_msgs.msg import JointState
+from std_srvs.srv import Trigger
+
+from k40t_driver.msg import (Frame, PreciseReshootStatus, SdFormatStatus, TfCardUpgradeStatus, VisibleStatus,
+                             ZoomStatus)
+from k40t_driver.srv import (GetSbus, PreciseReshoot, PreciseReshootRequest, Send, SetPalette, SetPhotoMode,
+                             SetPhotoModeRequest, SetSbus, SetZoom)
+from k40t_test_support import Recorder, SimControl, assert_rejected_without_sending, name, service, wait_until
+
+PKG = "k40t_driver"
+SBUS_CHANNELS = dict(stream_channel=8, zoom_channel=9, photo_channel=10, record_channel=11, pitch_channel=12,
+                     yaw_channel=13, centre_channel=14)
+
+
+class PodJobs(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node("test_pod_jobs")
+        cls.sim = SimControl(rospy.get_param("~control"))
+        cls.raw_tx = Recorder(name("raw/tx"), Frame)
+        cls.joints = Recorder(name("joint_states"), JointState)
+        cls.visible = Recorder(name("visible/status"), VisibleStatus)
+        cls.zoom = Recorder(name("zoom/status"), ZoomStatus)
+        cls.reshoot = Recorder(name("reshoot/status"), PreciseReshootStatus)
+        cls.tf_upgrade = Recorder(name("tf_card_upgrade/status"), TfCardUpgradeStatus)
+        cls.sd_format = Recorder(name("sd_format/status"), SdFormatStatus)
+        assert cls.joints.wait_for(3, timeout=20.0), "no telemetry from the driver"
+        cls.client = ReconfigureClient(name("driver"), timeout=15.0)
+        time.sleep(1.5)  # the read-back that follows the pod coming online
+
+    def setUp(self):
+        self.sim.ok("clear")
+        self.sim.ok("refuse 0")
+
+    def call_ok(self, srv, srv_type, **args):
+        response = service(srv, srv_type)(**args)
+        self.assertTrue(response.success, "%s(%s) failed: %s" % (srv, args, response.message))
+        return response
+
+    def config(self):
+        return self.client.get_configuration(timeout=5.0)
+
+    # --- status topics ---------------------------------------------------------------------
+    def test_zoom_status_says_zooming_then_done(self):
+        since = time.time()
+        self.call_ok("set_zoom", SetZoom, ratio=20.0)
+        zooming = self.zoom.wait_for_match(lambda m: m.state == ZoomStatus.STATE_ZOOMING, 5.0, since)
+        self.assertIsNotNone(zooming, "no 'zooming' on zoom/status")
+        self.assertEqual(zooming.state_text, "zooming")
+        done = self.zoom.wait_for_match(lambda m: m.state == ZoomStatus.STATE_DONE, 10.0, since)
+        self.assertIsNotNone(done, "no 'done' on zoom/status")
+        self.assertEqual(done.state_text, "zoom done")
+        self.assertGreater(done.header.stamp.to_sec(), 0)
+
+    def test_format_sd_progress_at_5_hz(self):
+        since = time.time()
+        self.call_ok("format_sd", Trigger)
+        done = self.sd_format.wait_for_match(lambda m: m.state == SdFormatStatus.STATE_DONE, 15.0, since)
+        self.assertIsNotNone(done, "no 'format done' on sd_format/status")
+        self.assertEqual(done.state_text, "format done")
+        stamps = [m.header.stamp.to_sec() for m in self.sd_format.messages(since)
+                  if m.state == SdFormatStatus.STATE_FORMATTING]
+        self.assertGreaterEqual(len(stamps), 3, "too few 'formatting' frames to see a rate")
+        period = statistics.median([b - a for a, b in zip(stamps, stamps[1:])])
+        self.assertAlmostEqual(period, 0.2, delta=0.08, msg="section 3.2.4.12: 5 Hz")
+
+    # --- precise_reshoot --------------------------------------------------------------------
+    def test_precise_reshoot_shoots_at_its_resolution(self):
+        self.assertTrue(self.visible.wait_for(1, 5.0), "no visible/status")
+        since = time.time()
+        response = self.call_ok("precise_reshoot", PreciseReshoot, lens=PreciseReshootRequest.LENS_VISIBLE,
+                                resolution=PreciseReshootRequest.RESOLUTION_5664x4248, zoom_ratio=4.0,
+                                focal_length_mm=0.0, folder="", name="reshoot_a")
+        self.assertAlmostEqual(response.zoom_ratio, 4.0, places=3)
+        reshooting = self.reshoot.wait_for_match(lambda m: m.state == PreciseReshootStatus.STATE_RESHOOTING, 5.0, since)
+        self.assertIsNotNone(reshooting, "no 'reshooting' on reshoot/status")
+        self.assertEqual(reshooting.lens, PreciseReshootStatus.LENS_VISIBLE)
+        done = self.reshoot.wait_for_match(lambda m: m.state == PreciseReshootStatus.STATE_DONE, 10.0, since)
+        self.assertIsNotNone(done, "no 'photo taken' on reshoot/status")
+        self.assertEqual(done.state_text, "photo taken")
+        self.assertIn("reshoot_a.jpg 5664x4248", self.sim.ok("photos"))
+
+    def test_precise_reshoot_refuses_bad_input_sending_nothing(self):
+        args = dict(lens=2, resolution=21, zoom_ratio=4.0, focal_length_mm=10.0, folder="", name="x")
+        for field, bad in (("resolution", dict(resolution=24)), ("zoom_ratio", dict(zoom_ratio=161.0)),
+                           ("focal_length_mm", dict(focal_length_mm=700.0)), ("lens", dict(lens=4)),
+                           ("name", dict(name="n" * 33))):
+            call = dict(args)
+            call.update(bad)
+            assert_rejected_without_sending(self, self.raw_tx, "precise_reshoot", PreciseReshoot, field, **call)
+
+    # --- tf_upgrade -------------------------------------------------------------------------
+    def test_tf_upgrade_reports_until_it_succeeds(self):
+        since = time.time()
+        self.call_ok("tf_upgrade", Trigger)
+        upgrading = self.tf_upgrade.wait_for_match(lambda m: m.state == TfCardUpgradeStatus.STATE_UPGRADING, 5.0, since)
+        self.assertIsNotNone(upgrading, "no 'upgrading' on tf_card_upgrade/status")
+        self.assertEqual(upgrading.state_text, "upgrading")
+        done = self.tf_upgrade.wait_for_match(lambda m: m.state == TfCardUpgradeStatus.STATE_SUCCEEDED, 20.0, since)
+        self.assertIsNotNone(done, "no 'upgrade succeeded' on tf_card_upgrade/status")
+
+    def test_tf_upgrade_without_a_card_is_the_pods_refusal(self):
+        self.sim.ok("sd absent")
+        try:
+            response = service("tf_upgrade", Trigger)()
+            self.assertFalse(response.success)
+            self.assertIn("no SD card", response.message)
+        finally:
+            self.sim.ok("sd insert")
+
+    # --- settings: one write path, read_settings --------------------------------------------
+    def test_set_palette_is_published_at_once_and_bad_values_send_nothing(self):
+        self.call_ok("set_palette", SetPalette, palette=13)
+        self.assertEqual(self.config()["palette"], 13)
+        assert_rejected_without_sending(self, self.raw_tx, "set_palette", SetPalette, "palette", palette=25)
+        self.assertEqual(self.config()["palette"], 13)
+
+    def test_set_photo_mode_is_published_at_once(self):
+        self.call_ok("set_photo_mode", SetPhotoMode, mode=SetPhotoModeRequest.BURST,
+                     timelapse_interval_s=7, burst_count=3)
+        config = self.config()
+        self.assertEqual((config["photo_mode"], config["burst_count"], config["timelapse_interval"]), (1, 3, 7))
+        self.call_ok("set_photo_mode", SetPhotoMode, mode=0, timelapse_interval_s=5, burst_count=5)
+
+    def test_read_settings_picks_up_a_change_made_behind_the_driver(self):
+        # 0x000106 (section 3.2.2.3): byte 1 palette 1..20, byte 2 reserved. Through `send`, the
+        # driver's configuration does not know about it until read_settings.
+        self.call_ok("set_palette", SetPalette, palette=2)
+        self.call_ok("send", Send, id=0x000106, payload=[17, 0])
+        self.assertEqual(self.config()["palette"], 2)
+        response = self.call_ok("read_settings", Trigger)
+        self.assertIn("0x000100", response.message)
+        self.assertTrue(wait_until(lambda: self.config()["palette"] == 17, 3.0), "read_settings did not republish")
+
+    # --- sbus/set -----------------------------------------------------------------------------
+    def test_sbus_set_says_what_took_effect(self):
+        self.call_ok("sbus/set", SetSbus, max_value=1811, min_value=172, **SBUS_CHANNELS)
+        self.sim.ok("refuse 0x000501")
+        response = service("sbus/set", SetSbus)(max_value=1900, min_value=100, **SBUS_CHANNELS)
+        self.assertFalse(response.success)
+        self.assertFalse(response.range_applied, response.message)
+        self.assertFalse(response.channels_applied)
+        self.assertIn("nothing changed", response.message)
+        self.assertIn("0x000501", response.message)
+        self.sim.ok("refuse 0")
+        got = self.call_ok("sbus/get", GetSbus)
+        self.assertEqual((got.max_value, got.min_value), (1811, 172), "the previous range was not restored")
+        ok = self.call_ok("sbus/set", SetSbus, max_value=1900, min_value=100, **SBUS_CHANNELS)
+        self.assertTrue(ok.range_applied and ok.channels_applied and ok.power_cycle_needed)
+        self.assertIn("powered off and on", ok.message)
+
+    def test_refused_range_changes_nothing(self):
+        self.sim.ok("refuse 0x000500")
+        response = service("sbus/set", SetSbus)(max_value=1800, min_value=200, **SBUS_CHANNELS)
+        self.assertFalse(response.success)
+        self.assertFalse(response.range_applied or response.channels_applied or response.power_cycle_needed)
+        self.assertIn("0x000500", response.message)
+
+    # --- strong light / backlight -------------------------------------------------------------
+    def test_strong_light_replaces_backlight_in_one_change(self):
+        self.client.update_configuration({"strong_light_suppression": False, "backlight_compensation": False})
+        self.client.update_configuration({"backlight_compensation": True})
+        self.assertTrue(self.config()["backlight_compensation"])
+        config = self.client.update_configuration({"backlight_compensation": False, "strong_light_suppression": True})
+        self.assertTrue(config["strong_light_suppression"], "strong light was refused: backlight went off too late")
+        self.assertFalse(config["backlight_compensation"])
+        config = self.client.update_configuration({"backlight_compensation": True, "strong_light_suppression": False})
+        self.assertTrue(config["backlight_compensation"])
+        self.assertFalse(config["strong_light_suppression"])
+
+
+if __name__ == "__main__":
+    rostest.rosrun(PKG, "pod_jobs", PodJobs, sys.argv)
