@@ -36,4 +36,11 @@ k40t_driver::SdFormatStatus to_msg(const protocol::SdFormatStatus& status, const
   return with_state<k40t_driver::SdFormatStatus>(status.state, stamp);
 }
 
+k40t_driver::CameraUpgradeStatus to_msg(const protocol::CameraUpgradeStatus& status,
+                                        const ros::Time& stamp) {
+  auto m = with_state<k40t_driver::CameraUpgradeStatus>(status.state, stamp);
+  m.progress_percent = status.progress_percent;
+  return m;
+}
+
 }  // namespace k40t::driver

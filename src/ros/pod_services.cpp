@@ -150,6 +150,8 @@ void PodServices::advertise_gimbal() {
   serve_trigger("gimbal/look_down", look_down);
   serve_trigger("gimbal/restart", p::GimbalRestartRequest{});
   serve_trigger("gimbal/servo_off", p::GimbalServoOffRequest{});
+  serve_trigger("gimbal/use_flight_controller_attitude",
+                p::GimbalUseFlightControllerAttitudeRequest{});
   serve<k40t_driver::PointAt>("gimbal/point_at", [this](auto& req, auto& res) {
     p::GimbalPointAtRequest r;
     r.lens = static_cast<p::GimbalAimLens>(req.lens);

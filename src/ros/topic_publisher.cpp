@@ -51,6 +51,7 @@ TopicPublisher::TopicPublisher(ros::NodeHandle nh, PodDriver& driver, const RosP
   forward(Tag<p::PreciseReshootStatus>{}, reshoot_status_, "reshoot/status", plain);
   forward(Tag<p::TfCardUpgradeStatus>{}, tf_upgrade_status_, "tf_card_upgrade/status", plain);
   forward(Tag<p::SdFormatStatus>{}, sd_format_status_, "sd_format/status", plain);
+  forward(Tag<p::CameraUpgradeStatus>{}, camera_upgrade_status_, "camera/upgrade_status", plain);
   forward(Tag<p::ThermalStatus>{}, thermal_stats_, "thermal/stats",
           [ids](const p::ThermalStatus& m, const ros::Time& t) { return to_msg(m, t, ids); });
 

@@ -16,11 +16,12 @@ from dynamic_reconfigure.client import Client as ReconfigureClient
 from sensor_msgs.msg import JointState
 from std_srvs.srv import Trigger
 
-from k40t_driver.msg import (Frame, PreciseReshootStatus, SdFormatStatus, TfCardUpgradeStatus, VisibleStatus,
+from k40t_driver.msg import (CameraUpgradeStatus, Frame, PreciseReshootStatus, SdFormatStatus, TfCardUpgradeStatus, VisibleStatus,
                              ZoomStatus)
 from k40t_driver.srv import (GetSbus, PreciseReshoot, PreciseReshootRequest, Send, SetPalette, SetPhotoMode,
                              SetPhotoModeRequest, SetSbus, SetZoom)
-from k40t_test_support import Recorder, SimControl, assert_rejected_without_sending, name, service, wait_until
+from k40t_test_support import (Recorder, SimControl, assert_rejected_without_sending, frame_id, name, service,
+                               wait_until)
 
 PKG = "k40t_driver"
 SBUS_CHANNELS = dict(stream_channel=8, zoom_channel=9, photo_channel=10, record_channel=11, pitch_channel=12,
@@ -39,6 +40,7 @@ class PodJobs(unittest.TestCase):
         cls.reshoot = Recorder(name("reshoot/status"), PreciseReshootStatus)
         cls.tf_upgrade = Recorder(name("tf_card_upgrade/status"), TfCardUpgradeStatus)
         cls.sd_format = Recorder(name("sd_format/status"), SdFormatStatus)
+        cls.camera_upgrade = Recorder(name("camera/upgrade_status"), CameraUpgradeStatus)
         assert cls.joints.wait_for(3, timeout=20.0), "no telemetry from the driver"
         cls.client = ReconfigureClient(name("driver"), timeout=15.0)
         time.sleep(1.5)  # the read-back that follows the pod coming online
@@ -113,6 +115,17 @@ class PodJobs(unittest.TestCase):
         self.assertEqual(upgrading.state_text, "upgrading")
         done = self.tf_upgrade.wait_for_match(lambda m: m.state == TfCardUpgradeStatus.STATE_SUCCEEDED, 20.0, since)
         self.assertIsNotNone(done, "no 'upgrade succeeded' on tf_card_upgrade/status")
+        # The 1 Hz upgrade report (0x000008) counts the progress on camera/upgrade_status.
+        progress = [m.progress_percent for m in self.camera_upgrade.messages(since)
+                    if m.state == CameraUpgradeStatus.STATE_UPGRADING]
+        self.assertGreaterEqual(len(progress), 3, "no progress on camera/upgrade_status")
+        self.assertEqual(progress, sorted(progress), "upgrade progress went backwards")
+
+    def test_use_flight_controller_attitude_sends_0x000030(self):
+        since = time.time()
+        self.call_ok("gimbal/use_flight_controller_attitude", Trigger)
+        sent = self.raw_tx.wait_for_match(lambda f: frame_id(f.data) == 0x000030, 2.0, since)
+        self.assertIsNotNone(sent, "0x000030 not on raw/tx")
 
     def test_tf_upgrade_without_a_card_is_the_pods_refusal(self):
         self.sim.ok("sd absent")
