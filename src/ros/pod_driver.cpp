@@ -190,7 +190,7 @@ std::optional<protocol::Payload> PodDriver::answer_gps_request(const FrameView& 
   if (vehicle.has_fix) {
     fill_position(ack, vehicle);
     if (options_.gps_clamp_height) clamp_heights(ack);
-    positioned = ack.validate().ok();
+    positioned = ack.validate().is_ok();
   }
   if (!positioned) {
     ack = protocol::CameraGpsAck::answering(request.value());  // no position: "no fix yet"

@@ -34,14 +34,15 @@ TEST(SessionSources, LaserTargetRequestComesFromTheFlightController) {
   ASSERT_TRUE(received.wait_for_count(2));
   // Section 2.1: bytes 5 and 6 are the sender's system and component. Section 3.2.4.24: the
   // flight controller (0x02/0x01) sends 0x000320 (id bytes 20 03 00) to the camera (04 01).
-  const std::vector<uint8_t>& target = received.items()[0];
+  const std::vector<std::vector<uint8_t>> frames = received.items();
+  const std::vector<uint8_t>& target = frames[0];
   ASSERT_GE(target.size(), 10u);
   EXPECT_EQ((std::vector<uint8_t>(target.begin() + 2, target.begin() + 4)),
             (std::vector<uint8_t>{0x04, 0x01}));
   EXPECT_EQ((std::vector<uint8_t>(target.begin() + 5, target.begin() + 10)),
             (std::vector<uint8_t>{0x02, 0x01, 0x20, 0x03, 0x00}));
   // Every other request stays the host's (0x01/0x01): 0x000400 = 00 04 00.
-  const std::vector<uint8_t>& laser = received.items()[1];
+  const std::vector<uint8_t>& laser = frames[1];
   EXPECT_EQ((std::vector<uint8_t>(laser.begin() + 5, laser.begin() + 10)),
             (std::vector<uint8_t>{0x01, 0x01, 0x00, 0x04, 0x00}));
 }

@@ -35,36 +35,40 @@ protocol::CameraGpsAck gps_answer(FakePod& pod, size_t nth) {
   return ack ? ack.value() : protocol::CameraGpsAck{};
 }
 
-TEST(GpsAnswer, AHeightBeyondTheWireIsClampedByDefault) {
-  const std::string pty = unique_pty("gps_clamp");
+// The answer to one GPS request from a driver with `clamp` whose vehicle is high_vehicle().
+protocol::CameraGpsAck answer_for_high_vehicle(bool clamp, DriverStats* stats) {
+  const std::string pty = unique_pty(clamp ? "gps_clamp" : "gps_refuse");
   FakePod pod(pty);
-  std::unique_ptr<PodDriver> driver = make_driver(options_for(pty));
-  ASSERT_TRUE(driver->start().is_ok());
+  DriverOptions o = options_for(pty);
+  o.gps_clamp_height = clamp;
+  std::unique_ptr<PodDriver> driver = make_driver(o);
+  EXPECT_TRUE(driver->start().is_ok());
   wait_until_linked(pod, *driver);
   driver->set_vehicle_state(high_vehicle());
   const protocol::CameraGpsAck ack = gps_answer(pod, 1);
+  *stats = driver->stats();
+  return ack;
+}
+
+TEST(GpsAnswer, AHeightBeyondTheWireIsClampedByDefault) {
+  EXPECT_TRUE(DriverOptions{}.gps_clamp_height);
+  DriverStats stats;
+  const protocol::CameraGpsAck ack = answer_for_high_vehicle(true, &stats);
   EXPECT_EQ(ack.code, protocol::ResponseCode::kOk);
   EXPECT_NEAR(ack.altitude_m, 3276.7, 0.05);  // int16 32767 x0.1
   EXPECT_NEAR(ack.latitude_deg, 27.9881, 1e-7);
-  EXPECT_EQ(driver->stats().gps_requests_answered, 1u);
-  EXPECT_EQ(driver->stats().gps_requests_unanswerable, 0u);
+  EXPECT_EQ(stats.gps_requests_answered, 1u);
+  EXPECT_EQ(stats.gps_requests_unanswerable, 0u);
 }
 
 TEST(GpsAnswer, WithoutClampingTheRequestIsRefusedButStillAnswered) {
-  const std::string pty = unique_pty("gps_refuse");
-  FakePod pod(pty);
-  DriverOptions o = options_for(pty);
-  o.gps_clamp_height = false;
-  std::unique_ptr<PodDriver> driver = make_driver(o);
-  ASSERT_TRUE(driver->start().is_ok());
-  wait_until_linked(pod, *driver);
-  driver->set_vehicle_state(high_vehicle());
-  const protocol::CameraGpsAck ack = gps_answer(pod, 1);
+  DriverStats stats;
+  const protocol::CameraGpsAck ack = answer_for_high_vehicle(false, &stats);
   EXPECT_EQ(ack.code, protocol::ResponseCode::kFailure);
   EXPECT_EQ(ack.hour, 9);  // the request's time of day echoed
   EXPECT_EQ(ack.latitude_deg, 0.0);
-  EXPECT_EQ(driver->stats().gps_requests_answered, 0u);
-  EXPECT_EQ(driver->stats().gps_requests_unanswerable, 1u);
+  EXPECT_EQ(stats.gps_requests_answered, 0u);
+  EXPECT_EQ(stats.gps_requests_unanswerable, 1u);
 }
 
 TEST(TimeSync, CarriesTheTimeZoneParameter) {
