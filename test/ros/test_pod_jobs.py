@@ -57,6 +57,14 @@ class PodJobs(unittest.TestCase):
     def config(self):
         return self.client.get_configuration(timeout=5.0)
 
+    def config_becomes(self, **expected):
+        """The published configuration reaches `expected` (it arrives on parameter_updates a moment
+        after the service returns)."""
+        def matches():
+            config = self.config()
+            return all(config[k] == v for k, v in expected.items())
+        return wait_until(matches, 3.0)
+
     # --- status topics ---------------------------------------------------------------------
     def test_zoom_status_says_zooming_then_done(self):
         since = time.time()
@@ -139,26 +147,29 @@ class PodJobs(unittest.TestCase):
     # --- settings: one write path, read_settings --------------------------------------------
     def test_set_palette_is_published_at_once_and_bad_values_send_nothing(self):
         self.call_ok("set_palette", SetPalette, palette=13)
-        self.assertEqual(self.config()["palette"], 13)
+        self.assertTrue(self.config_becomes(palette=13), "set_palette did not reach the configuration")
         assert_rejected_without_sending(self, self.raw_tx, "set_palette", SetPalette, "palette", palette=25)
+        time.sleep(0.3)
         self.assertEqual(self.config()["palette"], 13)
 
     def test_set_photo_mode_is_published_at_once(self):
         self.call_ok("set_photo_mode", SetPhotoMode, mode=SetPhotoModeRequest.BURST,
                      timelapse_interval_s=7, burst_count=3)
-        config = self.config()
-        self.assertEqual((config["photo_mode"], config["burst_count"], config["timelapse_interval"]), (1, 3, 7))
+        self.assertTrue(self.config_becomes(photo_mode=1, burst_count=3, timelapse_interval=7),
+                        "set_photo_mode did not reach the configuration: %s" % self.config())
         self.call_ok("set_photo_mode", SetPhotoMode, mode=0, timelapse_interval_s=5, burst_count=5)
 
     def test_read_settings_picks_up_a_change_made_behind_the_driver(self):
         # 0x000106 (section 3.2.2.3): byte 1 palette 1..20, byte 2 reserved. Through `send`, the
         # driver's configuration does not know about it until read_settings.
         self.call_ok("set_palette", SetPalette, palette=2)
+        self.assertTrue(self.config_becomes(palette=2))
         self.call_ok("send", Send, id=0x000106, payload=[17, 0])
-        self.assertEqual(self.config()["palette"], 2)
+        time.sleep(0.3)
+        self.assertEqual(self.config()["palette"], 2)  # the driver does not know yet
         response = self.call_ok("read_settings", Trigger)
         self.assertIn("0x000100", response.message)
-        self.assertTrue(wait_until(lambda: self.config()["palette"] == 17, 3.0), "read_settings did not republish")
+        self.assertTrue(self.config_becomes(palette=17), "read_settings did not republish")
 
     # --- sbus/set -----------------------------------------------------------------------------
     def test_sbus_set_says_what_took_effect(self):
@@ -187,8 +198,8 @@ class PodJobs(unittest.TestCase):
     # --- strong light / backlight -------------------------------------------------------------
     def test_strong_light_replaces_backlight_in_one_change(self):
         self.client.update_configuration({"strong_light_suppression": False, "backlight_compensation": False})
-        self.client.update_configuration({"backlight_compensation": True})
-        self.assertTrue(self.config()["backlight_compensation"])
+        config = self.client.update_configuration({"backlight_compensation": True})
+        self.assertTrue(config["backlight_compensation"])
         config = self.client.update_configuration({"backlight_compensation": False, "strong_light_suppression": True})
         self.assertTrue(config["strong_light_suppression"], "strong light was refused: backlight went off too late")
         self.assertFalse(config["backlight_compensation"])
