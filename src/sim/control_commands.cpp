@@ -131,6 +131,17 @@ std::string run_sd(const Args& args, ControlTarget& target) {
   return "ok sd " + state;
 }
 
+// The photo resolution the camera holds and reports (0x010200 byte 3): 0x16 (5160x3870) is one
+// the document lists in the ACK but 0x000202 cannot set, so only this reaches it.
+std::string run_photo_resolution(const Args& args, ControlTarget& target) {
+  const auto code = number(args[0], "CODE", 0x14, 0x16);
+  if (!code) return error(code.error());
+  target.with_model([&](PodModel& pod) {
+    pod.camera().visible().photo_resolution = static_cast<uint8_t>(*code);
+  });
+  return "ok photo-resolution " + args[0];
+}
+
 std::string run_self_test(const Args& args, ControlTarget& target) {
   char* end = nullptr;
   const unsigned long mask = std::strtoul(args[0].c_str(), &end, 0);
@@ -181,6 +192,7 @@ const std::vector<Command>& commands() {
       {"seq-jump", "seq-jump N", 1, 1, run_seq_jump},
       {"sd", "sd absent|insert|fill|normal|abnormal|slow|format-error", 1, 1, run_sd},
       {"self-test", "self-test MASK", 1, 1, run_self_test},
+      {"photo-resolution", "photo-resolution 0x14|0x15|0x16", 1, 1, run_photo_resolution},
       {"ground-height", "ground-height METRES", 1, 1, run_ground_height},
       {"photos", "photos", 0, 0, run_photos},
   };

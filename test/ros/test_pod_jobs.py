@@ -171,6 +171,26 @@ class PodJobs(unittest.TestCase):
         self.assertIn("0x000100", response.message)
         self.assertTrue(self.config_becomes(palette=17), "read_settings did not republish")
 
+    def test_a_value_outside_the_cfg_range_is_not_sent_back_clamped(self):
+        # 0x010200 byte 3 may report 0x16 (5160x3870), which the cfg (0x14..0x15) does not hold.
+        self.sim.ok("photo-resolution 0x16")
+        try:
+            self.call_ok("read_settings", Trigger)
+            self.assertTrue(self.config_becomes(photo_resolution=0x16), "the pod's value was not published as is")
+            since = time.time()
+            config = self.client.update_configuration({"palette": 4})  # dynamic_reconfigure clamps it all
+            self.assertEqual(config["photo_resolution"], 0x16)
+            self.assertEqual(config["palette"], 4)
+            time.sleep(0.3)
+            sent = [frame_id(f.data) for f in self.raw_tx.messages(since)]
+            self.assertIn(0x000106, sent)
+            self.assertNotIn(0x000202, sent, "the clamped photo resolution was sent to the pod")
+            self.call_ok("read_settings", Trigger)  # the pod still holds it
+            self.assertTrue(self.config_becomes(photo_resolution=0x16))
+        finally:
+            self.sim.ok("photo-resolution 0x15")
+            service("read_settings", Trigger)()
+
     # --- sbus/set -----------------------------------------------------------------------------
     def test_sbus_set_says_what_took_effect(self):
         self.call_ok("sbus/set", SetSbus, max_value=1811, min_value=172, **SBUS_CHANNELS)

@@ -16,6 +16,7 @@
 //   self-test MASK          0x000001 self-test bits (IR 1, tele 2, wide 4, laser 8)
 //   ground-height METRES    the flat ground below the pod
 //   photos                  the photos on the card, with their GPS answers
+//   photo-resolution CODE   the visible photo resolution held and reported (0x14..0x16)
 #pragma once
 
 #include <chrono>
