@@ -18,7 +18,7 @@ from std_srvs.srv import Trigger
 
 from k40t_driver.msg import (CameraUpgradeStatus, Frame, PreciseReshootStatus, SdFormatStatus, TfCardUpgradeStatus, VisibleStatus,
                              ZoomStatus)
-from k40t_driver.srv import (GetSbus, PreciseReshoot, PreciseReshootRequest, Send, SetPalette, SetPhotoMode,
+from k40t_driver.srv import (Focus, FocusRequest, GetSbus, PreciseReshoot, PreciseReshootRequest, Send, SetPalette, SetPhotoMode,
                              SetPhotoModeRequest, SetSbus, SetZoom)
 from k40t_test_support import (Recorder, SimControl, assert_rejected_without_sending, frame_id, name, service,
                                wait_until)
@@ -113,6 +113,15 @@ class PodJobs(unittest.TestCase):
             call = dict(args)
             call.update(bad)
             assert_rejected_without_sending(self, self.raw_tx, "precise_reshoot", PreciseReshoot, field, **call)
+
+    # --- focus area ------------------------------------------------------------------------
+    def test_area_focus_reaches_the_pod_with_its_corners(self):
+        self.call_ok("focus", Focus, mode=FocusRequest.AREA_AUTO, x1=800, y1=400, x2=1120, y2=680)
+        self.assertIn("focus area 800,400-1120,680", self.sim.ok("status"))
+        self.call_ok("focus", Focus, mode=FocusRequest.ONE_TOUCH, x1=0, y1=0, x2=0, y2=0)
+        self.assertIn("focus centre", self.sim.ok("status"))
+        assert_rejected_without_sending(self, self.raw_tx, "focus", Focus, "area_right_px",
+                                        mode=FocusRequest.AREA_AUTO, x1=800, y1=400, x2=800, y2=680)
 
     # --- tf_upgrade -------------------------------------------------------------------------
     def test_tf_upgrade_reports_until_it_succeeds(self):
