@@ -224,6 +224,15 @@ class PodJobs(unittest.TestCase):
         self.assertFalse(response.range_applied or response.channels_applied or response.power_cycle_needed)
         self.assertIn("0x000500", response.message)
 
+    # --- time zone -----------------------------------------------------------------------------
+    def test_time_sync_carries_the_time_zone_parameter(self):
+        since = time.time()
+        sync = self.raw_tx.wait_for_match(lambda f: frame_id(f.data) == 0x00030E, 5.0, since)
+        self.assertIsNotNone(sync, "no time sync (0x00030E) on raw/tx")
+        # Section 3.2.4.13: payload = int64 ms, int32 tz_minuteswest, int32 tz_dsttime, low byte
+        # first; the payload starts at frame byte 10. time_zone_minutes_west -480 = 20 FE FF FF.
+        self.assertEqual(list(bytearray(sync.data[18:22])), [0x20, 0xFE, 0xFF, 0xFF])
+
     # --- strong light / backlight -------------------------------------------------------------
     def test_strong_light_replaces_backlight_in_one_change(self):
         self.client.update_configuration({"strong_light_suppression": False, "backlight_compensation": False})
