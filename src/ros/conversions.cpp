@@ -235,6 +235,17 @@ k40t_driver::PhotoStatus to_msg(const protocol::PhotoStatus& status, const ros::
   return m;
 }
 
+k40t_driver::UpgradeStatus to_msg(const protocol::CameraUpgradeStatus& status,
+                                  const ros::Time& stamp) {
+  k40t_driver::UpgradeStatus m;
+  m.header.stamp = stamp;
+  m.state = code_of(status.state);
+  const char* text = protocol::to_string(status.state);
+  m.state_text = text ? text : "unknown";
+  m.progress_percent = status.progress_percent;
+  return m;
+}
+
 k40t_driver::RecordStatus to_msg(const protocol::RecordStatus& status, const ros::Time& stamp) {
   k40t_driver::RecordStatus m = lens_and_state<k40t_driver::RecordStatus>(status, stamp);
   m.duration_s = status.recording_time_s;

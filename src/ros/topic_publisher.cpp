@@ -45,6 +45,7 @@ TopicPublisher::TopicPublisher(ros::NodeHandle nh, PodDriver& driver, const RosP
   forward(Tag<p::VisibleStatus>{}, visible_status_, "visible/status", plain);
   forward(Tag<p::PhotoStatus>{}, photo_status_, "photo/status", plain);
   forward(Tag<p::RecordStatus>{}, record_status_, "record/status", plain);
+  forward(Tag<p::CameraUpgradeStatus>{}, upgrade_status_, "camera/upgrade_status", plain);
   forward(Tag<p::ThermalStatus>{}, thermal_stats_, "thermal/stats",
           [ids](const p::ThermalStatus& m, const ros::Time& t) { return to_msg(m, t, ids); });
 

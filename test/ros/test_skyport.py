@@ -330,10 +330,22 @@ class Skyport(unittest.TestCase):
 
     def test_get_position_service(self):
         proxy = service("skyport/get_position", GetPosition)
-        response = proxy(base_time=rospy.Time(START_UTC + 20), time_offsets_us=[0, 500000])
+        self.assertTrue(self.utc.wait_for(1, 15.0), "no skyport/utc_time")
+        # 3.7.1: the instants must lie in the 2 s before the newest UTC push; a fractional base
+        # time is honoured (the stamps come back at exactly the instants asked for).
+        newest = self.utc.latest().time_ref
+        base = newest - rospy.Duration(1.25)
+        response = proxy(base_time=base, time_offsets_us=[0, 500000])
         self.assertTrue(response.success, response.message)
         self.assertEqual(len(response.positions), 2)
         self.assertAlmostEqual(response.positions[0].latitude, HOME_LAT, delta=CIRCLE_DEG)
+        self.assertEqual(response.positions[0].header.stamp, base)
+        self.assertEqual(response.positions[1].header.stamp, base + rospy.Duration(0.5))
+        # Outside the window: refused with the reason, nothing asked of the adapter.
+        time.sleep(0.3)  # past the rate limit
+        late = proxy(base_time=newest - rospy.Duration(5), time_offsets_us=[0])
+        self.assertFalse(late.success)
+        self.assertIn("2 s", late.message)
 
     def test_y_diagnostics_error_while_the_adapter_is_silent(self):
         self.assertTrue(self.diagnostics.wait_level("SKYPORT link", DiagnosticStatus.OK, 20.0))

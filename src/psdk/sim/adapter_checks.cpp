@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "k40t_driver/psdk/sim/adapter_simulator.h"
+#include "k40t_driver/psdk/sim/payload_reading.h"
 
 namespace k40t::psdk::sim {
 namespace {
@@ -76,9 +77,36 @@ std::string photo_state_text(const ShootPhotoState& s) {
   return "shooting:" + out;
 }
 
-std::string angles_text(const GimbalAngles& a) {
+std::string angles_text(const GimbalStateReading& a) {
   return "pitch " + std::to_string(a.pitch_deg) + ", roll " + std::to_string(a.roll_deg) +
          ", yaw " + std::to_string(a.yaw_deg) + " deg";
+}
+
+// The gimbal state read with the adapter's own table (payload_reading.h).
+Result<GimbalStateReading> gimbal_state(Session& session, PayloadReading reading) {
+  const AckResult r = session.request_raw(GetGimbalState::key(), nullptr, 0);
+  if (!r.received) return Status::fail(r.message);
+  return read_gimbal_state(r.data, reading);
+}
+
+// poll_until() for the gimbal state.
+template <class Done>
+bool poll_gimbal(Session& session, PayloadReading reading, Done done, GimbalStateReading* last,
+                 std::string* why) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  *why = "no answer";
+  while (std::chrono::steady_clock::now() < until) {
+    const Result<GimbalStateReading> state = gimbal_state(session, reading);
+    if (!state) {
+      *why = state.error();
+    } else {
+      *last = state.value();
+      if (done(*last)) return true;
+      *why = "not within 10 s";
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  return false;
 }
 
 }  // namespace
@@ -154,11 +182,20 @@ CheckReport AdapterSimulator::check_camera() {
   exchange(s, report, record, "record stop");
   exchange(s, report, GetRecordState{}, "not recording",
            [](const RecordStateAck& a, std::string&) { return !a.recording; });
-  exchange(s, report, GetSdCardInfo{}, "SD card", [](const SdCardInfoAck& a, std::string& d) {
-    d += a.state.inserted ? ", inserted, " + std::to_string(a.remaining_mb) + " MB free"
-                          : ", no card";
-    return true;
-  });
+  {
+    const AckResult r = s.request_raw(GetSdCardInfo::key(), nullptr, 0);
+    const Result<SdCardReading> sd = r.received ? read_sd_card(r.data, options_.reading)
+                                                : Result<SdCardReading>::fail(r.message);
+    // A card the pod writes to must not read as read-only or faulty in the adapter's layout.
+    const bool healthy = sd && (!sd->inserted || (!sd->read_only && !sd->has_error));
+    report.add(GetSdCardInfo::kName, healthy,
+               !sd ? "SD card: " + sd.error()
+                   : std::string("SD card: ") +
+                         (sd->inserted ? "inserted, " + std::to_string(sd->free_mb) + " MB free" +
+                                             (sd->read_only ? ", READ-ONLY" : "") +
+                                             (sd->has_error ? ", ERROR" : "")
+                                       : "no card"));
+  }
 
   const OpticalZoomSpecAck spec = exchange(s, report, GetOpticalZoomSpec{}, "optical zoom range",
                                            [](const OpticalZoomSpecAck& a, std::string& d) {
@@ -215,18 +252,14 @@ CheckReport AdapterSimulator::check_gimbal() {
   Session& s = *session_;
   exchange(s, report, GetGimbalCapability{}, "capability",
            [](const GimbalCapabilityAck& a, std::string&) { return a.supported; });
-  const GimbalStateAck state =
-      exchange(s, report, GetGimbalState{}, "state", [](const GimbalStateAck& a, std::string& d) {
-        d += ", " + std::string(to_string(a.mode)) + ", " + angles_text(a.angles);
-        return true;
-      });
+  const Result<GimbalStateReading> state = gimbal_state(s, options_.reading);
+  report.add(GetGimbalState::kName, static_cast<bool>(state),
+             state ? "state: OK, " + state->mode + ", " + angles_text(state.value())
+                   : "state: " + state.error());
   // The mode the gimbal says it is in must be accepted; PSDK lets a gimbal answer 0x02 for a mode
   // it does not have (a pod whose yaw is relative to the aircraft has no free mode), never 0x01.
   SetGimbalMode mode;
-  mode.mode = GimbalMode::kFollowing;
-  for (const GimbalMode m : {GimbalMode::kFree, GimbalMode::kFpv, GimbalMode::kFollowing}) {
-    if (to_state_mode(m) == state.mode) mode.mode = m;
-  }
+  mode.mode = state ? static_cast<GimbalMode>(state->set_mode_code) : GimbalMode::kFollowing;
   exchange(s, report, mode, std::string("mode: ") + to_string(mode.mode) + " (its own)");
   mode.mode = GimbalMode::kFree;
   const Result<SetGimbalMode::Ack> free = s.request(mode);
@@ -240,17 +273,15 @@ CheckReport AdapterSimulator::check_gimbal() {
   angle.pitch_deg = -30.0f;
   angle.yaw_deg = 20.0f;
   exchange(s, report, angle, "angle pitch -30, yaw 20 deg");
-  GimbalStateAck last;
+  GimbalStateReading last;
   std::string why;
-  const bool reached = poll_until(
-      s, GetGimbalState{},
-      [](const GimbalStateAck& a) {
-        return std::abs(a.angles.pitch_deg + 30.0) <= 2.0 &&
-               std::abs(a.angles.yaw_deg - 20.0) <= 2.0;
+  const bool reached = poll_gimbal(
+      s, options_.reading,
+      [](const GimbalStateReading& a) {
+        return std::abs(a.pitch_deg + 30.0) <= 2.0 && std::abs(a.yaw_deg - 20.0) <= 2.0;
       },
       &last, &why);
-  report.add("gimbal_reaches_angle", reached,
-             angles_text(last.angles) + (reached ? "" : ", " + why));
+  report.add("gimbal_reaches_angle", reached, angles_text(last) + (reached ? "" : ", " + why));
 
   ControlGimbalSpeed speed;
   speed.yaw_rate_deg_s = 10.0;
@@ -260,14 +291,13 @@ CheckReport AdapterSimulator::check_gimbal() {
   exchange(s, report, speed, "speed control stop");
 
   exchange(s, report, GimbalReturnHead{}, "return head");
-  const bool centred = poll_until(
-      s, GetGimbalState{},
-      [](const GimbalStateAck& a) {
-        return std::abs(a.angles.pitch_deg) <= 2.0 && std::abs(a.angles.yaw_deg) <= 2.0;
+  const bool centred = poll_gimbal(
+      s, options_.reading,
+      [](const GimbalStateReading& a) {
+        return std::abs(a.pitch_deg) <= 2.0 && std::abs(a.yaw_deg) <= 2.0;
       },
       &last, &why);
-  report.add("gimbal_returns_to_centre", centred,
-             angles_text(last.angles) + (centred ? "" : ", " + why));
+  report.add("gimbal_returns_to_centre", centred, angles_text(last) + (centred ? "" : ", " + why));
 
   exchange(s, report, CalibrateGimbal{}, "calibration");
   exchange(s, report, GetCalibrationProgress{}, "calibration progress",
