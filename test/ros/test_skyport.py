@@ -124,7 +124,8 @@ class Skyport(unittest.TestCase):
 
     def test_payload_state_exchanges(self):
         steps = self.check("payload")
-        self.assertTrue(any("'K40T'" in s for s in steps), steps)
+        # DJI's code sends the app name as the product name (docs/psdk.md P32).
+        self.assertTrue(any("'k40t_test'" in s for s in steps), steps)
 
     def test_check_camera_every_step_passes(self):
         # Photo, photo state until stored, video, record start/stop, focal length until the lens
@@ -361,6 +362,29 @@ class Skyport(unittest.TestCase):
         self.assertIn("silent", errors[0])
         self.assertTrue(self.diagnostics.wait_level("SKYPORT link", DiagnosticStatus.OK, 15.0),
                         "not OK again after the silence")
+
+    def test_yy_unplugged_pod_while_dji_pilot_polls(self):
+        # The pod's link is cut (k40t_sim closes it; the driver's status topics stop and its
+        # services fail) while the adapter keeps polling: the bridge answers every getter from the
+        # last known state at once, diagnostics mark that state stale, and nothing piles up.
+        self.assertTrue(self.diagnostics.wait_level("SKYPORT link", DiagnosticStatus.OK, 20.0))
+        before, _ = self.command("gimbal_state")
+        self.assertEqual(before, 0x00)
+        self.pod.ok("disconnect 8")
+        self.assertTrue(wait_until(lambda: self.diagnostics.value("SKYPORT link", "pod state stale") == "True",
+                                   10.0), self.diagnostics.status("SKYPORT link"))
+        codes = []
+        for _ in range(5):
+            for getter in ("gimbal_state", "record_state"):
+                codes.append(self.command(getter)[0])
+            self.command("gimbal_return")  # a pod call: refused or busy, never waited for by getters
+        self.assertEqual(codes, [0x00] * len(codes))
+        status = self.diagnostics.status("SKYPORT link")
+        self.assertIn("stale", status.message)
+        self.assertLessEqual(int(self.diagnostics.value("SKYPORT link", "pod jobs queued")), 8)
+        # Plugged in again: the state is fresh, diagnostics OK.
+        self.assertTrue(wait_until(lambda: self.diagnostics.value("SKYPORT link", "pod state stale") == "False",
+                                   30.0), self.diagnostics.status("SKYPORT link"))
 
     # --- power-off: last (the announcement stays) -------------------------------------------------
 

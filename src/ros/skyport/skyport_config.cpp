@@ -95,6 +95,7 @@ Result<SkyportConfig> read_skyport_config(const ros::NodeHandle& nh) {
   c.ack_timeout_s = p.number("ack_timeout", c.ack_timeout_s, 0.01, 60);
   c.silence_timeout_s = p.number("silence_timeout", c.silence_timeout_s, 0.01, 60);
   c.diagnostic_period_s = p.number("diagnostic_period", c.diagnostic_period_s, 0.01, 60);
+  c.pps_topic = p.get("pps_topic", c.pps_topic);
   c.pod_stale_s = p.number("pod_stale_timeout", c.pod_stale_s, 0.1, 3600);
   c.position_min_interval_s = p.number("position_min_interval", c.position_min_interval_s, 0, 60);
   if (!p.error().empty()) return Status::fail(p.error());

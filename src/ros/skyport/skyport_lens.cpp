@@ -17,8 +17,6 @@ using detail::refused;
 namespace {
 // The pod's stream is 1920x1080; a PSDK focus zone point becomes a box around it.
 constexpr double kStreamWidth = 1920, kStreamHeight = 1080, kFocusBoxHalf = 100;
-// The pod reports its ratio to 0.1 (visible status): within this, it is the commanded product.
-constexpr double kZoomRatioTolerance = 0.06;
 
 uint16_t clamp_px(double v, double hi) {
   return static_cast<uint16_t>(std::lround(std::clamp(v, 0.0, hi)));
@@ -28,10 +26,7 @@ uint16_t clamp_px(double v, double hi) {
 SkyportBridge::ZoomSplit SkyportBridge::zoom_split(const PodSnapshot& s) const {
   std::lock_guard<std::mutex> lock(mutex_);
   const ZoomSplit commanded{optical_zoom_, digital_zoom_};
-  if (!s.have_visible || s.zoom_ratio <= 0) return commanded;
-  const double product = commanded.optical * commanded.digital;
-  if (std::fabs(s.zoom_ratio - product) <= kZoomRatioTolerance * std::max(1.0, product / 10))
-    return commanded;
+  if (!zoom_follows_pod_ || !s.have_visible || s.zoom_ratio <= 0) return commanded;
   const double optical = std::clamp(s.zoom_ratio, 1.0, options_.max_optical_zoom);
   return {optical, std::max(1.0, s.zoom_ratio / optical)};
 }
@@ -46,6 +41,7 @@ AckCode SkyportBridge::apply_zoom(double optical, double digital) {
     std::lock_guard<std::mutex> lock(mutex_);
     optical_zoom_ = optical;
     digital_zoom_ = digital;
+    zoom_follows_pod_ = false;
   }
   return code;
 }
@@ -151,8 +147,14 @@ void SkyportBridge::register_camera_lens() {
     return ack;
   });
   deferred<StartContinuousZoom>([this](const StartContinuousZoom& c) {
-    return pod_code(pod_.zoom(c.direction == ZoomDirection::kIn ? PodZoom::kIn : PodZoom::kOut),
-                    "continuous zoom");
+    const AckCode code =
+        pod_code(pod_.zoom(c.direction == ZoomDirection::kIn ? PodZoom::kIn : PodZoom::kOut),
+                 "continuous zoom");
+    if (code == AckCode::kOk) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      zoom_follows_pod_ = true;  // where it stops, only the pod knows
+    }
+    return code;
   });
   deferred<StopContinuousZoom>(
       [this](const StopContinuousZoom&) { return pod_code(pod_.zoom(PodZoom::kStop), "zoom"); });

@@ -18,6 +18,7 @@
 #include "k40t_driver/psdk/commands/all.h"
 #include "k40t_driver/psdk/commands/header_variants.h"
 #include "k40t_driver/ros/skyport/position_request.h"
+#include "k40t_driver/ros/skyport/pps_rule.h"
 #include "k40t_driver/ros/skyport/skyport_ros.h"
 
 namespace k40t::driver::skyport {
@@ -193,8 +194,25 @@ void SkyportRos::register_pushes() {
       ROS_WARN_THROTTLE(5.0, "SKYPORT UTC time push dropped: %s", valid.message().c_str());
       return;
     }
+    const ros::Time received = ros::Time::now();
     sensor_msgs::TimeReference out;
-    out.header.stamp = ros::Time::now();
+    out.header.stamp = received;
+    if (config_.pps_topic.empty()) {
+      ++utc_pushes_unchecked_;  // no PPS edge to check against: stamped at reception
+    } else {
+      std::optional<ros::Time> edge;
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        edge = last_pps_edge_;
+      }
+      const UtcPushVerdict verdict = judge_utc_push(
+          edge ? std::optional<double>(edge->toSec()) : std::nullopt, received.toSec());
+      if (verdict != UtcPushVerdict::kUse) {  // 3.3.10: more than 500 ms after its edge
+        ++utc_pushes_late_;
+        return;
+      }
+      out.header.stamp = *edge;  // the instant the UTC time describes, on this computer's clock
+    }
     out.time_ref = unix_time(p.time, p.microsecond);
     {
       std::lock_guard<std::mutex> lock(mutex_);

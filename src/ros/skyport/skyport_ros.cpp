@@ -130,6 +130,13 @@ void SkyportRos::advertise() {
     feed_attitude_ = nh_.advertise<sensor_msgs::Imu>("attitude", 10);
     feed_time_ = nh_.advertise<sensor_msgs::TimeReference>("time_reference", 10);
   }
+  if (!config_.pps_topic.empty()) {
+    pps_ = nh_.subscribe<sensor_msgs::TimeReference>(
+        config_.pps_topic, 10, [this](const sensor_msgs::TimeReference::ConstPtr& edge) {
+          std::lock_guard<std::mutex> lock(mutex_);
+          last_pps_edge_ = edge->header.stamp;
+        });
+  }
   to_mobile_ = nh_.subscribe("skyport/transparent/to_mobile", 10, &SkyportRos::on_to_mobile, this);
   to_onboard_ =
       nh_.subscribe("skyport/transparent/to_onboard", 10, &SkyportRos::on_to_onboard, this);
@@ -224,6 +231,8 @@ void SkyportRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   status.add("pod state age (s)", pod_age_s);
   status.add("pod state stale", pod_stale);
   status.add("UTC pushes dropped (invalid)", utc_pushes_invalid_.load());
+  status.add("UTC pushes dropped (over 500 ms after the PPS edge)", utc_pushes_late_.load());
+  status.add("UTC pushes stamped at reception (no PPS source)", utc_pushes_unchecked_.load());
 }
 
 }  // namespace k40t::driver::skyport

@@ -3,6 +3,7 @@
 // ACK-request bits; calibration progress comes from the pod's repair report; commands the pod
 // cannot honour (roll, out-of-range rates, a photo count) are refused before the pod sees them.
 // Command bytes are written by hand from the document (sections cited).
+#include <algorithm>
 #include <future>
 #include <utility>
 
@@ -202,7 +203,11 @@ TEST(SkyportBridgeAnswers, ZoomStaysConsistentWithThePod) {
   ASSERT_TRUE(d);
   EXPECT_NEAR(d->factor_x, 3.0, 0.01);
   // A continuous zoom moves the pod to 8x: optical 8x, digital 1x from now on...
+  StartContinuousZoom in;
+  in.direction = ZoomDirection::kIn;
+  ASSERT_TRUE(rig.ask(in));
   rig.pod.report_zoom(8.0);
+  ASSERT_TRUE(rig.ask(StopContinuousZoom{}));
   d = rig.ask(GetDigitalZoomFactor{});
   ASSERT_TRUE(d);
   EXPECT_NEAR(d->factor_x, 1.0, 0.01);
@@ -210,6 +215,45 @@ TEST(SkyportBridgeAnswers, ZoomStaysConsistentWithThePod) {
   digital.factor_x = 2;
   ASSERT_TRUE(rig.ask(digital));
   EXPECT_TRUE(has_call(rig.pod, "zoom 16.00"));
+}
+
+// The pod unplugged while DJI Pilot polls: every pod call hangs (the driver waits for its
+// timeout), the snapshot keeps the last known state. Getters are answered from it; commands beyond
+// the queue's capacity are answered "busy" at once; the queue never holds more than its capacity.
+TEST(SkyportBridgeAnswers, AnUnpluggedPodLeavesGettersAnsweredAndTheQueueBounded) {
+  constexpr size_t kCapacity = 4;
+  Rig rig(kCredentials, BridgeOptions{}.photo_storing_s,
+          [](BridgeOptions& o) { o.max_queued_jobs = kCapacity; });
+  rig.pod.hold();
+  std::vector<std::future<AckResult>> commands;
+  size_t most_queued = 0;
+  for (int poll = 0; poll < 50; ++poll) {
+    commands.push_back(ask_async(rig, kReturnHead));  // DJI Pilot keeps commanding...
+    const Result<GimbalStateAck> state = rig.ask(GetGimbalState{});  // ...and polling
+    ASSERT_TRUE(state) << state.error();
+    EXPECT_EQ(state->code, AckCode::kOk);
+    EXPECT_NEAR(state->angles.pitch_deg, -30, 0.1);  // the last known pose
+    const Result<RecordStateAck> record = rig.ask(GetRecordState{});
+    ASSERT_TRUE(record) << record.error();
+    most_queued = std::max<size_t>(most_queued, rig.bridge->stats().queued_jobs);
+  }
+  EXPECT_LE(most_queued, kCapacity);
+  // 50 commands: one held in the pod, `kCapacity` waiting, the rest refused at once.
+  EXPECT_TRUE(eventually([&] { return rig.bridge->stats().busy_answers == 50 - 1 - kCapacity; }))
+      << rig.bridge->stats().busy_answers;
+  size_t busy = 0;  // the refused ones were answered at once (the others may time out meanwhile)
+  for (auto& f : commands) {
+    const AckResult r = f.get();
+    busy += r.received && r.code() == 0x01;
+  }
+  EXPECT_EQ(busy, 50 - 1 - kCapacity);
+  rig.pod.release();  // plugged in again: the held and the queued commands reach the pod
+  const auto centred = [&] {
+    size_t n = 0;
+    for (const auto& c : rig.pod.calls()) n += c == "center";
+    return n;
+  };
+  EXPECT_TRUE(eventually([&] { return centred() == 1 + kCapacity; })) << centred();
 }
 
 // The layouts where DJI's headers and the document disagree (docs/psdk.md P28..P30), checked on

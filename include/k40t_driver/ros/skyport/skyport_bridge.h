@@ -131,6 +131,7 @@ class SkyportBridge {
   BridgeStats stats_;
   double optical_zoom_ = 1.0;  // commanded through PSDK (written by the worker)
   double digital_zoom_ = 1.0;
+  bool zoom_follows_pod_ = true;  // no set since start or since a continuous zoom (skyport_lens)
   psdk::MeteringMode metering_ = psdk::MeteringMode::kCenter;
   psdk::FocusMode focus_mode_ = psdk::FocusMode::kAuto;
   float focus_x_ = 0.5f, focus_y_ = 0.5f;

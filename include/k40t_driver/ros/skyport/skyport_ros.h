@@ -71,6 +71,10 @@ class SkyportRos {
   uint16_t next_event_index_ = 0;
   std::mutex position_mutex_;  // one get_position at a time (rate limit, event indices)
   std::atomic<uint64_t> utc_pushes_invalid_{0};
+  std::atomic<uint64_t> utc_pushes_late_{0};       // 3.3.10's 500 ms rule (pps_topic set)
+  std::atomic<uint64_t> utc_pushes_unchecked_{0};  // no pps_topic: the rule cannot be applied
+  std::optional<ros::Time> last_pps_edge_;         // local time of the newest PPS rising edge
+  ros::Subscriber pps_;
 };
 
 }  // namespace k40t::driver::skyport
