@@ -171,6 +171,8 @@ CheckReport AdapterSimulator::check_camera() {
   report.add("photo_stored", stored,
              "photo state " + photo_state_text(photo_state.state) + (stored ? "" : ", " + why));
 
+  check_interval_mode(report);
+
   mode.mode = CameraWorkMode::kRecordVideo;
   exchange(s, report, mode, "work mode: video");
   RecordVideo record;
@@ -245,6 +247,45 @@ CheckReport AdapterSimulator::check_camera() {
              [mode](const MeteringModeAck& a, std::string&) { return a.mode == mode; });
   }
   return report;
+}
+
+// Interval shooting set and read back in the payload's layout (P30), written byte by byte as an
+// adapter of that layout would (3.4.5: type 6, burst 0, count 255 = until stopped, interval 5 s;
+// the headers' interval is a uint16), read with the adapter's own table; then single shots again.
+void AdapterSimulator::check_interval_mode(CheckReport& report) {
+  Session& s = *session_;
+  const bool wide = options_.reading == PayloadReading::kDjiHeaders;
+  const std::vector<uint8_t> interval = wide ? std::vector<uint8_t>{0x06, 0x00, 0xFF, 0x05, 0x00}
+                                             : std::vector<uint8_t>{0x06, 0x00, 0xFF, 0x05};
+  const AckResult set = s.request_raw(SetShootPhotoMode::key(), interval.data(), interval.size());
+  report.add(
+      SetShootPhotoMode::kName, set.ok(),
+      "photo mode: interval 5 s: " + (set.received ? ack_code_text(set.code()) : set.message));
+  ShootPhotoModeReading last;
+  std::string why = "no answer";
+  bool read_back = false;
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (set.ok() && !read_back && std::chrono::steady_clock::now() < until) {
+    const AckResult r = s.request_raw(GetShootPhotoMode::key(), nullptr, 0);
+    const Result<ShootPhotoModeReading> m = r.received
+                                                ? read_shoot_photo_mode(r.data, options_.reading)
+                                                : Result<ShootPhotoModeReading>::fail(r.message);
+    if (m) {
+      last = m.value();
+      read_back = last.type == 0x06 && last.interval_count == 0xFF && last.interval_s == 5;
+      why = "type " + std::to_string(last.type) + ", interval " + std::to_string(last.interval_s) +
+            " s";
+    } else {
+      why = m.error();
+    }
+    if (!read_back) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  report.add(GetShootPhotoMode::kName, read_back, "photo mode reads back: " + why);
+  const std::vector<uint8_t> single = wide ? std::vector<uint8_t>{0x01, 0x00, 0x00, 0x00, 0x00}
+                                           : std::vector<uint8_t>{0x01, 0x00, 0x00, 0x00};
+  const AckResult back = s.request_raw(SetShootPhotoMode::key(), single.data(), single.size());
+  report.add(SetShootPhotoMode::kName, back.ok(),
+             "photo mode: single: " + (back.received ? ack_code_text(back.code()) : back.message));
 }
 
 CheckReport AdapterSimulator::check_gimbal() {

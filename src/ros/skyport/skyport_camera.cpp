@@ -13,6 +13,16 @@ namespace {
 // CameraStatus constants (msg/CameraStatus.msg), kept here so the core needs no ROS header.
 constexpr uint8_t kPhotoSingle = 0, kPhotoBurst = 1, kPhotoTimelapse = 2;
 constexpr uint8_t kSdOk = 0, kSdAbnormal = 1, kSdMissing = 3, kSdFull = 4, kSdFormatError = 5;
+
+// The pod checks every field of its photo settings, also those the mode does not use (a burst
+// count of 0 is refused for a time-lapse): those keep the pod's current values, or its first valid
+// ones before it said.
+uint8_t usable_burst(uint8_t count) {
+  return count == 3 || count == 5 ? count : 3;
+}
+uint8_t usable_interval(uint8_t s) {
+  return s == 5 || s == 7 || s == 30 || s == 60 ? s : 5;
+}
 }  // namespace
 
 void SkyportBridge::register_camera() {
@@ -48,13 +58,17 @@ void SkyportBridge::register_camera() {
   });
   // 3.4.5 by its length: a uint8 interval (document) or a uint16 one (DJI's headers, P30).
   deferred_raw<SetShootPhotoMode>(decode_shoot_photo_mode, [this](const ShootPhotoModeWide& c) {
+    const PodSnapshot now = pod_.snapshot();
+    const uint8_t burst = usable_burst(now.burst_count);
+    const uint8_t interval = usable_interval(now.timelapse_interval_s);
     switch (c.type) {
       case ShootPhotoType::kSingle:
-        return capture_code(pod_.set_photo_mode(kPhotoSingle, 0, 0), "photo mode");
+        return capture_code(pod_.set_photo_mode(kPhotoSingle, interval, burst), "photo mode");
       case ShootPhotoType::kBurst:
         if (c.burst_count != 3 && c.burst_count != 5)
           return invalid("burst count " + std::to_string(c.burst_count) + ": the pod takes 3 or 5");
-        return capture_code(pod_.set_photo_mode(kPhotoBurst, 0, c.burst_count), "photo mode");
+        return capture_code(pod_.set_photo_mode(kPhotoBurst, interval, c.burst_count),
+                            "photo mode");
       case ShootPhotoType::kInterval:
         // The pod's time-lapse runs until stopped: a count it would not honour is refused, not
         // answered OK and ignored.
@@ -65,7 +79,7 @@ void SkyportBridge::register_camera() {
           return invalid("interval " + std::to_string(c.interval_s) +
                          " s: the pod's time-lapse intervals are 5, 7, 30 and 60 s");
         return capture_code(
-            pod_.set_photo_mode(kPhotoTimelapse, static_cast<uint8_t>(c.interval_s), 0),
+            pod_.set_photo_mode(kPhotoTimelapse, static_cast<uint8_t>(c.interval_s), burst),
             "photo mode");
     }
     return invalid("shoot photo type " + std::to_string(static_cast<int>(c.type)));

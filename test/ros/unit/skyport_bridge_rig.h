@@ -120,8 +120,15 @@ class FakePod : public PodPort {
     return r;
   }
   PodCall set_photo_mode(uint8_t mode, uint8_t interval, uint8_t burst) override {
-    return capture("photo mode " + std::to_string(mode) + " " + std::to_string(interval) + " " +
-                   std::to_string(burst));
+    PodCall r = capture("photo mode " + std::to_string(mode) + " " + std::to_string(interval) +
+                        " " + std::to_string(burst));
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (r.ok) {  // as camera/status then reports it
+      state_.photo_mode = mode;
+      state_.timelapse_interval_s = interval;
+      state_.burst_count = burst;
+    }
+    return r;
   }
   PodCall set_video_mode(bool video) override {
     PodCall r = capture(video ? "video" : "photo mode");

@@ -155,7 +155,7 @@ TEST(SkyportBridgeAnswers, AnIntervalCountThePodCannotHonourIsRefused) {
   EXPECT_TRUE(rig.pod.calls().empty());
   // Count 255 (until stopped), interval 5 s: the pod's own time-lapse.
   EXPECT_EQ(rig.code_of(SetShootPhotoMode::key(), {0x06, 0x00, 0xFF, 0x05}), 0x00);
-  EXPECT_TRUE(has_call(rig.pod, "photo mode 2 5 0"));
+  EXPECT_TRUE(has_call(rig.pod, "photo mode 2 5 3"));
 }
 
 TEST(SkyportBridgeAnswers, AnUnknownRecordingStateIsNotAnsweredAsKnown) {
@@ -313,7 +313,7 @@ TEST(SkyportBridgeLayouts, IntervalWidthFollowsTheChosenLayout) {
   // A set is read by its length whatever the layout: 5 bytes (headers), interval 0x003C = 60 s.
   Rig rig = rig_with(PsdkLayout::kDocument);
   EXPECT_EQ(rig.code_of(SetShootPhotoMode::key(), {0x06, 0x00, 0xFF, 0x3C, 0x00}), 0x00);
-  EXPECT_TRUE(has_call(rig.pod, "photo mode 2 60 0"));
+  EXPECT_TRUE(has_call(rig.pod, "photo mode 2 60 3"));
   // 300 s (0x012C) is not one of the pod's intervals: refused, not read as 44 s.
   EXPECT_EQ(rig.code_of(SetShootPhotoMode::key(), {0x06, 0x00, 0xFF, 0x2C, 0x01}), 0x01);
 }

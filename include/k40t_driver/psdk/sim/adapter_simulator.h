@@ -122,6 +122,7 @@ class AdapterSimulator {
  private:
   void run();
   void send_due_pushes(double t_s);
+  void check_interval_mode(CheckReport& report);  // part of check_camera()
   template <class Push>
   void push(const Push& message);
   void maybe_jump_sequence();
