@@ -6,6 +6,8 @@
 #include <tf2/LinearMath/Matrix3x3.h>
 #include <tf2/LinearMath/Quaternion.h>
 
+#include "k40t_driver/ros/code_text.h"
+
 namespace k40t::driver {
 
 namespace {
@@ -18,18 +20,6 @@ std_msgs::Header header(const ros::Time& stamp, const std::string& frame_id = ""
   h.stamp = stamp;
   h.frame_id = frame_id;
   return h;
-}
-
-// The document's words for a code, or "unknown code N".
-template <class E>
-std::string text_of(E value) {
-  const char* name = to_string(value);
-  return name ? name : "unknown code " + std::to_string(static_cast<int>(value));
-}
-
-template <class E>
-uint8_t code_of(E value) {
-  return static_cast<uint8_t>(value);
 }
 
 geometry_msgs::Quaternion to_quaternion(const Rep103Angles& a) {
@@ -232,17 +222,6 @@ RosMsg lens_and_state(const Status& status, const ros::Time& stamp) {
 k40t_driver::PhotoStatus to_msg(const protocol::PhotoStatus& status, const ros::Time& stamp) {
   k40t_driver::PhotoStatus m = lens_and_state<k40t_driver::PhotoStatus>(status, stamp);
   m.burst_count = status.burst_count;
-  return m;
-}
-
-k40t_driver::UpgradeStatus to_msg(const protocol::CameraUpgradeStatus& status,
-                                  const ros::Time& stamp) {
-  k40t_driver::UpgradeStatus m;
-  m.header.stamp = stamp;
-  m.state = code_of(status.state);
-  const char* text = protocol::to_string(status.state);
-  m.state_text = text ? text : "unknown";
-  m.progress_percent = status.progress_percent;
   return m;
 }
 

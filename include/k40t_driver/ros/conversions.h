@@ -28,7 +28,6 @@
 #include "k40t_driver/PhotoStatus.h"
 #include "k40t_driver/RecordStatus.h"
 #include "k40t_driver/ThermalStats.h"
-#include "k40t_driver/UpgradeStatus.h"
 #include "k40t_driver/VisibleStatus.h"
 #include "k40t_driver/protocol/frame.h"
 #include "k40t_driver/protocol/messages/camera_reports.h"
@@ -99,8 +98,6 @@ k40t_driver::VisibleStatus to_msg(const protocol::VisibleStatus& status, const r
 k40t_driver::ThermalStats to_msg(const protocol::ThermalStatus& status, const ros::Time& stamp,
                                  const FrameIds& ids);
 k40t_driver::PhotoStatus to_msg(const protocol::PhotoStatus& status, const ros::Time& stamp);
-k40t_driver::UpgradeStatus to_msg(const protocol::CameraUpgradeStatus& status,
-                                  const ros::Time& stamp);
 k40t_driver::RecordStatus to_msg(const protocol::RecordStatus& status, const ros::Time& stamp);
 
 // A laser distance (0 = no return, published as +Inf per REP 117).

@@ -303,7 +303,7 @@ void RosPodPort::on_photo(const k40t_driver::PhotoStatus::ConstPtr& msg) {
   state_.photo_state = msg->state;
 }
 
-void RosPodPort::on_upgrade(const k40t_driver::UpgradeStatus::ConstPtr& msg) {
+void RosPodPort::on_upgrade(const k40t_driver::CameraUpgradeStatus::ConstPtr& msg) {
   std::lock_guard<std::mutex> lock(mutex_);
   ++state_.repair_status_count;
   state_.repair_state = msg->state;

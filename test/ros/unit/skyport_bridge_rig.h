@@ -69,7 +69,7 @@ class FakePod : public PodPort {
     std::lock_guard<std::mutex> lock(mutex_);
     state_.recording_known = false;
   }
-  // A camera/upgrade_status message (UpgradeStatus STATE_*).
+  // A camera/upgrade_status message (CameraUpgradeStatus STATE_*).
   void report_repair(uint8_t state, uint8_t percent) {
     std::lock_guard<std::mutex> lock(mutex_);
     ++state_.repair_status_count;

@@ -94,7 +94,7 @@ TEST(SkyportBridgeAnswers, ADeferredCommandThatDoesNotDecodeIsCounted) {
   EXPECT_TRUE(rig.pod.calls().empty());
 }
 
-// UpgradeStatus STATE_* (msg/UpgradeStatus.msg).
+// CameraUpgradeStatus STATE_* (msg/CameraUpgradeStatus.msg).
 constexpr uint8_t kSucceeded = 0, kFailed = 1, kRepairingState = 3;
 
 TEST(SkyportBridgeAnswers, CalibrationProgressComesFromThePodsRepairReport) {

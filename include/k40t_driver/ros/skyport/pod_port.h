@@ -52,7 +52,7 @@ struct PodSnapshot {
   // camera/upgrade_status (0x000008): the pod's repair progress, which covers a gimbal
   // calibration (state 3 "repairing", then 0 succeeded or 1 failed).
   uint64_t repair_status_count = 0;  // messages received so far
-  uint8_t repair_state = 0;          // UpgradeStatus STATE_*
+  uint8_t repair_state = 0;          // CameraUpgradeStatus STATE_*
   uint8_t repair_percent = 0;
 
   // Seconds since the newest status message from the pod (joints, camera, visible); negative
@@ -60,7 +60,7 @@ struct PodSnapshot {
   double state_age_s = -1;
 };
 
-// UpgradeStatus STATE_* (0x000008 byte 1, 3.2.1.4), kept here so the core needs no ROS header.
+// CameraUpgradeStatus STATE_* (0x000008 byte 1, 3.2.1.4), kept here so the core needs no ROS header.
 constexpr uint8_t kRepairSucceeded = 0, kRepairFailed = 1, kRepairUpgrading = 2, kRepairing = 3;
 
 // The pod's zoom actions (k40t_driver/Zoom.srv) and focus modes (Focus.srv).

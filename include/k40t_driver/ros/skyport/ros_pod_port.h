@@ -22,7 +22,7 @@
 #include "k40t_driver/CameraStatus.h"
 #include "k40t_driver/PhotoStatus.h"
 #include "k40t_driver/RecordStatus.h"
-#include "k40t_driver/UpgradeStatus.h"
+#include "k40t_driver/CameraUpgradeStatus.h"
 #include "k40t_driver/VisibleStatus.h"
 #include "k40t_driver/ros/skyport/pod_port.h"
 
@@ -66,7 +66,7 @@ class RosPodPort : public PodPort {
   void on_visible(const k40t_driver::VisibleStatus::ConstPtr& msg);
   void on_record(const k40t_driver::RecordStatus::ConstPtr& msg);
   void on_photo(const k40t_driver::PhotoStatus::ConstPtr& msg);
-  void on_upgrade(const k40t_driver::UpgradeStatus::ConstPtr& msg);
+  void on_upgrade(const k40t_driver::CameraUpgradeStatus::ConstPtr& msg);
   void pod_heard();  // a status message from the pod arrived (under mutex_)
 
   ros::NodeHandle nh_;
