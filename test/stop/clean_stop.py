@@ -6,7 +6,8 @@
      moment of a scenario (while connecting, during the settings read-back, in the middle of a
      service call, while the link reconnects, while the video opens, ...). Checked: the loader ends
      in bounded time, the nodelet leaves the manager, the manager stays alive and answers, its
-     thread count does not grow from cycle to cycle (every thread joined).
+     thread count does not grow from cycle to cycle (every thread joined). One more cycle per
+     nodelet signals the loader while it is still loading.
   2. Manager shutdowns: a manager with all three nodelets loaded gets SIGINT together with its
      loaders, as roslaunch's Ctrl-C does. Checked: exit code 0 within bounded time, no process left.
   3. Nodes: k40t_node, k40t_video_node and k40t_skyport_node get SIGINT or SIGTERM at a random
@@ -99,6 +100,9 @@ def unload_cycles(h, results, rng, cycles):
                                   "first cycle: a thread was not joined" % (threads, baseline))
 
             run_case(results, "unload", "%s_%02d_%s" % (kind, i, scenario), cycle)
+        run_case(results, "unload", "%s_during_load" % kind,
+                 lambda: h.unload_during_load(manager, kind, nodelet_type, rng,
+                                              "%s_during_load" % kind))
     h.stop_manager(manager)
     run_case(results, "unload", "manager_log_clean", lambda: h.check_log(manager.log))
 
