@@ -60,7 +60,8 @@ struct PodSnapshot {
   double state_age_s = -1;
 };
 
-// CameraUpgradeStatus STATE_* (0x000008 byte 1, 3.2.1.4), kept here so the core needs no ROS header.
+// CameraUpgradeStatus STATE_* (0x000008 byte 1, 3.2.1.4), kept here so the core needs no ROS
+// header.
 constexpr uint8_t kRepairSucceeded = 0, kRepairFailed = 1, kRepairUpgrading = 2, kRepairing = 3;
 
 // The pod's zoom actions (k40t_driver/Zoom.srv) and focus modes (Focus.srv).

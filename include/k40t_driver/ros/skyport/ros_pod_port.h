@@ -20,9 +20,9 @@
 #include <sensor_msgs/JointState.h>
 
 #include "k40t_driver/CameraStatus.h"
+#include "k40t_driver/CameraUpgradeStatus.h"
 #include "k40t_driver/PhotoStatus.h"
 #include "k40t_driver/RecordStatus.h"
-#include "k40t_driver/CameraUpgradeStatus.h"
 #include "k40t_driver/VisibleStatus.h"
 #include "k40t_driver/ros/skyport/pod_port.h"
 
