@@ -136,6 +136,54 @@ TEST(PsdkBridgeGolden, UtcTimePushAndItsRange) {
   EXPECT_FALSE(validate(decoded<UtcTimePush>(too_many_us)));
 }
 
+// 3.4.1 / 3.4.2: work mode 1 = record video; the ACK: code 0, mode 1.
+TEST(PsdkBridgeGolden, CameraWorkMode) {
+  EXPECT_EQ(decoded<SetCameraWorkMode>({0x01}).mode, CameraWorkMode::kRecordVideo);
+  CameraWorkModeAck ack;
+  ack.mode = CameraWorkMode::kRecordVideo;
+  EXPECT_EQ(encoded(ack), (Bytes{0x00, 0x01}));
+}
+
+// 3.4.11: metering 1 = average (0 centre, 2 spot); 3.4.15: focus 1 = auto (0 manual).
+TEST(PsdkBridgeGolden, MeteringAndFocusModes) {
+  EXPECT_EQ(decoded<SetMeteringMode>({0x01}).mode, MeteringMode::kAverage);
+  EXPECT_EQ(decoded<SetMeteringMode>({0x02}).mode, MeteringMode::kSpot);
+  EXPECT_EQ(decoded<SetFocusMode>({0x01}).mode, FocusMode::kAuto);
+  EXPECT_EQ(decoded<SetFocusMode>({0x00}).mode, FocusMode::kManual);
+}
+
+// 3.4.33 ACK: code 0, bits 0..4 (command set, optical zoom, digital zoom, focus, metering) all
+// set = 0x1F. (DJI's V1.0.0 header names bits 1 and 2 the other way round; all set, it does not
+// matter here.)
+TEST(PsdkBridgeGolden, CameraCapabilityAck) {
+  CameraCapabilityAck ack;
+  ack.supported.camera_commands = ack.supported.optical_zoom = ack.supported.digital_zoom = true;
+  ack.supported.focus = ack.supported.metering = true;
+  EXPECT_EQ(encoded(ack), (Bytes{0x00, 0x1F}));
+  ack.supported.optical_zoom = false;  // bit 1
+  EXPECT_EQ(encoded(ack), (Bytes{0x00, 0x1D}));
+}
+
+// 3.5.5: floats pitch -30.0 = 0xC1F00000, roll 0, yaw 20.0 = 0x41A00000.
+TEST(PsdkBridgeGolden, ControlGimbalAngle) {
+  const Bytes bytes = {0x00, 0x00, 0xF0, 0xC1, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xA0, 0x41};
+  const ControlGimbalAngle d = decoded<ControlGimbalAngle>(bytes);
+  EXPECT_EQ(d.pitch_deg, -30.0f);
+  EXPECT_EQ(d.roll_deg, 0.0f);
+  EXPECT_EQ(d.yaw_deg, 20.0f);
+  EXPECT_EQ(encoded(d), bytes);
+}
+
+// 3.2.4 ACK: code 0, 4 widgets. 3.4.24 ACK: code 0, float factor 2.0 = 0x40000000.
+TEST(PsdkBridgeGolden, WidgetCountAndOpticalZoomFactor) {
+  WidgetListLengthAck widgets;
+  widgets.count = 4;
+  EXPECT_EQ(encoded(widgets), (Bytes{0x00, 0x04}));
+  OpticalZoomFactorAck zoom;
+  zoom.factor_x = 2.0f;
+  EXPECT_EQ(encoded(zoom), (Bytes{0x00, 0x00, 0x00, 0x00, 0x40}));
+}
+
 // P28: "following" in the state report: 1 in the document's 3.5.1, 2 in DJI's headers (one enum
 // for state and set, free 0, FPV 1, yaw follow 2, as 3.5.2 numbers the set).
 TEST(PsdkBridgeGolden, GimbalStateModeNumbering) {
