@@ -252,6 +252,14 @@ class Skyport(unittest.TestCase):
         # A pod event becomes a floating-window message in DJI Pilot.
         self.assertTrue(wait_until(lambda: "recording started" in self.skyport.ok("floating"), 10.0),
                         self.skyport.ok("floating"))
+        # record/status goes silent (the pod sends nothing for 5 s): after 2.5 s the recording state
+        # is unknown, answered 0x01 rather than "recording" for good; known again once it speaks.
+        self.pod.ok("silence 5")
+        self.assertTrue(wait_until(lambda: self.command("record_state")[0] == 0x01, 5.0))
+        def known_recording():
+            code, data = self.command("record_state")
+            return code == 0x00 and data[:1] == b"\x01"
+        self.assertTrue(wait_until(known_recording, 15.0), self.skyport("record_state"))
         code, _ = self.command("record stop")
         self.assertEqual(code, 0x00)
         self.assertTrue(wait_until(lambda: "recording no" in self.pod_status(), 10.0), self.pod_status())
