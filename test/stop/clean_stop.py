@@ -19,7 +19,7 @@ It runs its own master, simulated pod (with its RTSP stream) and simulated SKYPO
 (scripts/run_tests.sh does). Writes one JUnit test case per check group to --junit.
 
   clean_stop.py [--cycles N] [--shutdowns N] [--node-runs N] [--seed N] [--junit FILE]
-                [--logs DIR]"""
+                [--logs DIR] [--stock-manager]"""
 import argparse
 import os
 import random
@@ -129,6 +129,8 @@ def main():
     ap.add_argument("--seed", type=int, default=None, help="seed of the random moments")
     ap.add_argument("--junit", help="JUnit XML output path")
     ap.add_argument("--logs", help="directory for the processes' logs (default: a temporary one)")
+    ap.add_argument("--stock-manager", action="store_true",
+                    help="use `nodelet manager` instead of k40t_manager (to see it abort)")
     options = ap.parse_args()
 
     seed = options.seed if options.seed is not None else random.randrange(1 << 30)
@@ -138,7 +140,7 @@ def main():
     print("clean_stop: seed %d, logs in %s" % (seed, logs), flush=True)
     results = Results()
     start = time.monotonic()
-    with Harness(logs) as h:
+    with Harness(logs, options.stock_manager) as h:
         unload_cycles(h, results, rng, options.cycles)
         manager_shutdowns(h, results, rng, options.shutdowns)
         node_stops(h, results, rng, options.node_runs)

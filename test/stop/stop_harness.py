@@ -72,8 +72,9 @@ class Proc:
 
 
 class Harness:
-    def __init__(self, logs):
+    def __init__(self, logs, stock_manager=False):
         self.logs = logs
+        self.stock_manager = stock_manager
         self.procs = []  # everything the checks start (not the master and the simulators)
         self.infra = []
         self.tag = "k40t_stop_%d" % os.getpid()
@@ -137,7 +138,8 @@ class Harness:
     def start_manager(self, name):
         # The package's manager (src/ros/nodes/k40t_manager.cpp): `nodelet manager` of nodelet 1.10
         # aborts on Ctrl-C when bonded nodelets unload while it exits (see that file).
-        manager = self.spawn([program("k40t_manager"), "__name:=" + name], name)
+        command = [NODELET, "manager"] if self.stock_manager else [program("k40t_manager")]
+        manager = self.spawn(command + ["__name:=" + name], name)
         manager.name = name
         self.wait_for(lambda: self.loaded(manager) is not None, 20,
                       "manager %s did not come up" % name)
