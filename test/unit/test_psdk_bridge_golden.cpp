@@ -184,6 +184,41 @@ TEST(PsdkBridgeGolden, WidgetCountAndOpticalZoomFactor) {
   EXPECT_EQ(encoded(zoom), (Bytes{0x00, 0x00, 0x00, 0x00, 0x40}));
 }
 
+// 3.4.3: action 1 = start; 3.4.7: action 0 = stop recording.
+TEST(PsdkBridgeGolden, ShootPhotoAndRecordActions) {
+  EXPECT_EQ(decoded<ShootPhoto>({0x01}).action, ShootPhotoAction::kStart);
+  EXPECT_EQ(decoded<ShootPhoto>({0x00}).action, ShootPhotoAction::kStop);
+  EXPECT_EQ(decoded<RecordVideo>({0x00}).action, RecordAction::kStop);
+}
+
+// 3.4.4 ACK: code 0, bits 0 single + 3 storing = 0x09, uint16 countdown 0.
+TEST(PsdkBridgeGolden, ShootPhotoStateAck) {
+  ShootPhotoStateAck ack;
+  ack.state.shooting_single = true;
+  ack.state.storing = true;
+  EXPECT_EQ(encoded(ack), (Bytes{0x00, 0x09, 0x00, 0x00}));
+}
+
+// 3.1.5 ACK: code 0, uint32 0xAABBCCDD = version AA.BB.CC.DD: 1.2.3.4 = 0x01020304, little-endian.
+TEST(PsdkBridgeGolden, SkyportVersionAck) {
+  SkyportVersionAck ack;
+  ack.version = Version{1, 2, 3, 4};
+  EXPECT_EQ(encoded(ack), (Bytes{0x00, 0x04, 0x03, 0x02, 0x01}));
+}
+
+// 3.5.10 ACK: code 0, 1 = gimbal command set supported.
+TEST(PsdkBridgeGolden, GimbalCapabilityAck) {
+  GimbalCapabilityAck ack;
+  ack.supported = true;
+  EXPECT_EQ(encoded(ack), (Bytes{0x00, 0x01}));
+}
+
+// 3.3.7: float altitude 100.5 m = 0x42C90000; 3.3.11: type 2 = ZENMUSE Z30.
+TEST(PsdkBridgeGolden, BarometricAltitudeAndOtherPayloadPushes) {
+  EXPECT_EQ(decoded<BarometricAltitudePush>({0x00, 0x00, 0xC9, 0x42}).altitude_m, 100.5);
+  EXPECT_EQ(decoded<OtherPayloadTypePush>({0x02}).type, OtherPayloadType::kZenmuseZ30);
+}
+
 // P28: "following" in the state report: 1 in the document's 3.5.1, 2 in DJI's headers (one enum
 // for state and set, free 0, FPV 1, yaw follow 2, as 3.5.2 numbers the set).
 TEST(PsdkBridgeGolden, GimbalStateModeNumbering) {
