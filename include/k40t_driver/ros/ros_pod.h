@@ -12,6 +12,7 @@
 #include <ros/node_handle.h>
 
 #include "k40t_driver/protocol/result.h"
+#include "k40t_driver/ros/pod_actions.h"
 #include "k40t_driver/ros/command_input.h"
 #include "k40t_driver/ros/pod_diagnostics.h"
 #include "k40t_driver/ros/pod_driver.h"
@@ -44,6 +45,7 @@ class RosPod {
   std::unique_ptr<PodServices> services_;
   std::unique_ptr<CommandInput> commands_;
   std::unique_ptr<ReplayInput> replay_;
+  std::unique_ptr<PodActions> actions_;  // live mode; shut down before the driver stops
 };
 
 }  // namespace k40t::driver
