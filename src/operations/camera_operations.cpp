@@ -119,9 +119,9 @@ Result<p::ReshootResolution> reshoot_resolution(uint16_t width_px, uint16_t heig
       std::to_string(width_px) + "x" + std::to_string(height_px));
 }
 
-Result<PreciseReshoot> PreciseReshoot::create(
-    const PreciseReshootGoal& goal, const std::optional<p::VisibleStatus>& latest_visible,
-    double now_s) {
+Result<PreciseReshoot> PreciseReshoot::create(const PreciseReshootGoal& goal,
+                                              const std::optional<p::VisibleStatus>& latest_visible,
+                                              double now_s) {
   Result<p::ReshootResolution> resolution = reshoot_resolution(goal.width_px, goal.height_px);
   if (!resolution) return resolution.status();
   // 0x000005 reads the value as uint16 x 0.01 mm, so the same scale goes back.
@@ -170,8 +170,8 @@ Result<TfUpgrade> TfUpgrade::create(double timeout_s, double now_s) {
 }
 
 TfUpgrade::TfUpgrade(double timeout_s, double now_s)
-    : tracker_("TF-card upgrade", "TF-card upgrade status 0x02030C 'succeeded'", timeout_s,
-               now_s) {}
+    : tracker_("TF-card upgrade", "TF-card upgrade status 0x02030C 'succeeded'", timeout_s, now_s) {
+}
 
 void TfUpgrade::on_progress(const p::CameraUpgradeStatus& status) {
   // 0x000008 also reports calibrations ("repairing"); only "upgrading" is this operation's.

@@ -119,8 +119,7 @@ Result<GimbalCalibration> GimbalCalibration::create(int kind, double timeout_s, 
 }
 
 GimbalCalibration::GimbalCalibration(CalibrationKind kind, double timeout_s, double now_s)
-    : kind_(kind),
-      tracker_(calibration_name(kind), "0x000008 'succeeded'", timeout_s, now_s) {}
+    : kind_(kind), tracker_(calibration_name(kind), "0x000008 'succeeded'", timeout_s, now_s) {}
 
 void GimbalCalibration::on_status(const p::CameraUpgradeStatus& status) {
   const std::optional<Step> step = calibration_step(status);

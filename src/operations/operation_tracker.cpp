@@ -32,7 +32,10 @@ const char* to_string(Phase phase) {
 
 OperationTracker::OperationTracker(std::string what, std::string awaited, double timeout_s,
                                    double now_s)
-    : what_(std::move(what)), awaited_(std::move(awaited)), timeout_s_(timeout_s), start_s_(now_s) {}
+    : what_(std::move(what)),
+      awaited_(std::move(awaited)),
+      timeout_s_(timeout_s),
+      start_s_(now_s) {}
 
 void OperationTracker::end(Phase phase, std::string reason) {
   phase_ = phase;
@@ -67,11 +70,11 @@ void OperationTracker::cancel(const std::string& how) {
 
 Phase OperationTracker::check(double now_s) {
   if (done() || elapsed_s(now_s) < timeout_s_) return phase_;
-  const std::string last = !acked_             ? "the request was not acknowledged yet"
-                     : status_text_.empty() ? "no status frame received"
-                                            : "last status '" + status_text_ + "'";
-  end(Phase::kTimedOut, what_ + " timed out after " + seconds_text(timeout_s_) + " waiting for " + awaited_ + " (" +
-                            last + ")");
+  const std::string last = !acked_                ? "the request was not acknowledged yet"
+                           : status_text_.empty() ? "no status frame received"
+                                                  : "last status '" + status_text_ + "'";
+  end(Phase::kTimedOut, what_ + " timed out after " + seconds_text(timeout_s_) + " waiting for " +
+                            awaited_ + " (" + last + ")");
   return phase_;
 }
 

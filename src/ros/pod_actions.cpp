@@ -30,7 +30,9 @@ PodActions::PodActions(ros::NodeHandle nh, PodDriver& driver) : driver_(driver) 
   subscribe_status();
 }
 
-PodActions::~PodActions() { shutdown(); }
+PodActions::~PodActions() {
+  shutdown();
+}
 
 void PodActions::start() {
   move_->start();

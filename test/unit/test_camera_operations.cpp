@@ -37,7 +37,7 @@ TEST(StatusSteps, PreciseReshootStatusEveryState) {
   for (int code = 0; code <= 12; ++code) {
     p::PreciseReshootStatus s;
     s.state = static_cast<p::ReshootState>(code);
-    const Phase expected = code == 0                                         ? Phase::kSucceeded
+    const Phase expected = code == 0                                             ? Phase::kSucceeded
                            : (code >= 1 && code <= 3) || code == 5 || code == 12 ? Phase::kRunning
                                                                                  : Phase::kFailed;
     EXPECT_EQ(reshoot_step(s).phase, expected) << "state " << code;

@@ -11,9 +11,15 @@
 namespace k40t::operations {
 namespace {
 
-Step running(const char* text) { return Step{Phase::kRunning, text}; }
-Step succeeded(const char* text) { return Step{Phase::kSucceeded, text}; }
-Step failed(const char* text) { return Step{Phase::kFailed, text}; }
+Step running(const char* text) {
+  return Step{Phase::kRunning, text};
+}
+Step succeeded(const char* text) {
+  return Step{Phase::kSucceeded, text};
+}
+Step failed(const char* text) {
+  return Step{Phase::kFailed, text};
+}
 
 TEST(OperationTracker, SucceedsOnTheEndStatusAfterTheAck) {
   OperationTracker t("SD format", "0x02030D 'done'", 10, 100);

@@ -20,10 +20,10 @@
 namespace k40t::operations {
 
 // What each status frame says (unit-tested one state at a time).
-Step zoom_step(const protocol::ZoomStatus& status);                  // 0x020304
-Step sd_format_step(const protocol::SdFormatStatus& status);         // 0x02030D
-Step reshoot_step(const protocol::PreciseReshootStatus& status);     // 0x020307
-Step tf_upgrade_step(const protocol::TfCardUpgradeStatus& status);   // 0x02030C
+Step zoom_step(const protocol::ZoomStatus& status);                 // 0x020304
+Step sd_format_step(const protocol::SdFormatStatus& status);        // 0x02030D
+Step reshoot_step(const protocol::PreciseReshootStatus& status);    // 0x020307
+Step tf_upgrade_step(const protocol::TfCardUpgradeStatus& status);  // 0x02030C
 
 // 0x000304, ended by 0x020304 "done"; the ratio comes from 0x000005 (5 Hz).
 class ZoomTo {
@@ -66,10 +66,10 @@ class SdFormat {
 // A precise re-shoot in physical units. The focal value (0x000307 bytes 5-6) is the pod's own
 // "accurate shoot focal length" of 0x000005 bytes 13-14, in 0.01 mm like VisibleStatus reads it.
 struct PreciseReshootGoal {
-  uint8_t lens = 0;         // PhotoLensMode code 0..3
-  uint16_t width_px = 0;    // 8000x6000, 4000x3000, 5160x3890 or 5664x4248; 0x0 = 4000x3000
+  uint8_t lens = 0;       // PhotoLensMode code 0..3
+  uint16_t width_px = 0;  // 8000x6000, 4000x3000, 5160x3890 or 5664x4248; 0x0 = 4000x3000
   uint16_t height_px = 0;
-  double zoom_x = 1;        // 1..160
+  double zoom_x = 1;           // 1..160
   double focal_length_mm = 0;  // 0: the latest 0x000005's value
   std::string folder;
   std::string name;

@@ -49,7 +49,7 @@ class OperationTracker {
   Phase phase() const { return phase_; }
   bool done() const { return phase_ != Phase::kRunning; }
   bool acked() const { return acked_; }
-  const std::string& reason() const { return reason_; }  // why it ended; "" while running
+  const std::string& reason() const { return reason_; }            // why it ended; "" while running
   const std::string& status_text() const { return status_text_; }  // latest status ("" if none)
   int reports() const { return reports_; }
   double elapsed_s(double now_s) const { return now_s - start_s_; }

@@ -42,8 +42,8 @@ class OperationServer {
 
   struct Binding {
     std::function<Result<Op>(const Goal&, double now_s)> create;  // validates; nothing sent
-    std::function<void(const Op&, AckHandler)> send;                // the request, asynchronously
-    std::function<void(const Op&, FeedbackMsg&)> feedback;          // the operation's figures
+    std::function<void(const Op&, AckHandler)> send;              // the request, asynchronously
+    std::function<void(const Op&, FeedbackMsg&)> feedback;        // the operation's figures
     std::function<void(const Op&, ResultMsg&)> result;
     // Stops the pod on cancel and timeout and says how; empty where the pod cannot stop.
     std::function<std::string()> stop;
@@ -51,15 +51,15 @@ class OperationServer {
 
   OperationServer(ros::NodeHandle nh, const std::string& name, Binding binding)
       : binding_(std::move(binding)),
-        server_(nh, name, [this](const typename Goal::ConstPtr& goal) { execute(*goal); },
-                false) {}
+        server_(
+            nh, name, [this](const typename Goal::ConstPtr& goal) { execute(*goal); }, false) {}
   ~OperationServer() { shutdown(); }
 
   void start() { server_.start(); }
   void shutdown() {
     stopping_ = true;
     if (auto op = active()) op->update([](Op&) { return 0; });  // wake the goal thread
-    server_.shutdown();  // joins the goal thread
+    server_.shutdown();                                         // joins the goal thread
   }
 
   // Runs f(op) on the running goal's operation, if any (status frames, on the I/O thread).
@@ -122,7 +122,7 @@ class OperationServer {
       }
       if (server_.isPreemptRequested()) {
         const std::string how = server_.isNewGoalAvailable() ? "replaced by a new goal"
-                                : binding_.stop ? binding_.stop()
+                                : binding_.stop              ? binding_.stop()
                                                 : "the pod cannot stop it and carries on";
         op.inspect([&](Op& o) {
           o.tracker().cancel(how);

@@ -55,7 +55,8 @@ class PodActions {
   std::optional<protocol::VisibleStatus> latest_visible_;
 
   std::unique_ptr<OperationServer<k40t_driver::GimbalMoveToAction, operations::GimbalMove>> move_;
-  std::unique_ptr<OperationServer<k40t_driver::GimbalCalibrateAction, operations::GimbalCalibration>>
+  std::unique_ptr<
+      OperationServer<k40t_driver::GimbalCalibrateAction, operations::GimbalCalibration>>
       calibrate_;
   std::unique_ptr<OperationServer<k40t_driver::ZoomToAction, operations::ZoomTo>> zoom_;
   std::unique_ptr<OperationServer<k40t_driver::PreciseReshootAction, operations::PreciseReshoot>>

@@ -12,8 +12,8 @@
 #include <ros/node_handle.h>
 
 #include "k40t_driver/protocol/result.h"
-#include "k40t_driver/ros/pod_actions.h"
 #include "k40t_driver/ros/command_input.h"
+#include "k40t_driver/ros/pod_actions.h"
 #include "k40t_driver/ros/pod_diagnostics.h"
 #include "k40t_driver/ros/pod_driver.h"
 #include "k40t_driver/ros/pod_services.h"
