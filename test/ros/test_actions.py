@@ -13,7 +13,6 @@ import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
 from sensor_msgs.msg import JointState
-from std_srvs.srv import Trigger
 
 from k40t_driver.msg import (Frame, FormatSdAction, FormatSdGoal, GimbalCalibrateAction, GimbalCalibrateGoal,
                              GimbalMoveToAction, GimbalMoveToGoal, PreciseReshootAction, PreciseReshootGoal,
@@ -88,6 +87,20 @@ class Actions(unittest.TestCase):
         unexpected = [i for i in sent if i not in BACKGROUND_IDS]
         self.assertEqual(unexpected, [], "%s sent %s for a bad goal" % (action, ["0x%06X" % i for i in unexpected]))
 
+    def cancel_after(self, action, goal, seconds):
+        """Sends goal, cancels it after `seconds`; returns the final state and result."""
+        run = self.run_goal(action, goal)
+        time.sleep(seconds)
+        self.clients[action].cancel_goal()
+        return run.wait(5.0)
+
+    def assert_cancel_lets_the_pod_carry_on(self, action, goal, seconds):
+        """For what the pod cannot stop: the goal ends PREEMPTED and says the pod carries on."""
+        state, result = self.cancel_after(action, goal, seconds)
+        self.assertEqual(state, GoalStatus.PREEMPTED, result.message)
+        self.assertFalse(result.success)
+        self.assertIn("carries on", result.message)
+
     def joint(self, index):
         return self.joints.latest().position[index]
 
@@ -110,17 +123,14 @@ class Actions(unittest.TestCase):
         self.assertGreater(len(run.feedback), 3)
         pitches = [f.pitch for f in run.feedback if not math.isnan(f.pitch)]
         self.assertLess(pitches[0], pitches[-1])
-        self.assertLess(run.feedback[-1].error, run.feedback[0].error)
+        errors = [f.error for f in run.feedback if not math.isnan(f.error)]
+        self.assertLess(errors[-1], errors[0])
         self.assertTrue(wait_until(lambda: abs(self.joint(PITCH) - 0.5) < 0.02, 2.0))
 
     def test_move_to_cancel_stops_the_gimbal(self):
         self.move_home()
         since = time.time()
-        client = self.clients["gimbal/move_to"]
-        run = self.run_goal("gimbal/move_to", GimbalMoveToGoal(pitch=0.0, yaw=3.0))  # 172 deg: ~9 s
-        time.sleep(1.5)
-        client.cancel_goal()
-        state, result = run.wait(5.0)
+        state, result = self.cancel_after("gimbal/move_to", GimbalMoveToGoal(pitch=0.0, yaw=3.0), 1.5)  # 172 deg: ~9 s
         self.assertEqual(state, GoalStatus.PREEMPTED, result.message)
         self.assertIn("gimbal stopped", result.message)
         self.assertIn(0x000010, self.sent_ids(since))
@@ -167,10 +177,7 @@ class Actions(unittest.TestCase):
 
     def test_zoom_to_cancel_stops_the_zoom(self):
         self.zoom_to(1.0)
-        run = self.run_goal("zoom_to", ZoomToGoal(ratio=160.0))  # ~3.7 s
-        time.sleep(1.0)
-        self.clients["zoom_to"].cancel_goal()
-        state, result = run.wait(5.0)
+        state, result = self.cancel_after("zoom_to", ZoomToGoal(ratio=160.0), 1.0)  # ~3.7 s to get there
         self.assertEqual(state, GoalStatus.PREEMPTED, result.message)
         self.assertIn("zoom stopped", result.message)
         self.assertTrue(wait_until(lambda: not self.visible.latest().zooming, 2.0))
@@ -210,12 +217,7 @@ class Actions(unittest.TestCase):
         self.assertTrue(wait_until(lambda: self.joints.last_arrival() > time.time() - 0.5, 10.0))
 
     def test_format_sd_cancel_and_refusals(self):
-        run = self.run_goal("format_sd", FormatSdGoal())
-        time.sleep(0.5)
-        self.clients["format_sd"].cancel_goal()
-        state, result = run.wait(5.0)
-        self.assertEqual(state, GoalStatus.PREEMPTED, result.message)
-        self.assertIn("carries on", result.message)
+        self.assert_cancel_lets_the_pod_carry_on("format_sd", FormatSdGoal(), 0.5)
         time.sleep(2.5)  # the format ends on its own
         # The pod's refusal comes back as the reason: no card.
         self.sim.ok("sd absent")
@@ -248,12 +250,7 @@ class Actions(unittest.TestCase):
         self.assertTrue(wait_until(lambda: not self.visible.latest().zooming, 8.0))
         time.sleep(1.0)  # that photo is taken once the zoom stops
         self.assertTrue(service("set_zoom", SetZoom)(ratio=1.0).success)
-        run = self.run_goal("precise_reshoot", PreciseReshootGoal(zoom_ratio=1.0))
-        time.sleep(0.3)
-        self.clients["precise_reshoot"].cancel_goal()
-        state, result = run.wait(5.0)
-        self.assertEqual(state, GoalStatus.PREEMPTED, result.message)
-        self.assertIn("carries on", result.message)
+        self.assert_cancel_lets_the_pod_carry_on("precise_reshoot", PreciseReshootGoal(zoom_ratio=1.0), 0.3)
         self.assertTrue(wait_until(lambda: not self.visible.latest().zooming, 8.0))
         time.sleep(1.0)
 
@@ -279,12 +276,7 @@ class Actions(unittest.TestCase):
         self.assertEqual(state, GoalStatus.ABORTED, result.message)
         self.assertIn("refused", result.message)
         time.sleep(max(0.0, started + 11.0 - time.time()))
-        run = self.run_goal("tf_upgrade", TfUpgradeGoal())
-        time.sleep(1.5)
-        self.clients["tf_upgrade"].cancel_goal()
-        state, result = run.wait(5.0)
-        self.assertEqual(state, GoalStatus.PREEMPTED, result.message)
-        self.assertIn("carries on", result.message)
+        self.assert_cancel_lets_the_pod_carry_on("tf_upgrade", TfUpgradeGoal(), 1.5)
         time.sleep(10.0)
         run = self.run_goal("tf_upgrade", TfUpgradeGoal())
         state, result = run.wait(20.0)
@@ -310,12 +302,8 @@ class Actions(unittest.TestCase):
         self.assertEqual(state, GoalStatus.ABORTED, result.message)
         self.assertIn("timed out after 1.0 s", result.message)
         time.sleep(max(0.0, started + 9.0 - time.time()))  # the linear calibration takes 8 s
-        run = self.run_goal("gimbal/calibrate", GimbalCalibrateGoal(kind=GimbalCalibrateGoal.ACCELEROMETER))
-        time.sleep(1.0)
-        self.clients["gimbal/calibrate"].cancel_goal()
-        state, result = run.wait(5.0)
-        self.assertEqual(state, GoalStatus.PREEMPTED, result.message)
-        self.assertIn("carries on", result.message)
+        self.assert_cancel_lets_the_pod_carry_on(
+            "gimbal/calibrate", GimbalCalibrateGoal(kind=GimbalCalibrateGoal.ACCELEROMETER), 1.0)
         time.sleep(6.0)
         self.assert_refused_without_sending("gimbal/calibrate", GimbalCalibrateGoal(kind=5), "kind")
 
