@@ -56,8 +56,9 @@ class OperationServer {
   ~OperationServer() { shutdown(); }
 
   void start() { server_.start(); }
+  // Idempotent: SimpleActionServer::shutdown() asserts that its thread still exists.
   void shutdown() {
-    stopping_ = true;
+    if (stopping_.exchange(true)) return;
     if (auto op = active()) op->update([](Op&) { return 0; });  // wake the goal thread
     server_.shutdown();                                         // joins the goal thread
   }
