@@ -14,7 +14,7 @@ packages=(
   ros-std-srvs libstd-srvs-dev ros-sensor-msgs libsensor-msgs-dev
   python3-tf2-ros python3-tf2-msgs libdiagnostic-aggregator-dev libdiagnostic-aggregator-tools
   socat libssl-dev
-  libactionlib-dev python3-actionlib libactionlib-msgs-dev python3-actionlib-msgs ros-actionlib-msgs
+  libactionlib-dev python3-actionlib libactionlib-msgs-dev python3-actionlib-msgs ros-actionlib-msgs python3-nodelet
   libgstrtspserver-1.0-dev libgstreamer1.0-dev libgstreamer-plugins-base1.0-dev
   gstreamer1.0-plugins-good gstreamer1.0-plugins-bad gstreamer1.0-plugins-ugly gstreamer1.0-libav
   gstreamer1.0-rtsp gstreamer1.0-tools

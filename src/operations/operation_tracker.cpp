@@ -40,14 +40,12 @@ OperationTracker::OperationTracker(std::string what, std::string awaited, double
 void OperationTracker::end(Phase phase, std::string reason) {
   phase_ = phase;
   reason_ = std::move(reason);
-  ++version_;
 }
 
 void OperationTracker::acknowledged(bool ok, const std::string& message) {
   if (done()) return;
   if (!ok) return end(Phase::kFailed, what_ + " refused or not acknowledged: " + message);
   acked_ = true;
-  ++version_;
   if (success_reported_) end(Phase::kSucceeded, what_ + ": " + success_text_);
 }
 
@@ -55,7 +53,6 @@ void OperationTracker::report(const Step& step) {
   if (done()) return;
   ++reports_;
   status_text_ = step.text;
-  ++version_;
   if (step.phase == Phase::kFailed) return end(Phase::kFailed, what_ + " failed: " + step.text);
   if (step.phase != Phase::kSucceeded) return;
   if (acked_) return end(Phase::kSucceeded, what_ + ": " + step.text);

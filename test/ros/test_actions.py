@@ -4,6 +4,9 @@ succeeds with feedback, can be cancelled (the gimbal and the zoom stop; the othe
 while the pod carries on), times out with a readable reason, and refuses bad goals with nothing
 sent on raw/tx."""
 import math
+import os
+import signal
+import subprocess
 import sys
 import time
 import unittest
@@ -12,6 +15,7 @@ import actionlib
 import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
+from nodelet.srv import NodeletUnload
 from sensor_msgs.msg import JointState
 
 from k40t_driver.msg import (Frame, FormatSdAction, FormatSdGoal, GimbalCalibrateAction, GimbalCalibrateGoal,
@@ -169,7 +173,9 @@ class Actions(unittest.TestCase):
         state, result = run.wait(20.0)
         self.assertEqual(state, GoalStatus.SUCCEEDED, result.message)
         self.assertIn("done", result.message)
-        self.assertAlmostEqual(self.visible.latest().zoom_ratio, 8.0, delta=0.05)
+        # The result carries the last 0x000005 before "done" (5 Hz); the next one shows 8.0.
+        self.assertAlmostEqual(result.ratio, 8.0, delta=1.0)
+        self.assertTrue(wait_until(lambda: abs(self.visible.latest().zoom_ratio - 8.0) < 0.05, 1.0))
         ratios = [f.ratio for f in run.feedback if not math.isnan(f.ratio)]
         self.assertGreater(len(ratios), 2, "no ratio feedback")
         self.assertLess(ratios[0], ratios[-1])
@@ -306,6 +312,72 @@ class Actions(unittest.TestCase):
             "gimbal/calibrate", GimbalCalibrateGoal(kind=GimbalCalibrateGoal.ACCELEROMETER), 1.0)
         time.sleep(6.0)
         self.assert_refused_without_sending("gimbal/calibrate", GimbalCalibrateGoal(kind=5), "kind")
+
+    # --- shutdown while a goal runs (last: own simulator and driver in other namespaces) --------
+    def spawn(self, *args):
+        process = subprocess.Popen(list(args), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+
+        def stop():
+            if process.poll() is None:
+                process.send_signal(signal.SIGINT)
+                try:
+                    process.wait(5.0)
+                except subprocess.TimeoutExpired:
+                    process.kill()
+                    process.wait()
+        self.addCleanup(stop)
+        return process
+
+    def start_own_pod(self, tag):
+        """A simulator of its own; returns the driver parameters for it."""
+        link = "/tmp/k40t_actions_%s_%d" % (tag, os.getpid())
+        self.spawn("rosrun", "k40t_driver", "k40t_sim", "--link", "pty:" + link)
+        self.assertTrue(wait_until(lambda: os.path.exists(link), 15.0), "no simulator at " + link)
+        return ["_device:=serial://" + link, "_time_sync_period:=0", "_laser_target_period:=0"]
+
+    def start_long_goal(self, ns):
+        """A TF-card upgrade (10 s in the simulator), running once its first feedback arrives."""
+        client = actionlib.SimpleActionClient(ns + "/tf_upgrade", TfUpgradeAction)
+        self.assertTrue(client.wait_for_server(rospy.Duration(20.0)), "no action server in " + ns)
+        time.sleep(1.0)  # the pod comes online, the driver reads its settings
+        run = Run(client, TfUpgradeGoal())
+        self.assertTrue(wait_until(lambda: run.feedback, 5.0), "the goal never ran")
+        return run
+
+    def test_zz_sigint_during_a_goal_stops_the_node_promptly(self):
+        params = self.start_own_pod("sigint")
+        node = self.spawn("rosrun", "k40t_driver", "k40t_node", "__ns:=/k40t_sigint", "__name:=driver", *params)
+        self.start_long_goal("/k40t_sigint")
+        start = time.time()
+        node.send_signal(signal.SIGINT)
+        code = node.wait(10.0)
+        elapsed = time.time() - start
+        self.assertEqual(code, 0, "k40t_node exited with %d after SIGINT during a goal" % code)
+        self.assertLess(elapsed, 2.0, "k40t_node took %.2f s to stop during a goal" % elapsed)
+
+    def test_zz_unload_during_a_goal_leaves_the_manager_running(self):
+        params = self.start_own_pod("unload")
+        manager = self.spawn("rosrun", "nodelet", "nodelet", "manager", "__ns:=/k40t_unload", "__name:=manager")
+        self.assertTrue(wait_until(lambda: os.path.exists("/proc/%d/task" % manager.pid), 5.0))
+        rospy.wait_for_service("/k40t_unload/manager/unload_nodelet", timeout=15.0)
+        threads_before = len(os.listdir("/proc/%d/task" % manager.pid))
+        self.spawn("rosrun", "nodelet", "nodelet", "load", "k40t_driver/PodNodelet", "/k40t_unload/manager",
+                   "__ns:=/k40t_unload", "__name:=driver", *params)
+        run = self.start_long_goal("/k40t_unload")
+        unload = rospy.ServiceProxy("/k40t_unload/manager/unload_nodelet", NodeletUnload)
+        start = time.time()
+        self.assertTrue(unload(name="/k40t_unload/driver").success)
+        elapsed = time.time() - start
+        self.assertLess(elapsed, 2.0, "unloading took %.2f s during a goal" % elapsed)
+        self.assertIsNone(manager.poll(), "the nodelet manager died on unload")
+        # Every thread the driver and its action servers started is gone.
+        self.assertTrue(wait_until(lambda: len(os.listdir("/proc/%d/task" % manager.pid)) <= threads_before, 3.0),
+                        "threads before load %d, after unload %d" % (
+                            threads_before, len(os.listdir("/proc/%d/task" % manager.pid))))
+        # The running goal was ended, not left hanging (when the result got out before the server went).
+        if run.client.wait_for_result(rospy.Duration(1.0)):
+            self.assertEqual(run.client.get_state(), GoalStatus.ABORTED)
+            self.assertIn("shutting down", run.client.get_result().message)
 
 
 if __name__ == "__main__":

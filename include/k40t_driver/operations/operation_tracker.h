@@ -54,8 +54,6 @@ class OperationTracker {
   int reports() const { return reports_; }
   double elapsed_s(double now_s) const { return now_s - start_s_; }
   double timeout_s() const { return timeout_s_; }
-  // Raised on every change the caller may want to publish (status, ACK, end).
-  uint64_t version() const { return version_; }
 
  private:
   void end(Phase phase, std::string reason);
@@ -71,7 +69,6 @@ class OperationTracker {
   std::string reason_;
   std::string status_text_;
   int reports_ = 0;
-  uint64_t version_ = 0;
 };
 
 // The timeout a goal asks for: 0 means `default_s`; negative or not finite is an error (nothing

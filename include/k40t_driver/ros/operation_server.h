@@ -1,8 +1,8 @@
 // One actionlib action over one ROS-free operation (operations/): the thin glue that turns a goal
 // into the operation, sends its request, feeds it the status frames (through feed(), called by
-// the PodDriver handlers of PodActions) and publishes what its tracker decides: feedback on every
-// change, then SUCCEEDED, ABORTED (refused goal with nothing sent, NACK, failure state, timeout)
-// or PREEMPTED (cancel; the binding's stop() stops what the pod can stop).
+// the PodDriver handlers of PodActions) and publishes what its tracker decides: feedback after
+// every frame or ACK fed to it, then SUCCEEDED, ABORTED (refused goal with nothing sent, NACK,
+// failure state, timeout) or PREEMPTED (cancel; the binding's stop() stops what the pod can stop).
 //
 // Every action's Result has `success`, `message` and `elapsed`, every Feedback `elapsed`; the
 // binding fills the rest.
@@ -134,15 +134,15 @@ class OperationServer {
       const double now_s = steady_seconds();
       const Phase phase = op.inspect([&](Op& o) { return o.tracker().check(now_s); });
       if (phase != Phase::kRunning) break;
-      FeedbackMsg feedback;
-      const uint64_t version = op.inspect([&](Op& o) {
-        binding_.feedback(o, feedback);
-        return o.tracker().version();
-      });
-      if (version != published) {
+      if (seen != published) {  // a status frame, an ACK: whatever fed the operation
+        FeedbackMsg feedback;
+        op.inspect([&](Op& o) {
+          binding_.feedback(o, feedback);
+          return 0;
+        });
         feedback.elapsed = now_s - start_s;
         server_.publishFeedback(feedback);
-        published = version;
+        published = seen;
       }
       seen = op.wait_for_change(seen, std::chrono::milliseconds(100));
     }
