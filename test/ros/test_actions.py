@@ -339,12 +339,13 @@ class Actions(unittest.TestCase):
         self.assertTrue(wait_until(lambda: os.path.exists(link), 15.0), "no simulator at " + link)
         return ["_device:=serial://" + link, "_time_sync_period:=0", "_laser_target_period:=0"]
 
-    def start_long_goal(self, ns):
-        """A TF-card upgrade (10 s in the simulator), running once its first feedback arrives."""
-        client = actionlib.SimpleActionClient(ns + "/tf_upgrade", TfUpgradeAction)
+    def start_long_goal(self, ns, action="tf_upgrade", spec=TfUpgradeAction, goal=None):
+        """A goal that runs for seconds (by default a TF-card upgrade, 10 s in the simulator),
+        running once its first feedback arrives."""
+        client = actionlib.SimpleActionClient(ns + "/" + action, spec)
         self.assertTrue(client.wait_for_server(rospy.Duration(20.0)), "no action server in " + ns)
         time.sleep(1.0)  # the pod comes online, the driver reads its settings
-        run = Run(client, TfUpgradeGoal())
+        run = Run(client, goal if goal is not None else TfUpgradeGoal())
         self.assertTrue(wait_until(lambda: run.feedback, 5.0), "the goal never ran")
         return run
 
@@ -359,11 +360,11 @@ class Actions(unittest.TestCase):
         self.assertEqual(code, 0, "k40t_node exited with %d after SIGINT during a goal" % code)
         self.assertLess(elapsed, 2.0, "k40t_node took %.2f s to stop during a goal" % elapsed)
 
-    def load_goal_unload(self, manager, params):
+    def load_goal_unload(self, manager, params, *goal):
         """Loads the driver into the manager, starts a goal, unloads the driver during it."""
         loader = self.spawn("nodelet", "nodelet", "load", "k40t_driver/PodNodelet", "/k40t_unload/manager",
                             "__ns:=/k40t_unload", "__name:=driver", *params)
-        run = self.start_long_goal("/k40t_unload")
+        run = self.start_long_goal("/k40t_unload", *goal)
         unload = rospy.ServiceProxy("/k40t_unload/manager/unload_nodelet", NodeletUnload)
         start = time.time()
         self.assertTrue(unload(name="/k40t_unload/driver").success)
@@ -391,7 +392,8 @@ class Actions(unittest.TestCase):
         self.load_goal_unload(manager, params)
         time.sleep(1.0)
         after_first = threads()
-        self.load_goal_unload(manager, params)
+        # The simulator's upgrade is still running: this time a long gimbal move.
+        self.load_goal_unload(manager, params, "gimbal/move_to", GimbalMoveToAction, GimbalMoveToGoal(yaw=-3.0))
         self.assertTrue(wait_until(lambda: threads() <= after_first, 3.0),
                         "threads after the first unload %d, after the second %d" % (after_first, threads()))
 
