@@ -10,6 +10,16 @@ from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
 
 DRIVER_NS = "/k40t"
 
+# What the driver writes on its own schedule (pod_driver.h): time sync, answers to the pod's GPS
+# requests, laser-target requests, the gimbal rate dead-man's stop, and the versions and settings
+# it re-reads when the pod comes back after a silence. Not what a service call or a goal sent.
+BACKGROUND_IDS = {0x00030E, 0x010310, 0x000320, 0x000017, 0x000018, 0x000317, 0x000100, 0x000200}
+
+
+def frame_id(data):
+    """The message id of a raw frame (k40t_driver/Frame data)."""
+    return data[7] | data[8] << 8 | data[9] << 16
+
 
 def name(relative):
     """A topic or service name in the driver's namespace."""

@@ -23,19 +23,12 @@ from k40t_driver.msg import (Frame, FormatSdAction, FormatSdGoal, GimbalCalibrat
                              GimbalMoveToAction, GimbalMoveToGoal, PreciseReshootAction, PreciseReshootGoal,
                              TfUpgradeAction, TfUpgradeGoal, VisibleStatus, ZoomToAction, ZoomToGoal)
 from k40t_driver.srv import SetZoom
-from k40t_test_support import Recorder, SimControl, name, service, wait_until
+from k40t_test_support import BACKGROUND_IDS, Recorder, SimControl, frame_id, name, service, wait_until
 
 PKG = "k40t_driver"
 
-# What the driver writes on its own schedule (see test_services.py); not what a goal sent.
-BACKGROUND_IDS = {0x00030E, 0x010310, 0x000320, 0x000017, 0x000018, 0x000317, 0x000100, 0x000200}
-
 YAW = 0  # joint_states order: yaw, roll, pitch
 PITCH = 2
-
-
-def frame_id(data):
-    return data[7] | data[8] << 8 | data[9] << 16
 
 
 class Run:
@@ -105,6 +98,12 @@ class Actions(unittest.TestCase):
         self.assertEqual(state, GoalStatus.PREEMPTED, result.message)
         self.assertFalse(result.success)
         self.assertIn("carries on", result.message)
+
+    def assert_rising_progress(self, run, distinct):
+        """Feedback percentages from 0x000008: at least `distinct` values, never going back."""
+        progress = [f.progress for f in run.feedback if f.progress >= 0]
+        self.assertGreaterEqual(len(set(progress)), distinct, "percentages from 0x000008: %s" % progress)
+        self.assertEqual(progress, sorted(progress))
 
     def joint(self, index):
         return self.joints.latest().position[index]
@@ -289,9 +288,7 @@ class Actions(unittest.TestCase):
         state, result = run.wait(20.0)
         self.assertEqual(state, GoalStatus.SUCCEEDED, result.message)
         self.assertIn("upgrade succeeded", result.message)
-        progress = [f.progress for f in run.feedback if f.progress >= 0]
-        self.assertGreaterEqual(len(set(progress)), 5, "percentages from 0x000008: %s" % progress)
-        self.assertEqual(progress, sorted(progress))
+        self.assert_rising_progress(run, 5)
         self.assert_refused_without_sending("tf_upgrade", TfUpgradeGoal(timeout=-1.0), "timeout")
 
     # --- gimbal/calibrate ------------------------------------------------------------------
@@ -300,9 +297,7 @@ class Actions(unittest.TestCase):
         state, result = run.wait(20.0)
         self.assertEqual(state, GoalStatus.SUCCEEDED, result.message)
         self.assertIn("drift calibration: done", result.message)
-        progress = [f.progress for f in run.feedback if f.progress >= 0]
-        self.assertGreaterEqual(len(set(progress)), 3, "progress from 0x000008: %s" % progress)
-        self.assertEqual(progress, sorted(progress))
+        self.assert_rising_progress(run, 3)
         started = time.time()
         state, result = self.run_goal("gimbal/calibrate",
                                       GimbalCalibrateGoal(kind=GimbalCalibrateGoal.LINEAR, timeout=1.0)).wait(5.0)

@@ -20,19 +20,9 @@ from k40t_driver.srv import (Calibrate, Focus, GetIp, GetSbus, GetVersions, Meas
                              SetAiRecognition, SetAngle, SetArea, SetIp, SetPalette, SetPhotoMode, SetSbus, SetSpot,
                              SetZoom, TakePhoto, Track, Zoom)
 from dynamic_reconfigure.client import Client as ReconfigureClient
-from k40t_test_support import Recorder, SimControl, name, service, wait_until
+from k40t_test_support import BACKGROUND_IDS, Recorder, SimControl, frame_id, name, service, wait_until
 
 PKG = "k40t_driver"
-
-
-# What the driver writes on its own schedule (pod_driver.h): time sync, answers to the pod's GPS
-# requests, laser-target requests, the gimbal rate dead-man's stop, and the versions and settings
-# it re-reads when the pod comes back after a silence.
-BACKGROUND_IDS = {0x00030E, 0x010310, 0x000320, 0x000017, 0x000018, 0x000317, 0x000100, 0x000200}
-
-
-def frame_id(data):
-    return data[7] | data[8] << 8 | data[9] << 16
 
 
 class Services(unittest.TestCase):
