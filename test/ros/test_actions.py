@@ -2,47 +2,28 @@
 """The driver's actions against the simulated pod, through actionlib's SimpleActionClient: each
 succeeds with feedback, can be cancelled (the gimbal and the zoom stop; the others end the goal
 while the pod carries on), times out with a readable reason, and refuses bad goals with nothing
-sent on raw/tx."""
+sent on raw/tx. Shutdown during a goal: test_action_shutdown.py."""
 import math
-import os
-import signal
-import subprocess
 import sys
 import time
 import unittest
 
 import actionlib
-import roslib.packages
 import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
-from nodelet.srv import NodeletUnload
 from sensor_msgs.msg import JointState
 
 from k40t_driver.msg import (Frame, FormatSdAction, FormatSdGoal, GimbalCalibrateAction, GimbalCalibrateGoal,
                              GimbalMoveToAction, GimbalMoveToGoal, PreciseReshootAction, PreciseReshootGoal,
                              TfUpgradeAction, TfUpgradeGoal, VisibleStatus, ZoomToAction, ZoomToGoal)
 from k40t_driver.srv import SetZoom
-from k40t_test_support import BACKGROUND_IDS, Recorder, SimControl, frame_id, name, service, wait_until
+from k40t_test_support import BACKGROUND_IDS, Recorder, Run, SimControl, frame_id, name, service, wait_until
 
 PKG = "k40t_driver"
 
 YAW = 0  # joint_states order: yaw, roll, pitch
 PITCH = 2
-
-
-class Run:
-    """One goal: its feedback, final state and result."""
-
-    def __init__(self, client, goal):
-        self.feedback = []
-        self.client = client
-        client.send_goal(goal, feedback_cb=self.feedback.append)
-
-    def wait(self, timeout):
-        if not self.client.wait_for_result(rospy.Duration(timeout)):
-            raise AssertionError("no result within %.0f s" % timeout)
-        return self.client.get_state(), self.client.get_result()
 
 
 class Actions(unittest.TestCase):
@@ -308,89 +289,6 @@ class Actions(unittest.TestCase):
             "gimbal/calibrate", GimbalCalibrateGoal(kind=GimbalCalibrateGoal.ACCELEROMETER), 1.0)
         time.sleep(6.0)
         self.assert_refused_without_sending("gimbal/calibrate", GimbalCalibrateGoal(kind=5), "kind")
-
-    # --- shutdown while a goal runs (last: own simulator and driver in other namespaces) --------
-    def spawn(self, package, executable, *args):
-        """Starts a program the way roslaunch finds it (catkin's devel space first)."""
-        found = roslib.packages.find_node(package, executable)
-        self.assertTrue(found, "no executable %s in %s" % (executable, package))
-        process = subprocess.Popen([found[0]] + list(args), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-
-        def stop():
-            if process.poll() is None:
-                process.send_signal(signal.SIGINT)
-                try:
-                    process.wait(5.0)
-                except subprocess.TimeoutExpired:
-                    process.kill()
-                    process.wait()
-        self.addCleanup(stop)
-        return process
-
-    def start_own_pod(self, tag):
-        """A simulator of its own; returns the driver parameters for it."""
-        link = "/tmp/k40t_actions_%s_%d" % (tag, os.getpid())
-        self.spawn("k40t_driver", "k40t_sim", "--link", "pty:" + link)
-        self.assertTrue(wait_until(lambda: os.path.exists(link), 15.0), "no simulator at " + link)
-        return ["_device:=serial://" + link, "_time_sync_period:=0", "_laser_target_period:=0"]
-
-    def start_long_goal(self, ns, action="tf_upgrade", spec=TfUpgradeAction, goal=None):
-        """A goal that runs for seconds (by default a TF-card upgrade, 10 s in the simulator),
-        running once its first feedback arrives."""
-        client = actionlib.SimpleActionClient(ns + "/" + action, spec)
-        self.assertTrue(client.wait_for_server(rospy.Duration(20.0)), "no action server in " + ns)
-        time.sleep(1.0)  # the pod comes online, the driver reads its settings
-        run = Run(client, goal if goal is not None else TfUpgradeGoal())
-        self.assertTrue(wait_until(lambda: run.feedback, 5.0), "the goal never ran")
-        return run
-
-    def test_zz_sigint_during_a_goal_stops_the_node_promptly(self):
-        params = self.start_own_pod("sigint")
-        node = self.spawn("k40t_driver", "k40t_node", "__ns:=/k40t_sigint", "__name:=driver", *params)
-        self.start_long_goal("/k40t_sigint")
-        start = time.time()
-        node.send_signal(signal.SIGINT)
-        code = node.wait(10.0)
-        elapsed = time.time() - start
-        self.assertEqual(code, 0, "k40t_node exited with %d after SIGINT during a goal" % code)
-        self.assertLess(elapsed, 2.0, "k40t_node took %.2f s to stop during a goal" % elapsed)
-
-    def load_goal_unload(self, manager, params, *goal):
-        """Loads the driver into the manager, starts a goal, unloads the driver during it."""
-        loader = self.spawn("nodelet", "nodelet", "load", "k40t_driver/PodNodelet", "/k40t_unload/manager",
-                            "__ns:=/k40t_unload", "__name:=driver", *params)
-        run = self.start_long_goal("/k40t_unload", *goal)
-        unload = rospy.ServiceProxy("/k40t_unload/manager/unload_nodelet", NodeletUnload)
-        start = time.time()
-        self.assertTrue(unload(name="/k40t_unload/driver").success)
-        elapsed = time.time() - start
-        self.assertLess(elapsed, 2.0, "unloading took %.2f s during a goal" % elapsed)
-        self.assertIsNone(manager.poll(), "the nodelet manager died on unload")
-        # The loader follows its nodelet (bond), so the next load can take its name.
-        self.assertTrue(wait_until(lambda: loader.poll() is not None, 5.0), "the loader outlived its nodelet")
-        # The running goal was ended, not left hanging (when the result got out before the server went).
-        if run.client.wait_for_result(rospy.Duration(1.0)):
-            self.assertEqual(run.client.get_state(), GoalStatus.ABORTED)
-            self.assertIn("shutting down", run.client.get_result().message)
-
-    def test_zz_unload_during_a_goal_leaves_the_manager_running(self):
-        params = self.start_own_pod("unload")
-        manager = self.spawn("nodelet", "nodelet", "manager", "__ns:=/k40t_unload", "__name:=manager")
-        rospy.wait_for_service("/k40t_unload/manager/unload_nodelet", timeout=15.0)
-
-        def threads():
-            return len(os.listdir("/proc/%d/task" % manager.pid))
-
-        # The first cycle also starts roscpp's process-wide timer threads, which stay; a second
-        # cycle must end with no more threads than the first: every thread the driver and its
-        # action servers start is joined on unload.
-        self.load_goal_unload(manager, params)
-        time.sleep(1.0)
-        after_first = threads()
-        # The simulator's upgrade is still running: this time a long gimbal move.
-        self.load_goal_unload(manager, params, "gimbal/move_to", GimbalMoveToAction, GimbalMoveToGoal(yaw=-3.0))
-        self.assertTrue(wait_until(lambda: threads() <= after_first, 3.0),
-                        "threads after the first unload %d, after the second %d" % (after_first, threads()))
 
 if __name__ == "__main__":
     rostest.rosrun(PKG, "actions", Actions, sys.argv)
