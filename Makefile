@@ -29,4 +29,4 @@ format:
 	find include src tools test bench fuzz -name '*.cpp' -o -name '*.h' | xargs clang-format -i
 
 clean:
-	rm -rf build
+	rm -rf build devel

@@ -12,8 +12,9 @@ packages=(
   libdiagnostic-updater-dev libcv-bridge-dev libopencv-dev python3-dynamic-reconfigure
   libdynamic-reconfigure-config-init-mutex-dev ros-robot-state-publisher
   ros-std-srvs libstd-srvs-dev ros-sensor-msgs libsensor-msgs-dev
+  python3-sensor-msgs python3-diagnostic-msgs python3-std-srvs python3-nodelet
   python3-tf2-ros python3-tf2-msgs libdiagnostic-aggregator-dev libdiagnostic-aggregator-tools
-  socat libssl-dev
+  socat libssl-dev ccache rviz xvfb
   libactionlib-dev python3-actionlib libactionlib-msgs-dev python3-actionlib-msgs ros-actionlib-msgs python3-nodelet
   libgstrtspserver-1.0-dev libgstreamer1.0-dev libgstreamer-plugins-base1.0-dev
   gstreamer1.0-plugins-good gstreamer1.0-plugins-bad gstreamer1.0-plugins-ugly gstreamer1.0-libav

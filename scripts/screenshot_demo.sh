@@ -2,7 +2,7 @@
 # Regenerates docs/images/demo_rviz.png, the README's picture of the demo in rviz: the simulated
 # pod and driver with video (demo.launch rviz:=true) on a virtual X display, the gimbal turned
 # towards the hot object, iron-red palette, split screen (visible and thermal side by side).
-# Needs `apt-get install rviz xvfb` beyond scripts/install_deps.sh, and a ROS build.
+# Needs a ROS build (rviz and xvfb come with scripts/install_deps.sh).
 set -o pipefail
 source "$(dirname "$0")/ros_env.sh"
 port="${SCREENSHOT_ROS_PORT:-11913}"

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Sums the JUnit XML files under a directory (gtest, rostest, launch checks, fuzz) and prints
-one line 'N passed, N failed, N skipped'. Exits 1 if anything failed or errored, or if no test ran.
+the line 'N passed, N failed' last (skipped tests, if any, on the line before). Exits 1 if anything failed or errored, or if no test ran.
 
 Extra failures (steps that crashed before writing XML) are passed as --failed-step NAME."""
 import argparse
@@ -46,7 +46,9 @@ def main():
         failures.append("step failed without a result file: " + step)
     for name in failures:
         print("FAILED:", name)
-    print("%d passed, %d failed, %d skipped" % tuple(total))
+    if total[2]:
+        print("%d skipped" % total[2])
+    print("%d passed, %d failed" % (total[0], total[1]))
     if total[1] > 0 or total[0] == 0:
         sys.exit(1)
 

@@ -18,7 +18,7 @@ out="$K40T_BUILD/bench-video"
 mkdir -p "$out"
 results="$out/results.txt"
 : > "$results"
-sim="$K40T_BUILD/ros/devel/lib/k40t_driver/k40t_video_sim"
+sim="$K40T_DEVEL/lib/k40t_driver/k40t_video_sim"
 
 cpu_ticks() { awk '{print $14 + $15}' "/proc/$1/stat" 2>/dev/null || echo 0; }
 

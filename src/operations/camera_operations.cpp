@@ -100,60 +100,47 @@ SdFormat::SdFormat(double timeout_s, double now_s)
 
 // ---- precise re-shoot ------------------------------------------------------------------------
 
-Result<p::ReshootResolution> reshoot_resolution(uint16_t width_px, uint16_t height_px) {
-  struct Size {
-    uint16_t width, height;
-    p::ReshootResolution code;
-  };
-  static constexpr Size kSizes[] = {{8000, 6000, p::ReshootResolution::k8000x6000},
-                                    {4000, 3000, p::ReshootResolution::k4000x3000},
-                                    {5160, 3890, p::ReshootResolution::k5160x3890},
-                                    {5664, 4248, p::ReshootResolution::k5664x4248}};
-  if (width_px == 0 && height_px == 0) return p::ReshootResolution::k4000x3000;
-  for (const Size& size : kSizes) {
-    if (size.width == width_px && size.height == height_px) return size.code;
+namespace {
+constexpr double kMaxFocalMm = 65535 / kReshootFocalUnitsPerMm;
+}  // namespace
+
+Result<p::PreciseReshootRequest> reshoot_request(const ReshootArgs& args,
+                                                 const std::optional<p::VisibleStatus>& latest) {
+  using R = Result<p::PreciseReshootRequest>;
+  const bool current_zoom = args.zoom_ratio == 0;
+  const bool current_focal = args.focal_length_mm == 0;
+  if ((current_zoom || current_focal) && !latest) {
+    return R::fail(std::string("field '") + (current_zoom ? "zoom_ratio" : "focal_length_mm") +
+                   "' is 0 (the current value) but no visible/status report (0x000005) has come "
+                   "yet: give it explicitly");
   }
-  return Status::fail(
-      "fields 'width_px' x 'height_px' must be 8000x6000, 4000x3000, 5160x3890, 5664x4248 or 0x0 "
-      "(4000x3000), got " +
-      std::to_string(width_px) + "x" + std::to_string(height_px));
+  const double focal_mm =
+      current_focal ? latest->precise_shot_focal_length_mm : args.focal_length_mm;
+  const double zoom = current_zoom ? latest->zoom_x : args.zoom_ratio;
+  const Status range =
+      p::first_failure(p::check_range("zoom_ratio", zoom, 1.0, 160.0, "x"),
+                       p::check_range("focal_length_mm", focal_mm, 0.0, kMaxFocalMm, "mm"));
+  if (!range) return R::fail(range.message());
+  p::PreciseReshootRequest r;
+  r.lens = static_cast<p::PhotoLensMode>(args.lens);
+  r.resolution = static_cast<p::ReshootResolution>(args.resolution);
+  r.zoom_x = zoom;
+  r.focal_length_raw = static_cast<uint16_t>(std::lround(focal_mm * kReshootFocalUnitsPerMm));
+  r.folder = args.folder;
+  r.name = args.name;
+  const Status valid = r.validate();  // lens, resolution, zoom, folder and name
+  if (!valid) return R::fail(valid.message());
+  return r;
 }
 
 Result<PreciseReshoot> PreciseReshoot::create(const PreciseReshootGoal& goal,
                                               const std::optional<p::VisibleStatus>& latest_visible,
                                               double now_s) {
-  Result<p::ReshootResolution> resolution = reshoot_resolution(goal.width_px, goal.height_px);
-  if (!resolution) return resolution.status();
-  // 0x000005 reads the value as uint16 x 0.01 mm, so the same scale goes back.
-  constexpr double kFocalStepMm = 0.01;
-  constexpr double kMaxFocalMm = 65535 * kFocalStepMm;
-  const Status focal_valid =
-      p::check_range("focal_length_mm", goal.focal_length_mm, 0.0, kMaxFocalMm, "mm");
-  if (!focal_valid) return focal_valid;
-  const Status zoom_valid =
-      p::check_range("zoom_ratio", goal.zoom_x, p::kMinZoomRatio, p::kMaxZoomRatio, "x");
-  if (!zoom_valid) return zoom_valid;
-  double focal_mm = goal.focal_length_mm;
-  if (focal_mm == 0) {
-    if (!latest_visible) {
-      return Status::fail(
-          "field 'focal_length_mm' is 0 (take it from visible/status) but no visible status "
-          "(0x000005) has been received yet");
-    }
-    focal_mm = latest_visible->precise_shot_focal_length_mm;
-  }
-  p::PreciseReshootRequest request;
-  request.lens = static_cast<p::PhotoLensMode>(goal.lens);
-  request.resolution = resolution.value();
-  request.zoom_x = goal.zoom_x;
-  request.focal_length_raw = static_cast<uint16_t>(std::lround(focal_mm / kFocalStepMm));
-  request.folder = goal.folder;
-  request.name = goal.name;
-  const Status valid = request.validate();
-  if (!valid) return valid;
+  Result<p::PreciseReshootRequest> request = reshoot_request(goal.args, latest_visible);
+  if (!request) return request.status();
   const TimeoutChoice timeout = choose_timeout(goal.timeout_s, kDefaultTimeoutS);
   if (!timeout.ok) return Status::fail(timeout.error);
-  return PreciseReshoot(request, timeout.seconds, now_s);
+  return PreciseReshoot(request.value(), timeout.seconds, now_s);
 }
 
 PreciseReshoot::PreciseReshoot(const p::PreciseReshootRequest& request, double timeout_s,

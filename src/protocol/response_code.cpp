@@ -21,6 +21,7 @@ const char* to_string(ResponseCode code) {
     case ResponseCode::kCameraOpenFailed: return "camera open failed";
     case ResponseCode::kPhotoInProgress: return "taking photo";
     case ResponseCode::kNoSdCard: return "no SD card";
+    case ResponseCode::kAckUnreadable: return "ACK too short to carry a response code (driver)";
   }
   return nullptr;
 }

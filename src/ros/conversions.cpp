@@ -6,6 +6,8 @@
 #include <tf2/LinearMath/Matrix3x3.h>
 #include <tf2/LinearMath/Quaternion.h>
 
+#include "k40t_driver/ros/code_text.h"
+
 namespace k40t::driver {
 
 namespace {
@@ -18,18 +20,6 @@ std_msgs::Header header(const ros::Time& stamp, const std::string& frame_id = ""
   h.stamp = stamp;
   h.frame_id = frame_id;
   return h;
-}
-
-// The document's words for a code, or "unknown code N".
-template <class E>
-std::string text_of(E value) {
-  const char* name = to_string(value);
-  return name ? name : "unknown code " + std::to_string(static_cast<int>(value));
-}
-
-template <class E>
-uint8_t code_of(E value) {
-  return static_cast<uint8_t>(value);
 }
 
 geometry_msgs::Quaternion to_quaternion(const Rep103Angles& a) {

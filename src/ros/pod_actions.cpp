@@ -129,13 +129,12 @@ void PodActions::create_camera_actions(ros::NodeHandle& nh) {
   ReshootServer::Binding reshoot;
   reshoot.create = [this](const k40t_driver::PreciseReshootGoal& goal, double now_s) {
     ops::PreciseReshootGoal g;
-    g.lens = goal.lens;
-    g.width_px = goal.width_px;
-    g.height_px = goal.height_px;
-    g.zoom_x = goal.zoom_ratio;
-    g.focal_length_mm = goal.focal_length_mm;
-    g.folder = goal.folder;
-    g.name = goal.name;
+    g.args.lens = goal.lens;
+    g.args.resolution = goal.resolution;
+    g.args.zoom_ratio = goal.zoom_ratio;
+    g.args.focal_length_mm = goal.focal_length_mm;
+    g.args.folder = goal.folder;
+    g.args.name = goal.name;
     g.timeout_s = goal.timeout;
     std::lock_guard<std::mutex> lock(visible_mutex_);
     return ops::PreciseReshoot::create(g, latest_visible_, now_s);

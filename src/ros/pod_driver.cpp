@@ -1,5 +1,6 @@
 #include "k40t_driver/ros/pod_driver.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <ctime>
@@ -114,9 +115,12 @@ void PodDriver::stop() {
     stopping_ = true;
   }
   wake_.notify_all();
+  // The session first: a request the online thread is waiting on (the settings read-back) then
+  // completes at once with "session stopped" instead of after its timeouts and retries, and the
+  // requests still to come fail without waiting, so the joins below take no time.
+  if (session_) session_->stop();
   if (timer_thread_.joinable()) timer_thread_.join();
   if (online_thread_.joinable()) online_thread_.join();
-  if (session_) session_->stop();
 }
 
 void PodDriver::replay_frame(const uint8_t* frame, size_t size, StampNs stamp) {
@@ -168,23 +172,37 @@ void PodDriver::handle_link_state(transport::LinkState state, const std::string&
   for (const LinkStateHandler& handler : link_handlers_) handler(state, reason);
 }
 
+namespace {
+// The heights of the GPS answer as the wire can carry them (int16 x0.1 m).
+void clamp_heights(protocol::CameraGpsAck& ack) {
+  constexpr double kLimitM = 3276.7;
+  ack.relative_height_m = std::clamp(ack.relative_height_m, -kLimitM, kLimitM);
+  ack.altitude_m = std::clamp(ack.altitude_m, -kLimitM, kLimitM);
+}
+}  // namespace
+
+// Every GPS request gets an ACK: the position when there is one the wire can carry, otherwise the
+// failure code (the pod tags no position). Counted only once the answer is encoded.
 std::optional<protocol::Payload> PodDriver::answer_gps_request(const FrameView& frame) {
   Result<protocol::CameraGpsRequest> request =
       protocol::decode_payload<protocol::CameraGpsRequest>(frame, codec());
   if (!request) return std::nullopt;  // counted as a decode error by the dispatcher too
+  const VehicleState vehicle = vehicle_state();
   protocol::CameraGpsAck ack = protocol::CameraGpsAck::answering(request.value());
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (!vehicle_.has_fix) {
-      ack.code = protocol::ResponseCode::kFailure;  // "no fix yet": the pod tags no position
-      ++counters_.gps_requests_unanswerable;
-    } else {
-      fill_position(ack, vehicle_);
-      ++counters_.gps_requests_answered;
-    }
+  bool positioned = false;
+  if (vehicle.has_fix) {
+    fill_position(ack, vehicle);
+    if (options_.gps_clamp_height) clamp_heights(ack);
+    positioned = ack.validate().is_ok();
+  }
+  if (!positioned) {
+    ack = protocol::CameraGpsAck::answering(request.value());  // no position: "no fix yet"
+    ack.code = protocol::ResponseCode::kFailure;
   }
   Result<protocol::Payload> payload = protocol::encode_payload(ack, codec());
-  if (!payload) return std::nullopt;
+  if (!payload) return std::nullopt;  // the failure form always encodes; kept for safety
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++(positioned ? counters_.gps_requests_answered : counters_.gps_requests_unanswerable);
   return payload.value();
 }
 
@@ -233,7 +251,7 @@ void PodDriver::send_time_sync() {
     std::lock_guard<std::mutex> lock(mutex_);
     sync.unix_time_ms = unix_time_ms_now() + clock_offset_ms_;
   }
-  sync.tz_minutes_west = 0;  // UTC: the pod's files are named in UTC
+  sync.tz_minutes_west = options_.time_zone_minutes_west;  // the pod names its files in local time
   request_async(sync, [](const AckResult&) {});
   std::lock_guard<std::mutex> lock(mutex_);
   ++counters_.time_syncs_sent;

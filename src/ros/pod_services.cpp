@@ -18,8 +18,6 @@
 #include "k40t_driver/SetAngle.h"
 #include "k40t_driver/SetArea.h"
 #include "k40t_driver/SetIp.h"
-#include "k40t_driver/SetPalette.h"
-#include "k40t_driver/SetPhotoMode.h"
 #include "k40t_driver/SetSbus.h"
 #include "k40t_driver/SetSpot.h"
 #include "k40t_driver/SetZoom.h"
@@ -35,6 +33,8 @@
 #include "k40t_driver/protocol/messages/sbus.h"
 #include "k40t_driver/protocol/messages/thermal.h"
 #include "k40t_driver/ros/pod_queries.h"
+#include "k40t_driver/ros/sbus_write.h"
+#include "k40t_driver/ros/service_support.h"
 
 namespace k40t::driver {
 
@@ -42,18 +42,6 @@ namespace p = protocol;
 using session::AckResult;
 
 namespace {
-
-template <class Res>
-void fill(Res& res, const AckResult& result) {
-  res.success = result.ok();
-  res.message = result.ok() ? "ok" : result.message;
-}
-
-template <class Res>
-void fail(Res& res, const std::string& message) {
-  res.success = false;
-  res.message = message;
-}
 
 // take_photo and record: a lens mode, an action and the file's folder and name.
 template <class Req, class SrvReq, class Action>
@@ -70,13 +58,7 @@ Req file_capture(const SrvReq& req, Action action) {
 
 template <class Srv, class Handler>
 void PodServices::serve(const std::string& name, Handler handler) {
-  using Req = typename Srv::Request;
-  using Res = typename Srv::Response;
-  boost::function<bool(Req&, Res&)> callback = [handler](Req& req, Res& res) {
-    handler(req, res);
-    return true;
-  };
-  servers_.push_back(nh_.advertiseService<Req, Res>(name, callback));
+  advertise_service<Srv>(nh_, servers_, name, std::move(handler));
 }
 
 template <class Req>
@@ -122,13 +104,6 @@ void PodServices::advertise_camera() {
     const p::RecordAction action = req.start ? p::RecordAction::kStart : p::RecordAction::kStop;
     fill(res, driver_.request(file_capture<p::RecordRequest>(req, action)));
   });
-  serve<k40t_driver::SetPhotoMode>("set_photo_mode", [this](auto& req, auto& res) {
-    p::PhotoSettingsRequest r;
-    r.photo_mode = static_cast<p::PhotoMode>(req.mode);
-    r.time_lapse_interval_s = req.timelapse_interval_s;
-    r.burst_count = req.burst_count;
-    fill(res, driver_.request(r));
-  });
   serve<k40t_driver::SetAiRecognition>("ai/recognition", [this](auto& req, auto& res) {
     p::AiRecognitionRequest r;
     if (req.classes.size() > r.classes.size()) {
@@ -166,6 +141,8 @@ void PodServices::advertise_gimbal() {
   serve_trigger("gimbal/look_down", look_down);
   serve_trigger("gimbal/restart", p::GimbalRestartRequest{});
   serve_trigger("gimbal/servo_off", p::GimbalServoOffRequest{});
+  serve_trigger("gimbal/use_flight_controller_attitude",
+                p::GimbalUseFlightControllerAttitudeRequest{});
   serve<k40t_driver::PointAt>("gimbal/point_at", [this](auto& req, auto& res) {
     p::GimbalPointAtRequest r;
     r.lens = static_cast<p::GimbalAimLens>(req.lens);
@@ -189,11 +166,6 @@ void PodServices::advertise_gimbal() {
 }
 
 void PodServices::advertise_thermal_and_laser() {
-  serve<k40t_driver::SetPalette>("set_palette", [this](auto& req, auto& res) {
-    p::ThermalPaletteRequest r;
-    r.palette = static_cast<p::Palette>(req.palette);
-    fill(res, driver_.request(r));
-  });
   serve<k40t_driver::SetSpot>("thermal/set_spot", [this](auto& req, auto& res) {
     p::ThermalSpotRequest r;
     r.x_px = req.x;
@@ -284,13 +256,12 @@ void PodServices::advertise_system() {
     channels.pitch_channel = req.pitch_channel;
     channels.yaw_channel = req.yaw_channel;
     channels.centre_channel = req.centre_channel;
-    // Both are checked before either is sent: half a configuration is worse than none.
-    const Status valid = p::first_failure(range.validate(), channels.validate());
-    if (!valid) return fail(res, valid.message());
-    const AckResult first = driver_.request(range);
-    if (!first.ok()) return fail(res, "SBUS value range: " + first.message);
-    fill(res, driver_.request(channels));
-    if (!res.success) res.message = "SBUS channels: " + res.message;
+    const SbusWriteOutcome outcome = write_sbus(driver_, range, channels);
+    res.success = outcome.success;
+    res.message = outcome.message;
+    res.range_applied = outcome.range_applied;
+    res.channels_applied = outcome.channels_applied;
+    res.power_cycle_needed = outcome.power_cycle_needed;
   });
   serve<k40t_driver::Send>("send", [this](auto& req, auto& res) {
     if (req.id == 0 || req.id > 0x00FFFF) {

@@ -28,6 +28,12 @@ Result<RosPodConfig> read_params(const ros::NodeHandle& private_nh) {
   } else {
     p.fail("ack_byte_order", "must be big or little, got '" + order + "'");
   }
+  const std::string laser_order = p.get<std::string>("laser_status_byte_order", "little");
+  if (Result<protocol::ByteOrder> parsed = protocol::parse_byte_order(laser_order)) {
+    s.codec.laser_status_byte_order = parsed.value();
+  } else {
+    p.fail("laser_status_byte_order", "must be little or big, got '" + laser_order + "'");
+  }
   s.codec.gimbal_address.system = static_cast<uint8_t>(p.number("gimbal_system_id", 3, 0, 255));
   s.codec.camera_address.system = static_cast<uint8_t>(p.number("camera_system_id", 4, 0, 255));
   s.codec.angle_command_scale = static_cast<int>(p.number("angle_command_scale", 100, 1, 1000));
@@ -36,11 +42,13 @@ Result<RosPodConfig> read_params(const ros::NodeHandle& private_nh) {
   s.retries = static_cast<int>(p.number("retries", 2, 0, 10));
 
   d.time_sync_period_s = p.number("time_sync_period", 10.0, 0, 3600);
+  d.time_zone_minutes_west = static_cast<int>(p.number("time_zone_minutes_west", 0, -840, 720));
   d.cmd_rate_timeout_s = p.number("cmd_rate_timeout", 0.5, 0.05, 10);
   const std::string gps = p.get<std::string>("gps_provider", "topics");
   if (gps != "topics" && gps != "none")
     p.fail("gps_provider", "must be topics or none, got '" + gps + "'");
   d.answer_gps_requests = gps == "topics";
+  d.gps_clamp_height = p.get("gps_clamp_height", true);
   d.laser_target_period_s = p.number("laser_target_period", 1.0, 0, 3600);
   d.silence_timeout_s = p.number("silence_timeout", 0.5, 0.1, 60);
 

@@ -32,6 +32,8 @@ RosPod::RosPod(ros::NodeHandle nh, ros::NodeHandle private_nh, const RosPodConfi
   diagnostics_ =
       std::make_unique<PodDiagnostics>(nh, private_nh, *driver_, config_, settings_.get());
   services_ = std::make_unique<PodServices>(nh, *driver_);
+  settings_services_ = std::make_unique<SettingsServices>(nh, settings_.get());
+  job_services_ = std::make_unique<JobServices>(nh, *driver_);
   driver_->on_pod_online([this] { on_pod_online(); });
   driver_->on_link_state([](transport::LinkState state, const std::string& reason) {
     if (state == transport::LinkState::kReconnecting) {

@@ -14,14 +14,38 @@ namespace p = protocol;
 
 namespace {
 
+// `next` is `current` moved into the cfg range [lo, hi] by dynamic_reconfigure's clamp: current
+// was outside it and next is the nearest bound.
+template <class T>
+bool clamped_from(const T& next, const T& current, const T& lo, const T& hi) {
+  if (next == current) return true;
+  if (current < lo) return next == lo;
+  if (hi < current) return next == hi;
+  return false;
+}
+
 // A binding for the parameters `members`, sent together as the request build(config) returns.
 template <class Build, class... Members>
 SettingBinding bind(std::string name, Build build, Members... members) {
-  return SettingBinding{
-      std::move(name),
-      [=](const Config& a, const Config& b) { return ((a.*members != b.*members) || ...); },
-      [=](Config& to, const Config& from) { ((to.*members = from.*members), ...); },
-      [build](PodDriver& driver, const Config& c) { return driver.request(build(c)); }};
+  SettingBinding b;
+  b.name = std::move(name);
+  b.differs = [=](const Config& a, const Config& c) { return ((a.*members != c.*members) || ...); };
+  b.copy = [=](Config& to, const Config& from) { ((to.*members = from.*members), ...); };
+  b.apply = [build](PodDriver& driver, const Config& c) { return driver.request(build(c)); };
+  b.only_clamped = [=](const Config& next, const Config& current) {
+    const Config& lo = Config::__getMin__();
+    const Config& hi = Config::__getMax__();
+    return (clamped_from(next.*members, current.*members, lo.*members, hi.*members) && ...);
+  };
+  return b;
+}
+
+// For one of two settings the pod will not have on at once (3.2.3.9/3.2.3.10 note).
+template <class Member>
+std::function<bool(const Config&, const Config&)> turned_off(Member member) {
+  return [member](const Config& next, const Config& current) {
+    return current.*member && !(next.*member);
+  };
 }
 
 // The common case: one parameter, one request field (enums, switches and levels alike).
@@ -155,6 +179,7 @@ std::vector<SettingBinding> make_bindings() {
         return r;
       },
       &C::strong_light_suppression, &C::strong_light_level));
+  b.back().switches_off = turned_off(&C::strong_light_suppression);
   b.push_back(bind(
       "backlight_compensation",
       [](const C& c) {
@@ -164,6 +189,7 @@ std::vector<SettingBinding> make_bindings() {
         return r;
       },
       &C::backlight_compensation, &C::backlight_level));
+  b.back().switches_off = turned_off(&C::backlight_compensation);
   b.push_back(bind_field<p::VisibleAeLockRequest>("ae_lock", &p::VisibleAeLockRequest::ae_lock_on,
                                                   &C::ae_lock));
   b.push_back(bind_field<p::VisibleMeteringRequest>(
@@ -192,6 +218,13 @@ const std::vector<SettingBinding>& setting_bindings() {
     return b;
   }();
   return bindings;
+}
+
+const SettingBinding* find_binding(const std::string& name) {
+  for (const SettingBinding& binding : setting_bindings()) {
+    if (binding.name == name) return &binding;
+  }
+  return nullptr;
 }
 
 void absorb(Config& c, const p::ThermalSettingsAck& t) {

@@ -1,5 +1,7 @@
 #include "k40t_driver/ros/settings_sync.h"
 
+#include <algorithm>
+
 #include <ros/console.h>
 
 namespace k40t::driver {
@@ -36,27 +38,57 @@ void SettingsSync::on_reconfigure(Config& config, uint32_t) {
     current_ = config;
     return;
   }
+  std::vector<const SettingBinding*> changed;
+  std::vector<const SettingBinding*> clamped;
   for (const SettingBinding& binding : setting_bindings()) {
     if (!binding.differs(config, current_)) continue;
-    const session::AckResult result = binding.apply(driver_, config);
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (result.ok()) {
-      ++state_.changes_applied;
-      state_.last_refusal.clear();
-      binding.copy(current_, config);
-      set_by_user_.insert(binding.name);
-    } else {
-      ++state_.changes_refused;
-      state_.last_refusal = binding.name + ": " + result.message;
-      ROS_WARN("K40T setting %s refused, reverted: %s", binding.name.c_str(),
-               result.message.c_str());
-      binding.copy(config, current_);  // what the server publishes after this callback
-    }
+    (binding.only_clamped(config, current_) ? clamped : changed).push_back(&binding);
   }
+  if (changed.empty()) {
+    changed.swap(clamped);  // the user chose exactly the bound: a real change
+  } else {
+    // dynamic_reconfigure clamped a value the pod reported outside the cfg range while another
+    // parameter changed: keep the pod's value, send nothing for it.
+    for (const SettingBinding* binding : clamped) binding->copy(config, current_);
+  }
+  std::stable_partition(changed.begin(), changed.end(), [&](const SettingBinding* binding) {
+    return binding->switches_off && binding->switches_off(config, current_);
+  });
+  for (const SettingBinding* binding : changed) apply(*binding, config);
   current_ = config;
 }
 
-void SettingsSync::read_from_pod() {
+session::AckResult SettingsSync::apply(const SettingBinding& binding, Config& next) {
+  const session::AckResult result = binding.apply(driver_, next);
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (result.ok()) {
+    ++state_.changes_applied;
+    state_.last_refusal.clear();
+    binding.copy(current_, next);
+    set_by_user_.insert(binding.name);
+  } else {
+    ++state_.changes_refused;
+    state_.last_refusal = binding.name + ": " + result.message;
+    ROS_WARN("K40T setting %s refused, reverted: %s", binding.name.c_str(), result.message.c_str());
+    binding.copy(next, current_);  // what the server publishes after this callback
+  }
+  return result;
+}
+
+session::AckResult SettingsSync::write(const std::string& name,
+                                       const std::function<void(Config&)>& edit) {
+  const SettingBinding* binding = find_binding(name);
+  if (!binding) return session::AckResult::not_sent("no setting named '" + name + "'");
+  boost::recursive_mutex::scoped_lock server_lock(server_mutex_);
+  Config next = current_;
+  edit(next);
+  const session::AckResult result = apply(*binding, next);
+  if (result.ok()) server_->updateConfig(current_);
+  return result;
+}
+
+SettingsState SettingsSync::read_from_pod() {
+  std::lock_guard<std::mutex> one_read(read_mutex_);
   {
     std::lock_guard<std::mutex> lock(mutex_);
     camera_report_.reset();  // wait for reports sent after the pod came online
@@ -95,6 +127,7 @@ void SettingsSync::read_from_pod() {
   state_.read_ok = settings.error.empty();
   state_.read_message = message;
   if (!state_.read_ok) ROS_WARN("K40T settings read-back incomplete: %s", message.c_str());
+  return state_;
 }
 
 SettingsState SettingsSync::state() const {

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "k40t_driver/protocol/messages/laser.h"
+#include "k40t_driver/ros/job_status_conversions.h"
 
 namespace k40t::driver {
 
@@ -45,14 +46,19 @@ TopicPublisher::TopicPublisher(ros::NodeHandle nh, PodDriver& driver, const RosP
   forward(Tag<p::VisibleStatus>{}, visible_status_, "visible/status", plain);
   forward(Tag<p::PhotoStatus>{}, photo_status_, "photo/status", plain);
   forward(Tag<p::RecordStatus>{}, record_status_, "record/status", plain);
+  // The long operations' status frames. Not "<action>/status": actionlib owns those names.
+  forward(Tag<p::ZoomStatus>{}, zoom_status_, "zoom/status", plain);
+  forward(Tag<p::PreciseReshootStatus>{}, reshoot_status_, "reshoot/status", plain);
+  forward(Tag<p::TfCardUpgradeStatus>{}, tf_upgrade_status_, "tf_card_upgrade/status", plain);
+  forward(Tag<p::SdFormatStatus>{}, sd_format_status_, "sd_format/status", plain);
+  forward(Tag<p::CameraUpgradeStatus>{}, camera_upgrade_status_, "camera/upgrade_status", plain);
   forward(Tag<p::ThermalStatus>{}, thermal_stats_, "thermal/stats",
           [ids](const p::ThermalStatus& m, const ros::Time& t) { return to_msg(m, t, ids); });
 
   // Laser range: the single-ranging ACK (whoever asked) and the periodic status frame. A refusal
   // carries no distance and publishes nothing.
   laser_range_ = advertise<sensor_msgs::Range>("laser/range");
-  auto publish_range = [this, ids, limits = config_.range](const p::LaserDistancePayload& m,
-                                                           StampNs s) {
+  auto publish_range = [this, ids, limits = config_.range](const auto& m, StampNs s) {
     if (m.code == p::ResponseCode::kOk)
       laser_range_.publish(to_range(m.distance_m, to_ros(s), ids, limits));
   };

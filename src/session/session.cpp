@@ -22,6 +22,7 @@ AckResult AckResult::not_sent(std::string why) {
 namespace {
 // The pod's request for GPS data, addressed to the flight controller (section 3.2.4.15).
 constexpr protocol::MessageId kGpsRequestId = 0x000310;
+constexpr protocol::MessageId kTargetGpsRequestId = 0x000320;
 constexpr bool is_gimbal_id(protocol::MessageId id) {
   const protocol::MessageId request = protocol::request_id_of(id);
   return request >= 0x000001 && request <= 0x0000FF;
@@ -36,7 +37,7 @@ struct Session::Impl {
         sender(transport.get(), options.crc_coverage, dispatcher),
         tracker(
             [this](protocol::MessageId id, const protocol::Payload& payload, protocol::Address to) {
-              return sender.send(id, payload.data(), payload.size, options.own_address, to);
+              return sender.send(id, payload.data(), payload.size, request_source(id), to);
             },
             options.ack_timeout, options.retries, options.codec) {
     dispatcher.on_frame([this](const protocol::FrameView& frame) { handle_frame(frame); });
@@ -45,6 +46,7 @@ struct Session::Impl {
   void handle_frame(const protocol::FrameView& frame);
   void answer_request(const protocol::FrameView& frame);
   protocol::Address reply_source(const protocol::FrameHeader& request) const;
+  protocol::Address request_source(protocol::MessageId id) const;
   void handle_link_state(transport::LinkState state, const std::string& reason);
 
   const SessionOptions options;
@@ -97,6 +99,13 @@ protocol::Address Session::Impl::reply_source(const protocol::FrameHeader& reque
   if (request.message_id == kGpsRequestId) return options.flight_controller_address;
   if (request.destination.system == 0) return options.own_address;
   return request.destination;
+}
+
+// Section 3.2.4.24: the laser-target request 0x000320 is the flight controller's (0x02/0x01), as
+// the pod's GPS request 0x000310 is answered from there; everything else is the host's.
+protocol::Address Session::Impl::request_source(protocol::MessageId id) const {
+  if (id == kTargetGpsRequestId) return options.flight_controller_address;
+  return options.own_address;
 }
 
 void Session::Impl::handle_link_state(transport::LinkState state, const std::string& reason) {

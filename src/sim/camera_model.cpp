@@ -45,9 +45,33 @@ RecordState record_state_for(SdState card) {
 CameraModel::CameraModel(const CameraConfig& config)
     : config_(config), sd_(config.sd), clock_(config.start_utc_ms) {}
 
+PhotoPixels photo_pixels(uint8_t resolution_code) {
+  switch (resolution_code) {  // sections 3.2.3.3 and 3.2.4.7
+    case 0x14:
+      return {8000, 6000};
+    case 0x15:
+      return {4000, 3000};
+    case 0x16:
+      return {5160, 3890};
+    case 0x17:
+      return {5664, 4248};
+    default:
+      return {};
+  }
+}
+
 double CameraModel::photo_size_mb(uint8_t lens_mode) const {
-  const double visible =
-      visible_.photo_resolution == 0x14 ? config_.photo_8000x6000_mb : config_.photo_4000x3000_mb;
+  return photo_size_mb(lens_mode, visible_.photo_resolution);
+}
+
+double CameraModel::photo_size_mb(uint8_t lens_mode, uint8_t resolution_code) const {
+  // The two resolutions of the photo setting have their own sizes; the re-shoot's others scale
+  // the 4000x3000 size by their pixel count.
+  const PhotoPixels pixels = photo_pixels(resolution_code);
+  const double visible = resolution_code == 0x14 ? config_.photo_8000x6000_mb
+                         : resolution_code == 0x15
+                             ? config_.photo_4000x3000_mb
+                             : config_.photo_4000x3000_mb * pixels.width * pixels.height / 12e6;
   switch (lens_mode) {
     case 1:
       return config_.infrared_photo_mb;
@@ -111,6 +135,7 @@ Outcome CameraModel::take_photo(uint8_t lens_mode, const std::string& folder,
   job.mode = settings_.photo_mode;
   job.folder = folder;
   job.name = name;
+  job.resolution = visible_.photo_resolution;
   job_ = job;
   return Outcome::kOk;
 }
@@ -122,12 +147,19 @@ Outcome CameraModel::stop_photo() {
   return Outcome::kOk;
 }
 
-Outcome CameraModel::precise_reshoot(uint8_t lens_mode, const std::string& folder,
-                                     const std::string& name) {
+Outcome CameraModel::precise_reshoot(uint8_t lens_mode, uint8_t resolution_code,
+                                     const std::string& folder, const std::string& name) {
+  if (photo_pixels(resolution_code).width == 0) return Outcome::kFailure;
   const Outcome refused = take_photo(lens_mode, folder, name);
   if (refused != Outcome::kOk) return refused;
+  const Outcome card = check_card_for(photo_size_mb(lens_mode, resolution_code));
+  if (card != Outcome::kOk) {  // room for a photo at the setting, not at this resolution
+    job_.reset();
+    return card;
+  }
   job_->mode = PhotoMode::kSingle;
   job_->precise = true;
+  job_->resolution = resolution_code;
   return Outcome::kOk;
 }
 
@@ -224,8 +256,13 @@ void CameraModel::finish_job(PhotoState state, EventQueue& events) {
 }
 
 void CameraModel::shoot(ShootingJob& job, EventQueue& events) {
-  const double mb = photo_size_mb(job.lens_mode);
+  const double mb = photo_size_mb(job.lens_mode, job.resolution);
   PhotoRecord photo;
+  if (job.lens_mode != 1) {  // 1: thermal only
+    const PhotoPixels pixels = photo_pixels(job.resolution);
+    photo.width_px = pixels.width;
+    photo.height_px = pixels.height;
+  }
   photo.id = next_photo_id_++;
   const bool numbered = job.mode != PhotoMode::kSingle;
   photo.path = file_path(job.folder, job.name, "IMG", "jpg", numbered ? job.taken + 1 : 0);
@@ -258,7 +295,7 @@ void CameraModel::step_shooting(double dt_s, bool optics_busy, EventQueue& event
                       : job.mode == PhotoMode::kSingle ? 1
                                                        : 0;
   if (planned > 0 && job.taken >= planned) return finish_job(PhotoState::kTaken, events);
-  const Outcome card = check_card_for(photo_size_mb(job.lens_mode));
+  const Outcome card = check_card_for(photo_size_mb(job.lens_mode, job.resolution));
   if (card != Outcome::kOk) return finish_job(photo_state_for(card, sd_.state()), events);
   shoot(job, events);
   switch (job.mode) {

@@ -42,6 +42,17 @@ std::string change_faults(ControlTarget& target, Change change) {
   return "ok " + target.faults().describe();
 }
 
+std::string run_refuse(const Args& args, ControlTarget& target) {
+  const auto id = number(args[0], "ID", 0, 0xFFFF);
+  if (!id) return error(id.error());
+  const auto code = args.size() > 1 ? number(args[1], "CODE", 1, 0xFFFF) : Result<double>(1.0);
+  if (!code) return error(code.error());
+  return change_faults(target, [&](FaultSettings& s) {
+    s.refuse_id = static_cast<uint32_t>(*id);
+    s.refuse_code = static_cast<uint16_t>(*code);
+  });
+}
+
 std::string run_help(const Args&, ControlTarget&) {
   return "ok " + control_help();
 }
@@ -120,6 +131,17 @@ std::string run_sd(const Args& args, ControlTarget& target) {
   return "ok sd " + state;
 }
 
+// The photo resolution the camera holds and reports (0x010200 byte 3): 0x16 (5160x3870) is one
+// the document lists in the ACK but 0x000202 cannot set, so only this reaches it.
+std::string run_photo_resolution(const Args& args, ControlTarget& target) {
+  const auto code = number(args[0], "CODE", 0x14, 0x16);
+  if (!code) return error(code.error());
+  target.with_model([&](PodModel& pod) {
+    pod.camera().visible().photo_resolution = static_cast<uint8_t>(*code);
+  });
+  return "ok photo-resolution " + args[0];
+}
+
 std::string run_self_test(const Args& args, ControlTarget& target) {
   char* end = nullptr;
   const unsigned long mask = std::strtoul(args[0].c_str(), &end, 0);
@@ -143,6 +165,7 @@ std::string run_photos(const Args&, ControlTarget& target) {
     out << " " << pod.camera().photos().size() << " photos";
     for (const PhotoRecord& photo : pod.camera().photos()) {
       out << "; " << photo.path;
+      if (photo.width_px > 0) out << " " << photo.width_px << "x" << photo.height_px;
       if (photo.gps) {
         out << " lat " << photo.gps->latitude_deg << " lon " << photo.gps->longitude_deg << " alt "
             << photo.gps->altitude_m;
@@ -163,11 +186,13 @@ const std::vector<Command>& commands() {
       {"garbage", "garbage RATE [MAX]", 1, 2, run_garbage},
       {"drop-acks", "drop-acks RATE", 1, 1, run_drop_acks},
       {"delay-acks", "delay-acks MS [RATE]", 1, 2, run_delay_acks},
+      {"refuse", "refuse ID [CODE]", 1, 2, run_refuse},
       {"silence", "silence SECONDS", 1, 1, run_silence},
       {"disconnect", "disconnect SECONDS", 1, 1, run_disconnect},
       {"seq-jump", "seq-jump N", 1, 1, run_seq_jump},
       {"sd", "sd absent|insert|fill|normal|abnormal|slow|format-error", 1, 1, run_sd},
       {"self-test", "self-test MASK", 1, 1, run_self_test},
+      {"photo-resolution", "photo-resolution 0x14|0x15|0x16", 1, 1, run_photo_resolution},
       {"ground-height", "ground-height METRES", 1, 1, run_ground_height},
       {"photos", "photos", 0, 0, run_photos},
   };

@@ -109,6 +109,12 @@ bool FaultInjector::drop_ack() {
   return drop;
 }
 
+std::optional<uint16_t> FaultInjector::refusal(uint32_t request_id) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (settings_.refuse_id == 0 || settings_.refuse_id != request_id) return std::nullopt;
+  return settings_.refuse_code;
+}
+
 std::chrono::milliseconds FaultInjector::ack_delay() {
   std::lock_guard<std::mutex> lock(mutex_);
   if (settings_.delay_ack_ms <= 0 || !chance(settings_.delay_ack_rate))
@@ -133,6 +139,7 @@ std::string FaultInjector::describe() const {
   out << "corrupt=" << settings_.corrupt_rate << " garbage=" << settings_.garbage_rate << "/"
       << settings_.garbage_max_bytes << " drop-acks=" << settings_.drop_ack_rate
       << " delay-acks=" << settings_.delay_ack_ms << "ms@" << settings_.delay_ack_rate
+      << " refuse=" << settings_.refuse_id << "/" << settings_.refuse_code
       << " seq-offset=" << int{sequence_offset_}
       << " silenced=" << (SteadyClock::now() < silent_until_ ? 1 : 0)
       << " | corrupted=" << counters_.bytes_corrupted

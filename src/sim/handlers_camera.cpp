@@ -42,8 +42,8 @@ Outcome record(PodModel& pod, const p::RecordRequest& req) {
 }
 
 Outcome precise_reshoot(PodModel& pod, const p::PreciseReshootRequest& req) {
-  const Outcome shot =
-      pod.camera().precise_reshoot(same_code<uint8_t>(req.lens), req.folder, req.name);
+  const Outcome shot = pod.camera().precise_reshoot(
+      same_code<uint8_t>(req.lens), same_code<uint8_t>(req.resolution), req.folder, req.name);
   if (shot != Outcome::kOk) return shot;
   pod.camera().settings().precise_focal_length_raw = req.focal_length_raw;
   // The re-shoot waits for the zoom to reach the magnification asked for.
@@ -144,7 +144,12 @@ void add_camera_handlers(std::vector<HandlerEntry>& out) {
   out.push_back(plain<p::SetIpRequest>(set_ip));
   out.push_back(with_data<p::GetIpRequest>(get_ip));
   out.push_back(plain<p::FocusRequest>([](PodModel& pod, const p::FocusRequest& req) {
-    return pod.zoom().focus(same_code<FocusCommand>(req.command));
+    FocusArea area;
+    area.left = req.area_left_px;
+    area.top = req.area_top_px;
+    area.right = req.area_right_px;
+    area.bottom = req.area_bottom_px;
+    return pod.zoom().focus(same_code<FocusCommand>(req.command), area);
   }));
   out.push_back(store<p::OsdWatermarkRequest>([](PodModel& pod, const p::OsdWatermarkRequest& req) {
     pod.camera().settings().watermark = req.enabled;

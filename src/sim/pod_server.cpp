@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "k40t_driver/protocol/catalogue.h"
+#include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/flight_controller.h"
 #include "k40t_driver/sim/request_handlers.h"
 
@@ -104,7 +105,12 @@ void PodServer::stop() {
 
 std::optional<protocol::Payload> PodServer::on_request(const protocol::FrameView& request) {
   std::optional<protocol::Payload> ack;
-  {
+  if (const std::optional<uint16_t> code = faults_.refusal(request.header.message_id)) {
+    protocol::PlainAck refusal;  // refused: the model never sees the request
+    refusal.code = static_cast<protocol::ResponseCode>(*code);
+    Result<protocol::Payload> encoded = protocol::encode_payload(refusal, options_.codec);
+    if (encoded) ack = encoded.value();
+  } else {
     std::lock_guard<std::mutex> lock(model_mutex_);
     ack = answer_request(pod_, options_.codec, request);
   }
@@ -260,7 +266,12 @@ std::string PodServer::status() {
         << pose.joint_pitch_deg << " zoom " << pod.zoom().zoom() << "x sd "
         << to_string(pod.camera().sd().state()) << " camera "
         << (pod.camera_available() ? "up" : "down") << " recording "
-        << (pod.camera().recording() ? "yes" : "no");
+        << (pod.camera().recording() ? "yes" : "no") << " focus ";
+    if (const auto& area = pod.zoom().focus_area()) {
+      out << "area " << area->left << "," << area->top << "-" << area->right << "," << area->bottom;
+    } else {
+      out << "centre";
+    }
   });
   out << " | faults " << faults_.describe();
   return out.str();

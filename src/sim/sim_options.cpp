@@ -57,6 +57,14 @@ const std::vector<OptionSpec>& option_table() {
          o.codec.ack_byte_order = *order;
          return Status::ok();
        }},
+      {"--laser-status-byte-order", "little|big",
+       "byte order of status frame 0x020406 (default little, section 2.1)",
+       [](SimOptions& o, const std::string& option, const std::string& v) {
+         const auto order = protocol::parse_byte_order(v);
+         if (!order) return Status::fail(option + ": " + order.error());
+         o.codec.laser_status_byte_order = *order;
+         return Status::ok();
+       }},
       {"--angle-scale", "N", "NOTES A4: 0x000012 angles are degrees x N (default 100)",
        [](SimOptions& o, const std::string& option, const std::string& v) {
          const auto n = parse_number(option, v, 1, 1000);

@@ -15,9 +15,11 @@ void ZoomModel::reset() {
   moving_ = announce_start_ = manual_focus_ = false;
   focus_left_s_ = 0;
   auto_focus_after_zoom_ = true;
+  focus_area_.reset();
 }
 
 void ZoomModel::start(double target) {
+  focus_area_.reset();  // a zoom goes back to centre focus (3.2.4.18 note)
   target_ = std::clamp(target, config_.min_zoom, config_.max_zoom);
   if (!moving_) {
     moving_ = true;
@@ -52,13 +54,23 @@ Outcome ZoomModel::zoom_control(ContinuousZoom command) {
   return Outcome::kOk;
 }
 
-Outcome ZoomModel::focus(FocusCommand command) {
+Outcome ZoomModel::focus(FocusCommand command, const FocusArea& area) {
+  constexpr int kStreamWidthPx = 1920;  // the corners are stream pixels (section 3.2.4.18)
+  constexpr int kStreamHeightPx = 1080;
   switch (command) {
-    case FocusCommand::kAuto:
     case FocusCommand::kArea:
+      if (area.left < 0 || area.top < 0 || area.right <= area.left || area.bottom <= area.top ||
+          area.right > kStreamWidthPx || area.bottom > kStreamHeightPx)
+        return Outcome::kFailure;
+      manual_focus_ = false;
+      focus_left_s_ = config_.focus_time_s;
+      focus_area_ = area;
+      break;
+    case FocusCommand::kAuto:
     case FocusCommand::kOneTouch:
       manual_focus_ = false;
       focus_left_s_ = config_.focus_time_s;
+      focus_area_.reset();
       break;
     case FocusCommand::kManualNear:
     case FocusCommand::kManualFar:

@@ -10,16 +10,6 @@ from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
 
 DRIVER_NS = "/k40t"
 
-# What the driver writes on its own schedule (pod_driver.h): time sync, answers to the pod's GPS
-# requests, laser-target requests, the gimbal rate dead-man's stop, and the versions and settings
-# it re-reads when the pod comes back after a silence. Not what a service call or a goal sent.
-BACKGROUND_IDS = {0x00030E, 0x010310, 0x000320, 0x000017, 0x000018, 0x000317, 0x000100, 0x000200}
-
-
-def frame_id(data):
-    """The message id of a raw frame (k40t_driver/Frame data)."""
-    return data[7] | data[8] << 8 | data[9] << 16
-
 
 def name(relative):
     """A topic or service name in the driver's namespace."""
@@ -199,3 +189,32 @@ def service(relative, srv_type, timeout=15.0):
 OK = DiagnosticStatus.OK
 WARN = DiagnosticStatus.WARN
 ERROR = DiagnosticStatus.ERROR
+
+
+# What the driver writes on its own schedule (pod_driver.h): time sync, answers to the pod's GPS
+# requests, laser-target requests, the gimbal rate dead-man's stop, and the versions and settings
+# it re-reads when the pod comes back after a silence.
+BACKGROUND_IDS = {0x00030E, 0x010310, 0x000320, 0x000017, 0x000018, 0x000317, 0x000100, 0x000200}
+
+
+def frame_id(data):
+    """The message id of a raw frame (bytes 7..9, low byte first)."""
+    return data[7] | data[8] << 8 | data[9] << 16
+
+
+def assert_rejected_without_sending(test, raw_tx, srv, srv_type, field, **args):
+    """success=false, the message names `field` and gives a range, and raw/tx (a Recorder) did not
+    move but for the driver's own duties."""
+    proxy = service(srv, srv_type)
+    before = raw_tx.count()
+    response = proxy(**args)
+    time.sleep(0.2)  # anything sent would be on raw/tx by now
+    test.assertFalse(response.success, "%s(%s) accepted" % (srv, args))
+    test.assertIn(field, response.message, "%s: the message does not name '%s': %s" % (srv, field, response.message))
+    test.assertRegex(response.message, r"\d", "%s: the message gives no range: %s" % (srv, response.message))
+    # The driver's own duties may write in that window (more likely on a loaded machine): they
+    # are not the rejected request. Anything else is.
+    sent = [frame_id(f.data) for f in raw_tx.messages()[before:]]
+    unexpected = [i for i in sent if i not in BACKGROUND_IDS]
+    test.assertEqual(unexpected, [], "%s(%s) sent frames %s: %s" % (
+        srv, args, ["0x%06X" % i for i in unexpected], response.message))

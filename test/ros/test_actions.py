@@ -22,6 +22,7 @@ from k40t_test_support import BACKGROUND_IDS, Recorder, Run, SimControl, frame_i
 
 PKG = "k40t_driver"
 
+RES_4000x3000 = PreciseReshootGoal.RESOLUTION_4000x3000
 YAW = 0  # joint_states order: yaw, roll, pitch
 PITCH = 2
 
@@ -218,37 +219,41 @@ class Actions(unittest.TestCase):
 
     # --- precise_reshoot -------------------------------------------------------------------
     def test_precise_reshoot_takes_the_photo(self):
-        run = self.run_goal("precise_reshoot", PreciseReshootGoal(lens=2, width_px=4000, height_px=3000,
-                                                                  zoom_ratio=2.0, folder="acts", name="reshoot"))
+        goal = PreciseReshootGoal(lens=PreciseReshootGoal.LENS_VISIBLE, resolution=PreciseReshootGoal.RESOLUTION_5664x4248,
+                                  zoom_ratio=2.0, folder="acts", name="reshoot")
+        run = self.run_goal("precise_reshoot", goal)
         state, result = run.wait(20.0)
         self.assertEqual(state, GoalStatus.SUCCEEDED, result.message)
         self.assertIn("photo taken", result.message)
         self.assertIn("precise re-shoot in progress", [f.status for f in run.feedback])
-        self.assertIn("acts/reshoot", self.sim.ok("photos"))
+        # The simulator took it at the goal's resolution (its byte 2).
+        self.assertIn("acts/reshoot.jpg 5664x4248", self.sim.ok("photos"))
 
     def test_precise_reshoot_waits_for_the_zoom_times_out_and_cancels(self):
         # The pod shoots once the zoom is still: a long zoom keeps the re-shoot waiting.
         self.assertTrue(service("set_zoom", SetZoom)(ratio=1.0).success)
         self.assertTrue(wait_until(lambda: not self.visible.latest().zooming, 8.0))
         self.assertTrue(service("set_zoom", SetZoom)(ratio=160.0).success)
-        state, result = self.run_goal("precise_reshoot", PreciseReshootGoal(zoom_ratio=1.0, timeout=0.5)).wait(5.0)
+        state, result = self.run_goal("precise_reshoot", PreciseReshootGoal(resolution=RES_4000x3000, zoom_ratio=1.0,
+                                                                               timeout=0.5)).wait(5.0)
         self.assertEqual(state, GoalStatus.ABORTED, result.message)
         self.assertIn("timed out after 0.5 s", result.message)
         self.assertTrue(wait_until(lambda: not self.visible.latest().zooming, 8.0))
         time.sleep(1.0)  # that photo is taken once the zoom stops
         self.assertTrue(service("set_zoom", SetZoom)(ratio=1.0).success)
-        self.assert_cancel_lets_the_pod_carry_on("precise_reshoot", PreciseReshootGoal(zoom_ratio=1.0), 0.3)
+        self.assert_cancel_lets_the_pod_carry_on("precise_reshoot", PreciseReshootGoal(resolution=RES_4000x3000), 0.3)
         self.assertTrue(wait_until(lambda: not self.visible.latest().zooming, 8.0))
         time.sleep(1.0)
 
     def test_precise_reshoot_refuses_bad_goals(self):
-        self.assert_refused_without_sending("precise_reshoot", PreciseReshootGoal(width_px=1920, height_px=1080),
-                                            "width_px")
-        self.assert_refused_without_sending("precise_reshoot", PreciseReshootGoal(zoom_ratio=170.0), "zoom_ratio")
-        self.assert_refused_without_sending("precise_reshoot", PreciseReshootGoal(zoom_ratio=1.0, lens=9), "lens")
+        self.assert_refused_without_sending("precise_reshoot", PreciseReshootGoal(resolution=0x18), "resolution")
+        self.assert_refused_without_sending("precise_reshoot", PreciseReshootGoal(resolution=RES_4000x3000, zoom_ratio=170.0),
+                                            "zoom_ratio")
+        self.assert_refused_without_sending("precise_reshoot", PreciseReshootGoal(resolution=RES_4000x3000, lens=9), "lens")
         self.assert_refused_without_sending("precise_reshoot",
-                                            PreciseReshootGoal(zoom_ratio=1.0, focal_length_mm=-1.0), "focal_length_mm")
-        self.assert_refused_without_sending("precise_reshoot", PreciseReshootGoal(zoom_ratio=1.0, name="n" * 33),
+                                            PreciseReshootGoal(resolution=RES_4000x3000, focal_length_mm=-1.0),
+                                            "focal_length_mm")
+        self.assert_refused_without_sending("precise_reshoot", PreciseReshootGoal(resolution=RES_4000x3000, name="n" * 33),
                                             "name")
 
     # --- tf_upgrade ------------------------------------------------------------------------

@@ -544,7 +544,9 @@ CodecOptions little_acks() {
   return o;
 }
 
-TEST(CameraMessages, IpAckFollowsAckByteOrder) {
+TEST(CameraMessages, IpAckOctetsAreBytesWhateverTheAckByteOrder) {
+  // Section 3.2.4.17: Byte1-2 response code, then each octet a byte of its own, first octet
+  // first. ack_byte_order orders the code only: 192.168.144.64 is C0 A8 90 40 either way.
   const GetIpAck ack{ResponseCode::kFailure, "192.168.144.64", "255.255.255.0", "192.168.144.1"};
   Result<Payload> big = encode_payload(ack);
   Result<Payload> little = encode_payload(ack, little_acks());
@@ -552,7 +554,15 @@ TEST(CameraMessages, IpAckFollowsAckByteOrder) {
   const std::vector<uint8_t> big_bytes(big->bytes.begin(), big->bytes.begin() + 6);
   const std::vector<uint8_t> little_bytes(little->bytes.begin(), little->bytes.begin() + 6);
   EXPECT_EQ(big_bytes, (std::vector<uint8_t>{0x00, 0x01, 0xC0, 0xA8, 0x90, 0x40}));
-  EXPECT_EQ(little_bytes, (std::vector<uint8_t>{0x01, 0x00, 0x40, 0x90, 0xA8, 0xC0}));
+  EXPECT_EQ(little_bytes, (std::vector<uint8_t>{0x01, 0x00, 0xC0, 0xA8, 0x90, 0x40}));
+  // And read back from a little-endian pod: 00 00 OK, 0A 00 00 07 = 10.0.0.7, not 7.0.0.10.
+  const uint8_t wire[14] = {0x00, 0x00, 0x0A, 0x00, 0x00, 0x07, 0xFF,
+                            0xFF, 0x00, 0x00, 0x0A, 0x00, 0x00, 0x01};
+  Result<GetIpAck> read = decode_payload<GetIpAck>(wire, sizeof(wire), little_acks());
+  ASSERT_TRUE(read) << read.error();
+  EXPECT_EQ(read->address, "10.0.0.7");
+  EXPECT_EQ(read->netmask, "255.255.0.0");
+  EXPECT_EQ(read->gateway, "10.0.0.1");
 }
 
 TEST(CameraMessages, TargetGpsAckDataIsLowByteFirstWhateverTheAckByteOrder) {

@@ -90,69 +90,52 @@ TEST(SdFormat, TimeoutChoice) {
   EXPECT_FALSE(SdFormat::create(-3, 0));
 }
 
-TEST(ReshootResolution, PixelSizesToTheDocumentsCodes) {
-  // Section 3.2.4.7 byte 2: 0x14 8000*6000, 0x15 4000*3000, 0x16 5160*3890, 0x17 5664*4248.
-  EXPECT_EQ(static_cast<int>(reshoot_resolution(8000, 6000).value()), 0x14);
-  EXPECT_EQ(static_cast<int>(reshoot_resolution(4000, 3000).value()), 0x15);
-  EXPECT_EQ(static_cast<int>(reshoot_resolution(5160, 3890).value()), 0x16);
-  EXPECT_EQ(static_cast<int>(reshoot_resolution(5664, 4248).value()), 0x17);
-  EXPECT_EQ(static_cast<int>(reshoot_resolution(0, 0).value()), 0x15);
-  const Result<p::ReshootResolution> bad = reshoot_resolution(1920, 1080);
-  ASSERT_FALSE(bad);
-  EXPECT_NE(bad.error().find("got 1920x1080"), std::string::npos);
-}
-
-TEST(PreciseReshoot, FocalValueFromTheLatestVisibleStatus) {
+// reshoot_request itself (defaults from 0x000005, ranges): test/ros/unit/test_reshoot_request.cpp.
+TEST(PreciseReshoot, RequestFromTheArgsAndTheLatestVisibleStatus) {
   p::VisibleStatus visible;
+  visible.zoom_x = 6.5;
   visible.precise_shot_focal_length_mm = 12.34;  // bytes 13-14 = 1234 (0.01 mm)
   PreciseReshootGoal goal;
-  goal.lens = 2;
-  goal.width_px = 8000;
-  goal.height_px = 6000;
-  goal.zoom_x = 5.5;
-  goal.folder = "survey";
-  goal.name = "pole_7";
+  goal.args.lens = 2;
+  goal.args.resolution = 0x14;  // section 3.2.4.7 byte 2: 8000*6000
+  goal.args.folder = "survey";
+  goal.args.name = "pole_7";
   Result<PreciseReshoot> shot = PreciseReshoot::create(goal, visible, 0);
   ASSERT_TRUE(shot) << shot.error();
   const p::PreciseReshootRequest& r = shot->request();
   EXPECT_EQ(r.lens, p::PhotoLensMode::kVisible);
   EXPECT_EQ(r.resolution, p::ReshootResolution::k8000x6000);
-  EXPECT_EQ(r.zoom_x, 5.5);
+  EXPECT_EQ(r.zoom_x, 6.5);
   EXPECT_EQ(r.focal_length_raw, 1234);
   EXPECT_EQ(r.folder, "survey");
-  EXPECT_EQ(r.name, "pole_7");
-  // A focal length in the goal wins over the status.
-  goal.focal_length_mm = 20.05;
-  EXPECT_EQ(PreciseReshoot::create(goal, visible, 0)->request().focal_length_raw, 2005);
+  EXPECT_EQ(shot->tracker().timeout_s(), PreciseReshoot::kDefaultTimeoutS);
 }
 
 TEST(PreciseReshoot, RefusesBadGoals) {
   p::VisibleStatus visible;
   PreciseReshootGoal goal;
+  goal.args.resolution = 0x15;
   const Result<PreciseReshoot> no_status = PreciseReshoot::create(goal, std::nullopt, 0);
   ASSERT_FALSE(no_status);
-  EXPECT_NE(no_status.error().find("no visible status (0x000005)"), std::string::npos);
-  goal.lens = 4;
+  EXPECT_NE(no_status.error().find("0x000005"), std::string::npos);
+  goal.args.zoom_ratio = 2;
+  goal.args.focal_length_mm = 10;
+  EXPECT_TRUE(PreciseReshoot::create(goal, std::nullopt, 0));  // nothing taken from the report
+  goal.timeout_s = -1;
+  const Result<PreciseReshoot> timeout = PreciseReshoot::create(goal, visible, 0);
+  ASSERT_FALSE(timeout);
+  EXPECT_NE(timeout.error().find("field 'timeout'"), std::string::npos);
+  goal.timeout_s = 0;
+  goal.args.resolution = 0x18;
   EXPECT_FALSE(PreciseReshoot::create(goal, visible, 0));
-  goal.lens = 0;
-  goal.zoom_x = 0;
-  EXPECT_FALSE(PreciseReshoot::create(goal, visible, 0));
-  goal.zoom_x = 1;
-  goal.focal_length_mm = -1;
-  EXPECT_FALSE(PreciseReshoot::create(goal, visible, 0));
-  goal.focal_length_mm = 0;
-  goal.name = std::string(33, 'x');  // 32 bytes at most
-  EXPECT_FALSE(PreciseReshoot::create(goal, visible, 0));
-  goal.name = "ok";
-  goal.width_px = 4000;  // height missing
-  EXPECT_FALSE(PreciseReshoot::create(goal, visible, 0));
-  goal.width_px = 0;
-  EXPECT_TRUE(PreciseReshoot::create(goal, visible, 0));
 }
 
 TEST(PreciseReshoot, EndsOnTakenOrAFailureState) {
   p::VisibleStatus visible;
-  Result<PreciseReshoot> shot = PreciseReshoot::create(PreciseReshootGoal{}, visible, 0);
+  visible.zoom_x = 1;
+  PreciseReshootGoal goal;
+  goal.args.resolution = 0x15;
+  Result<PreciseReshoot> shot = PreciseReshoot::create(goal, visible, 0);
   ASSERT_TRUE(shot);
   shot->tracker().acknowledged(true, "ok");
   p::PreciseReshootStatus status;

@@ -65,12 +65,34 @@ TEST(LaserGolden, PeriodicRangingRequestAckAndStatusFrames) {
   EXPECT_EQ(no_return.distance_m, 0);
 }
 
-TEST(LaserStatus, ByteOrderFollowsTheAckOption) {
-  // 876 = 0x036C low byte first, for a pod that writes ACK-like payloads little-endian.
-  auto s = decode_bytes<LaserPeriodicRangeStatus>({0x00, 0x00, 0x6C, 0x03}, little_endian_acks());
+TEST(LaserGolden, PeriodicRangeIsLowByteFirstLikeEveryStatusFrame) {
+  // Section 2.1: every non-ACK payload is low byte first; 123.4 m = 1234 = 0x04D2 -> D2 04. Read
+  // high byte first (the ACK's default order) these bytes would be 5376.4 m.
+  const auto status =
+      decode_golden<LaserPeriodicRangeStatus>(golden(kGolden, "laser_periodic_range_status", 2));
+  EXPECT_DOUBLE_EQ(status.distance_m, 123.4);
+  expect_encodes_to(status, golden(kGolden, "laser_periodic_range_status", 2));
+}
+
+TEST(LaserStatus, StatusFrameOrderIsItsOwnOptionAndTheAckKeepsAckByteOrder) {
+  // Default: the status frame little-endian, the ACK big-endian (NOTES A2).
+  auto s = decode_bytes<LaserPeriodicRangeStatus>({0x00, 0x00, 0x6C, 0x03});
   ASSERT_TRUE(s);
   EXPECT_DOUBLE_EQ(s->distance_m, 87.6);
-  auto a = decode_bytes<LaserRangeAck>({0x00, 0x00, 0x6C, 0x03}, little_endian_acks());
+  auto a = decode_bytes<LaserRangeAck>({0x00, 0x00, 0x03, 0x6C});
+  ASSERT_TRUE(a);
+  EXPECT_DOUBLE_EQ(a->distance_m, 87.6);
+  // ack_byte_order does not move the status frame...
+  s = decode_bytes<LaserPeriodicRangeStatus>({0x00, 0x00, 0x6C, 0x03}, little_endian_acks());
+  ASSERT_TRUE(s);
+  EXPECT_DOUBLE_EQ(s->distance_m, 87.6);
+  // ...laser_status_byte_order does, for a pod that builds it with its ACK routine.
+  CodecOptions big_status;
+  big_status.laser_status_byte_order = ByteOrder::kBig;
+  s = decode_bytes<LaserPeriodicRangeStatus>({0x00, 0x00, 0x03, 0x6C}, big_status);
+  ASSERT_TRUE(s);
+  EXPECT_DOUBLE_EQ(s->distance_m, 87.6);
+  a = decode_bytes<LaserRangeAck>({0x00, 0x00, 0x03, 0x6C}, big_status);
   ASSERT_TRUE(a);
   EXPECT_DOUBLE_EQ(a->distance_m, 87.6);
 }

@@ -19,6 +19,7 @@
 #include "k40t_driver/sim/control_server.h"
 #include "k40t_driver/sim/fault_injector.h"
 #include "k40t_driver/sim/faulty_transport.h"
+#include "sim_control_target.h"
 
 namespace k40t::sim {
 namespace {
@@ -154,17 +155,7 @@ TEST(SimFaults, TheSameSeedMisbehavesTheSameWay) {
 }
 
 // ---- control language -----------------------------------------------------------------------
-class FakeTarget : public ControlTarget {
- public:
-  FaultInjector& faults() override { return faults_; }
-  void disconnect_for(std::chrono::milliseconds duration) override { disconnected_for = duration; }
-  void with_model(const std::function<void(PodModel&)>& change) override { change(pod); }
-  std::string status() override { return "fine"; }
-
-  FaultInjector faults_;
-  PodModel pod;
-  std::chrono::milliseconds disconnected_for{-1};
-};
+using testing::FakeTarget;
 
 TEST(SimControl, CommandsChangeTheFaults) {
   FakeTarget target;

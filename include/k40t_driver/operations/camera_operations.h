@@ -63,20 +63,28 @@ class SdFormat {
   OperationTracker tracker_;
 };
 
-// A precise re-shoot in physical units. The focal value (0x000307 bytes 5-6) is the pod's own
-// "accurate shoot focal length" of 0x000005 bytes 13-14, in 0.01 mm like VisibleStatus reads it.
-struct PreciseReshootGoal {
-  uint8_t lens = 0;       // PhotoLensMode code 0..3
-  uint16_t width_px = 0;  // 8000x6000, 4000x3000, 5160x3890 or 5664x4248; 0x0 = 4000x3000
-  uint16_t height_px = 0;
-  double zoom_x = 1;           // 1..160
-  double focal_length_mm = 0;  // 0: the latest 0x000005's value
+// A precise re-shoot in physical units, shared by the precise_reshoot service and action. 0 for
+// the zoom or the focal value means "the current one": the latest visible report (0x000005).
+struct ReshootArgs {
+  uint8_t lens = 0;            // PhotoLensMode code 0..3
+  uint8_t resolution = 0;      // ReshootResolution code 0x14..0x17
+  double zoom_ratio = 0;       // 1..160; 0: the latest 0x000005's
+  double focal_length_mm = 0;  // 0..655.35; 0: the latest 0x000005's "accurate shoot focal length"
   std::string folder;
   std::string name;
+};
+// The focal value of 0x000307 bytes 5-6 is what 0x000005 bytes 13-14 report (the document gives
+// neither a unit; both are read as 0.01 mm, docs/protocol/camera.md), so a value copied from
+// visible/status goes back to the pod as the very same uint16.
+constexpr double kReshootFocalUnitsPerMm = 100.0;
+// -> 0x000307; `latest` is the newest visible report. Fails naming the field and its range.
+Result<protocol::PreciseReshootRequest> reshoot_request(
+    const ReshootArgs& args, const std::optional<protocol::VisibleStatus>& latest);
+
+struct PreciseReshootGoal {
+  ReshootArgs args;
   double timeout_s = 0;
 };
-
-Result<protocol::ReshootResolution> reshoot_resolution(uint16_t width_px, uint16_t height_px);
 
 // 0x000307, ended by 0x020307 "done" (state 0) or a failure state.
 class PreciseReshoot {

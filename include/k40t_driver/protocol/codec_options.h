@@ -19,14 +19,20 @@ enum class CrcCoverage {
 };
 
 const char* to_string(CrcCoverage coverage);
-Result<CrcCoverage> parse_crc_coverage(const std::string& text);  // "auto" | "header_excluded" | "whole_frame"
-Result<ByteOrder> parse_byte_order(const std::string& text);       // "big" | "little"
+Result<CrcCoverage> parse_crc_coverage(
+    const std::string& text);  // "auto" | "header_excluded" | "whole_frame"
+Result<ByteOrder> parse_byte_order(const std::string& text);  // "big" | "little"
 const char* to_string(ByteOrder order);
 
 struct CodecOptions {
   // NOTES A2: multi-byte fields of ACK payloads (response code included). Sections that say
   // "low byte first" for their ACK (0x010320) ignore this.
   ByteOrder ack_byte_order = ByteOrder::kBig;
+  // Status frame 0x020406 (periodic laser range). Section 2.1 makes every non-ACK payload low
+  // byte first, and 0x020406 is a status frame; its payload merely looks like ACK 0x010400's.
+  // Decision (docs/protocol/gimbal_laser_sbus.md): little, a parameter in case a pod builds the
+  // frame with its ACK routine.
+  ByteOrder laser_status_byte_order = ByteOrder::kLittle;
   // NOTES A4: the 16-bit angle magnitudes of 0x000012 are degrees x angle_command_scale.
   int angle_command_scale = 100;
   // NOTES A3: where requests are addressed.

@@ -22,11 +22,16 @@ enum class ResponseCode : uint16_t {
   kCameraOpenFailed = 0x0202,
   kPhotoInProgress = 0x0203,
   kNoSdCard = 0x0204,
+  // Not the pod's: the driver could not read a response code (an ACK payload under 2 bytes).
+  // Outside the document's list so that a local decode error never reads as the pod's 0x0007.
+  kAckUnreadable = 0xFFFF,
 };
 
 // The document's text for the code; codes it does not list get "unknown response code 0xNNNN".
 std::string response_text(uint16_t code);
-inline std::string response_text(ResponseCode code) { return response_text(static_cast<uint16_t>(code)); }
+inline std::string response_text(ResponseCode code) {
+  return response_text(static_cast<uint16_t>(code));
+}
 // For the field visitor: a name for every listed code, nullptr for others.
 const char* to_string(ResponseCode code);
 

@@ -24,10 +24,17 @@ struct DriverOptions {
 
   // Seconds between time syncs (0x00030E, NOTES A8); 0 disables.
   double time_sync_period_s = 10.0;
+  // The time zone sent with every time sync (0x00030E, struct timezone's tz_minuteswest): the pod
+  // names its files in local time. 0 = UTC; UTC+8 is -480. -840..720.
+  int time_zone_minutes_west = 0;
   // gimbal/cmd_rate dead-man: no rate command for this long stops the gimbal.
   double cmd_rate_timeout_s = 0.5;
   // Answer the pod's GPS requests (0x000310) from set_vehicle_state().
   bool answer_gps_requests = true;
+  // The GPS answer carries the heights as int16 x0.1 m (-3276.8..3276.7 m, section 3.2.4.15).
+  // true: a height beyond that is sent as the nearest limit (the position still tags the photo);
+  // false: such a request is answered with the failure code and no position.
+  bool gps_clamp_height = true;
   // Seconds between laser-target requests (0x000320); 0 disables. Needs a vehicle fix.
   double laser_target_period_s = 1.0;
   // Seconds without a frame before the pod counts as silent; the next frame is a "pod online"

@@ -46,7 +46,8 @@ struct DriverStats {
   uint64_t pod_online_events = 0;
   uint64_t time_syncs_sent = 0;
   uint64_t gps_requests_answered = 0;
-  uint64_t gps_requests_unanswerable = 0;  // no fix yet: answered with a failure code
+  uint64_t gps_requests_unanswerable = 0;  // no fix yet, or a position the wire cannot carry:
+                                           // answered with the failure code
   uint64_t deadman_stops = 0;
   protocol::CrcCoverage crc_coverage = protocol::CrcCoverage::kAuto;  // locked coverage
 };

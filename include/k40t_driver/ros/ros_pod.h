@@ -13,12 +13,14 @@
 
 #include "k40t_driver/protocol/result.h"
 #include "k40t_driver/ros/command_input.h"
+#include "k40t_driver/ros/job_services.h"
 #include "k40t_driver/ros/pod_actions.h"
 #include "k40t_driver/ros/pod_diagnostics.h"
 #include "k40t_driver/ros/pod_driver.h"
 #include "k40t_driver/ros/pod_services.h"
 #include "k40t_driver/ros/replay_input.h"
 #include "k40t_driver/ros/ros_params.h"
+#include "k40t_driver/ros/settings_services.h"
 #include "k40t_driver/ros/settings_sync.h"
 #include "k40t_driver/ros/topic_publisher.h"
 
@@ -43,6 +45,8 @@ class RosPod {
   std::unique_ptr<SettingsSync> settings_;
   std::unique_ptr<PodDiagnostics> diagnostics_;
   std::unique_ptr<PodServices> services_;
+  std::unique_ptr<SettingsServices> settings_services_;
+  std::unique_ptr<JobServices> job_services_;
   std::unique_ptr<CommandInput> commands_;
   std::unique_ptr<ReplayInput> replay_;
   std::unique_ptr<PodActions> actions_;  // live mode; shut down before the driver stops

@@ -39,10 +39,17 @@ struct SettingBinding {
   std::function<bool(const Config&, const Config&)> differs;           // any of its fields changed
   std::function<void(Config& to, const Config& from)> copy;            // copy its fields
   std::function<session::AckResult(PodDriver&, const Config&)> apply;  // send the request
+  // The change from `current` to `next` is only dynamic_reconfigure's clamping: each changed
+  // field was outside the cfg range (as the pod reported it) and is now the nearest bound.
+  std::function<bool(const Config& next, const Config& current)> only_clamped;
+  // The change switches this setting off: sent before the others, so that one of two settings the
+  // pod will not have on together (strong light, backlight) is off before the other goes on.
+  std::function<bool(const Config& next, const Config& current)> switches_off;
   // false: the pod cannot report it (dial speeds, periodic ranging, overlay); a value set through
   // reconfigure is sent again after each read-back, so that a rebooted pod resumes it.
   bool readable = true;
 };
+const SettingBinding* find_binding(const std::string& name);
 const std::vector<SettingBinding>& setting_bindings();
 
 // Read-back: the pod's reports -> the parameters they carry (settings_bindings.cpp).
@@ -64,12 +71,21 @@ class SettingsSync {
  public:
   SettingsSync(ros::NodeHandle private_nh, PodDriver& driver);
 
-  // Blocking: call from the driver's online thread.
-  void read_from_pod();
+  // Blocking: call from the driver's online thread or the read_settings service (one read at a
+  // time). Returns the read's state.
+  SettingsState read_from_pod();
   SettingsState state() const;
+
+  // The one write path of a setting, for services (set_palette, set_photo_mode, ...): `edit`
+  // changes the configuration, the binding `name` sends its request whether or not the value
+  // changed, and the configuration the server publishes is what the pod accepted. Blocking.
+  session::AckResult write(const std::string& name, const std::function<void(Config&)>& edit);
 
  private:
   void on_reconfigure(Config& config, uint32_t level);
+  // Sends `binding` for `next`: on success current_ takes its fields, otherwise `next` gets
+  // current_'s back. Server mutex held.
+  session::AckResult apply(const SettingBinding& binding, Config& next);
 
   PodDriver& driver_;
   boost::recursive_mutex server_mutex_;
@@ -77,6 +93,7 @@ class SettingsSync {
   Config current_;
   bool initialised_ = false;
   std::set<std::string> set_by_user_;  // bindings applied through reconfigure (server mutex)
+  std::mutex read_mutex_;              // one read_from_pod() at a time
 
   mutable std::mutex mutex_;  // guards what follows; never held while waiting for the pod
   std::condition_variable reports_arrived_;

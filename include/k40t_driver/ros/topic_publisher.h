@@ -30,6 +30,8 @@ class TopicPublisher {
   RosPodConfig config_;
   ros::Publisher joint_states_, attitude_, gimbal_status_, camera_status_, visible_status_;
   ros::Publisher thermal_stats_, laser_range_, laser_target_, photo_status_, record_status_;
+  ros::Publisher zoom_status_, reshoot_status_, tf_upgrade_status_, sd_format_status_;
+  ros::Publisher camera_upgrade_status_;
   ros::Publisher raw_rx_, raw_tx_;
   std::unique_ptr<tf2_ros::TransformBroadcaster> tf_;
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_tf_;

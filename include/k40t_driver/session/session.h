@@ -34,7 +34,8 @@ struct SessionOptions {
   // Source address of what we send: the host (0x01/0x01) for the driver, the camera (0x04/0x01)
   // for the simulated pod.
   protocol::Address own_address = protocol::kHostAddress;
-  // The address we answer the pod's flight-controller requests (0x000310) from.
+  // The flight controller's address: the pod's GPS requests (0x000310) are answered from it and
+  // the laser-target requests (0x000320, section 3.2.4.24) are sent from it.
   protocol::Address flight_controller_address = protocol::kFlightControllerAddress;
   std::chrono::milliseconds ack_timeout{300};
   int retries = 2;  // extra attempts after the first

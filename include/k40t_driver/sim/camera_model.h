@@ -59,7 +59,17 @@ struct PhotoRecord {
   double size_mb = 0;
   int64_t taken_utc_ms = 0;
   std::optional<GpsAnswer> gps;  // filled when the host answers the GPS request
+  uint16_t width_px = 0;         // visible resolution (0 for a thermal-only photo)
+  uint16_t height_px = 0;
 };
+
+// A visible photo resolution code of 0x000202 / 0x000307 byte 2 (0x14..0x17) in pixels; {0, 0}
+// for a code the document does not list.
+struct PhotoPixels {
+  uint16_t width = 0;
+  uint16_t height = 0;
+};
+PhotoPixels photo_pixels(uint8_t resolution_code);
 
 struct VideoRecord {
   std::string path;
@@ -86,8 +96,9 @@ class CameraModel {
   Outcome take_photo(uint8_t lens_mode, const std::string& folder,
                      const std::string& name);  // 0x000302
   Outcome stop_photo();
-  Outcome precise_reshoot(uint8_t lens_mode, const std::string& folder,
-                          const std::string& name);  // 0x000307
+  // 0x000307: the photo is taken at `resolution_code` (byte 2), not the photo setting.
+  Outcome precise_reshoot(uint8_t lens_mode, uint8_t resolution_code, const std::string& folder,
+                          const std::string& name);
   Outcome start_recording(uint8_t lens_mode, const std::string& folder,
                           const std::string& name);  // 0x000303
   Outcome stop_recording();
@@ -110,7 +121,8 @@ class CameraModel {
   bool upgrading() const { return upgrade_left_s_ > 0; }
   const std::vector<PhotoRecord>& photos() const { return photos_; }
   const std::vector<VideoRecord>& videos() const { return videos_; }
-  double photo_size_mb(uint8_t lens_mode) const;
+  double photo_size_mb(uint8_t lens_mode) const;  // at the photo resolution setting
+  double photo_size_mb(uint8_t lens_mode, uint8_t resolution_code) const;
   double video_rate_mb_s(uint8_t lens_mode) const;
 
  private:
@@ -118,6 +130,7 @@ class CameraModel {
     uint8_t lens_mode = 0;
     PhotoMode mode = PhotoMode::kSingle;
     bool precise = false;
+    uint8_t resolution = 0;  // visible resolution code; the photo setting's unless precise
     std::string folder;
     std::string name;
     uint16_t taken = 0;

@@ -7,6 +7,8 @@
 //   garbage RATE [MAX]      random bytes before a frame, per frame, 0..1 (up to MAX bytes, 1..64)
 //   drop-acks RATE          requests left without ACK, 0..1
 //   delay-acks MS [RATE]    ACKs sent MS late (0 = off), with probability RATE (default 1)
+//   refuse ID [CODE]        refuse requests with id ID (e.g. 0x000501; 0 = off) with CODE
+//                           (default 0x0001 failure) and do not carry them out
 //   silence SECONDS         send nothing for that long
 //   disconnect SECONDS      close the link, reopen it after that long
 //   seq-jump N              skip N sequence numbers (1..255)
@@ -14,6 +16,7 @@
 //   self-test MASK          0x000001 self-test bits (IR 1, tele 2, wide 4, laser 8)
 //   ground-height METRES    the flat ground below the pod
 //   photos                  the photos on the card, with their GPS answers
+//   photo-resolution CODE   the visible photo resolution held and reported (0x14..0x16)
 #pragma once
 
 #include <chrono>

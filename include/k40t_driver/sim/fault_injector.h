@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <mutex>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -32,6 +33,10 @@ struct FaultSettings {
   double drop_ack_rate = 0;
   double delay_ack_ms = 0;
   double delay_ack_rate = 1;
+  // Requests with this id (0 = none) are refused with refuse_code and not carried out: the
+  // partial-failure cases of multi-request operations (sbus/set) become testable.
+  uint32_t refuse_id = 0;
+  uint16_t refuse_code = 0x0001;
 };
 
 struct FaultCounters {
@@ -69,6 +74,8 @@ class FaultInjector {
 
   // Decisions for one ACK.
   bool drop_ack();
+  // The code to refuse this request id with, if the refuse fault names it.
+  std::optional<uint16_t> refusal(uint32_t request_id) const;
   std::chrono::milliseconds ack_delay();
 
   void count_disconnect();

@@ -6,6 +6,8 @@
 // commands make it busy too.
 #pragma once
 
+#include <optional>
+
 #include "k40t_driver/sim/events.h"
 #include "k40t_driver/sim/outcome.h"
 
@@ -32,13 +34,24 @@ enum class FocusCommand {                                           // 0x000313 
   kAutoAfterZoomOff,
 };
 
+// The frame area auto focus (0x000313 mode 4) focuses on, in stream pixels (1920x1080).
+struct FocusArea {
+  int left = 0;
+  int top = 0;
+  int right = 0;
+  int bottom = 0;
+};
+
 class ZoomModel {
  public:
   explicit ZoomModel(const ZoomConfig& config = {});
 
   Outcome set_zoom(double zoom);  // 0x000304: 1..160
   Outcome zoom_control(ContinuousZoom command);
-  Outcome focus(FocusCommand command);
+  // Area auto focus uses `area` (refused unless it is a non-empty box inside the stream); the
+  // other commands ignore it. Auto and one-touch focus, and any zoom, go back to centre focus
+  // (3.2.4.18 note).
+  Outcome focus(FocusCommand command, const FocusArea& area = {});
 
   void step(double dt_s, EventQueue& events);
 
@@ -47,6 +60,8 @@ class ZoomModel {
   bool zooming() const { return moving_; }
   bool focusing() const { return manual_focus_ || focus_left_s_ > 0; }
   bool auto_focus_after_zoom() const { return auto_focus_after_zoom_; }
+  // The area the camera focuses on; nullopt: the centre.
+  const std::optional<FocusArea>& focus_area() const { return focus_area_; }
   // The telephoto focal length follows the optical part (lens.h).
   double focal_length_mm() const;
   void reset();  // factory settings: 1x, no motion
@@ -63,6 +78,7 @@ class ZoomModel {
   bool manual_focus_ = false;
   double focus_left_s_ = 0;
   bool auto_focus_after_zoom_ = true;
+  std::optional<FocusArea> focus_area_;
 };
 
 }  // namespace k40t::sim

@@ -94,19 +94,18 @@ Status GetIpAck::validate() const {
                        check_ipv4("gateway", gateway));
 }
 
+// Section 3.2.4.17 lists each octet as a byte of its own (Byte3..Byte6 the address, first octet
+// first), like 0x000311's request: they are bytes, not a uint32, so ack_byte_order (which orders
+// the response code) does not reverse them.
 void GetIpAck::encode(ByteWriter& w, const CodecOptions& o) const {
   w.u16(static_cast<uint16_t>(code), o.ack_byte_order);
-  for (const std::string* ip : {&address, &netmask, &gateway}) {
-    w.u32(camera_codec::ipv4_value(*ip), o.ack_byte_order);
-  }
+  for (const std::string* ip : {&address, &netmask, &gateway}) put_octets(w, *ip);
 }
 
 Status GetIpAck::decode(ByteReader& r, const CodecOptions& o) {
   code = static_cast<ResponseCode>(r.u16(o.ack_byte_order));
   if (r.remaining() == 0) return Status::ok();  // a refusal: code only
-  for (std::string* ip : {&address, &netmask, &gateway}) {
-    *ip = camera_codec::ipv4_text(r.u32(o.ack_byte_order));
-  }
+  for (std::string* ip : {&address, &netmask, &gateway}) *ip = get_octets(r);
   return Status::ok();
 }
 

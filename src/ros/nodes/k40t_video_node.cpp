@@ -2,10 +2,12 @@
 // is the same thing inside a nodelet manager).
 #include <ros/ros.h>
 
+#include "k40t_driver/ros/stop_signals.h"
 #include "k40t_driver/ros/video/video_streamer.h"
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "video");
+  k40t::driver::shutdown_on_sigterm();
   ros::NodeHandle nh;
   ros::NodeHandle private_nh("~");
   auto streamer = k40t::driver::VideoStreamer::create(nh, private_nh);

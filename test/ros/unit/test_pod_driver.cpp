@@ -12,46 +12,13 @@
 #include "k40t_driver/protocol/messages/flight_controller.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/ros/pod_driver.h"
+#include "pod_driver_test_support.h"
 
 namespace k40t::driver {
 namespace {
 
 using std::chrono::milliseconds;
-using testing::FakePod;
-using testing::SentFrame;
-
-constexpr StampNs kFixedNow = 1'700'000'000'000'000'000;
-
-std::string unique_pty(const char* name) {
-  return "/tmp/k40t_unit_" + std::string(name) + "_" + std::to_string(::getpid());
-}
-
-DriverOptions options_for(const std::string& pty) {
-  DriverOptions o;
-  o.device = "serial://" + pty;
-  o.baud = 115200;
-  o.time_sync_period_s = 0;  // tests that want it turn it on
-  o.laser_target_period_s = 0;
-  o.session.ack_timeout = milliseconds(100);
-  return o;
-}
-
-std::unique_ptr<PodDriver> make_driver(
-    const DriverOptions& o, PodDriver::Clock clock = [] { return kFixedNow; }) {
-  Result<std::unique_ptr<PodDriver>> driver = PodDriver::create(o, std::move(clock));
-  EXPECT_TRUE(driver.is_ok()) << driver.error();
-  return std::move(driver.value());
-}
-
-// The driver opens the pty in the background (and may flush what came before): send reports
-// until one has been received.
-void wait_until_linked(FakePod& pod, PodDriver& driver) {
-  for (int i = 0; i < 150 && driver.stats().session.parser.frames_good == 0; ++i) {
-    pod.send(protocol::GimbalAttitude{});
-    std::this_thread::sleep_for(milliseconds(20));
-  }
-  ASSERT_GT(driver.stats().session.parser.frames_good, 0u) << "the driver never received a frame";
-}
+using namespace testing;  // k40t::driver::testing: FakePod and the helpers
 
 TEST(PodDriver, StampIsReceptionMinusWireTime) {
   const std::string pty = unique_pty("stamp");
@@ -148,26 +115,6 @@ TEST(PodDriver, RateCommandsStopHalfASecondAfterTheLast) {
   EXPECT_LT(after_s, 0.8);
   EXPECT_EQ(pod.frames_with_id(protocol::GimbalDialSpeedRequest::kId).size(), 1u);
   EXPECT_EQ(driver->stats().deadman_stops, 1u);
-}
-
-std::vector<SentFrame> wait_for_time_syncs(FakePod& pod, size_t n) {
-  pod.wait_for(FakePod::count_of(protocol::TimeSyncRequest::kId, n), milliseconds(3000));
-  return pod.frames_with_id(protocol::TimeSyncRequest::kId);
-}
-
-// The time a sync frame sets the pod to (ms since the epoch).
-std::optional<int64_t> time_sync_ms(const SentFrame& frame) {
-  Result<protocol::TimeSyncRequest> sync = protocol::decode_payload<protocol::TimeSyncRequest>(
-      frame.payload.data(), frame.payload.size());
-  EXPECT_TRUE(sync.is_ok()) << sync.error();
-  if (!sync) return std::nullopt;
-  return sync->unix_time_ms;
-}
-
-int64_t system_now_ms() {
-  return std::chrono::duration_cast<milliseconds>(
-             std::chrono::system_clock::now().time_since_epoch())
-      .count();
 }
 
 TEST(PodDriver, TimeSyncEveryPeriodWithTheWallClock) {

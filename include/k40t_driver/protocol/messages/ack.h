@@ -18,7 +18,9 @@ struct PlainAck {
   ResponseCode code = ResponseCode::kOk;
 
   Status validate() const { return Status::ok(); }
-  void encode(ByteWriter& w, const CodecOptions& o) const { w.u16(static_cast<uint16_t>(code), o.ack_byte_order); }
+  void encode(ByteWriter& w, const CodecOptions& o) const {
+    w.u16(static_cast<uint16_t>(code), o.ack_byte_order);
+  }
   Status decode(ByteReader& r, const CodecOptions& o) {
     code = static_cast<ResponseCode>(r.u16(o.ack_byte_order));
     return Status::ok();
@@ -29,11 +31,12 @@ struct PlainAck {
   }
 };
 
-// Reads just the response code of any ACK payload (all ACKs start with it).
+// Reads just the response code of any ACK payload (all ACKs start with it). A payload too short
+// for one gives kAckUnreadable, the driver's own code, not the pod's 0x0007 "length mismatch".
 inline ResponseCode ack_response_code(const uint8_t* payload, size_t size, const CodecOptions& o) {
   ByteReader r(payload, size);
   const uint16_t code = r.u16(o.ack_byte_order);
-  return r.ok() ? static_cast<ResponseCode>(code) : ResponseCode::kLengthMismatch;
+  return r.ok() ? static_cast<ResponseCode>(code) : ResponseCode::kAckUnreadable;
 }
 
 }  // namespace k40t::protocol

@@ -1,13 +1,12 @@
 // Laser rangefinder messages (document section 3.2.5, system 0x04): single ranging 0x000400 with
 // its distance-carrying ACK, periodic ranging 0x000406 and its 1 Hz status frame 0x020406.
 //
-// Byte order of the status frame 0x020406. Section 2.1 says multi-byte parameters are low byte
-// first "except ACK" (NOTES A2: ACK fields big-endian by default). 0x020406 is a status frame, not
-// an ACK, so the literal rule would make it little-endian; but its payload is exactly the ACK
-// 0x010400's (it even starts with a response code, "0x00 response code", which no other status
-// frame of the document carries), so the pod evidently builds it with its ACK routine. We decode
-// it with CodecOptions::ack_byte_order, like 0x010400: both distance sources of laser/range then
-// agree, and one parameter flips both if a real pod disagrees with NOTES A2.
+// Byte order. The ACK 0x010400 follows CodecOptions::ack_byte_order (NOTES A2, big by default).
+// The status frame 0x020406 is not an ACK: section 2.1 makes every non-ACK payload low byte
+// first, and the project reads every 0x02xxxx frame that way (camera_status.h). Its payload looks
+// like the ACK's (it starts with a response code), which is no reason to read it as one: it
+// follows CodecOptions::laser_status_byte_order, little by default (decision L1 in
+// docs/protocol/gimbal_laser_sbus.md), so 87.6 m (876 = 0x036C) arrives as 6C 03.
 #pragma once
 
 #include "k40t_driver/protocol/message.h"
@@ -16,8 +15,9 @@
 
 namespace k40t::protocol {
 
-// Response code + uint16 distance x0.1 m (0 = no return), both in ack_byte_order: the payload of
-// ACK 0x010400 and of status frame 0x020406.
+// Response code + uint16 distance x0.1 m (0 = no return), both in the byte order kOrder selects:
+// the payload of ACK 0x010400 and of status frame 0x020406.
+template <ByteOrder CodecOptions::*kOrder>
 struct LaserDistancePayload {
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 4;
@@ -28,12 +28,12 @@ struct LaserDistancePayload {
 
   Status validate() const { return check_range("distance_m", distance_m, 0.0, kMaxDistanceM, "m"); }
   void encode(ByteWriter& w, const CodecOptions& o) const {
-    w.u16(static_cast<uint16_t>(code), o.ack_byte_order);
-    w.u16(to_wire<uint16_t>(distance_m, 10), o.ack_byte_order);
+    w.u16(static_cast<uint16_t>(code), o.*kOrder);
+    w.u16(to_wire<uint16_t>(distance_m, 10), o.*kOrder);
   }
   Status decode(ByteReader& r, const CodecOptions& o) {
-    code = static_cast<ResponseCode>(r.u16(o.ack_byte_order));
-    distance_m = r.remaining() == 0 ? 0.0 : r.u16(o.ack_byte_order) / 10.0;
+    code = static_cast<ResponseCode>(r.u16(o.*kOrder));
+    distance_m = r.remaining() == 0 ? 0.0 : r.u16(o.*kOrder) / 10.0;
     return Status::ok();
   }
   template <class Self, class V>
@@ -44,7 +44,7 @@ struct LaserDistancePayload {
 };
 
 // ACK 0x010400, section 3.2.5.1.
-struct LaserRangeAck : LaserDistancePayload {
+struct LaserRangeAck : LaserDistancePayload<&CodecOptions::ack_byte_order> {
   static constexpr MessageId kId = 0x010400;
   static constexpr const char* kName = "laser_range_ack";
   static constexpr const char* kSection = "3.2.5.1";
@@ -68,7 +68,7 @@ struct LaserPeriodicRangeRequest : SwitchRequest<> {
 
 // Status frame 0x020406, section 3.2.5.2, 1 Hz while periodic ranging is on. Byte order: see the
 // top of this file.
-struct LaserPeriodicRangeStatus : LaserDistancePayload {
+struct LaserPeriodicRangeStatus : LaserDistancePayload<&CodecOptions::laser_status_byte_order> {
   static constexpr MessageId kId = 0x020406;
   static constexpr const char* kName = "laser_periodic_range_status";
   static constexpr const char* kSection = "3.2.5.2";

@@ -1,0 +1,60 @@
+// k40t_manager: a nodelet manager (drop-in for `nodelet manager`) that unloads its nodelets
+// before it shuts ROS down.
+//
+// Why: nodelet 1.10 (Debian 12) destroys a manager's nodelets before the bonds to their loaders.
+// On Ctrl-C every loader breaks its bond while the manager is exiting; the bond's "broken"
+// callback then unloads the nodelet again from the map that was just destroyed, and the manager
+// aborts with boost::lock_error (a mutex of the destroyed callback-queue manager). Unloading each
+// nodelet through the manager's own unload service first removes its bond with the callback
+// disabled, so nothing is left for the bonds to do when the Loader is destroyed.
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <nodelet/NodeletUnload.h>
+#include <nodelet/loader.h>
+#include <ros/ros.h>
+
+namespace {
+
+std::atomic<bool> g_stop_requested{false};
+
+void request_stop(int) {
+  g_stop_requested = true;
+}
+
+void install_stop_handlers() {
+  struct sigaction action {};
+  action.sa_handler = request_stop;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "manager", ros::init_options::NoSigintHandler);
+  install_stop_handlers();
+  ros::NodeHandle private_nh("~");
+  nodelet::Loader loader(private_nh);  // load_nodelet, unload_nodelet, list, bonds
+  // The manager's services and the nodelets' default queue, as `nodelet manager`'s ros::spin().
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+
+  while (!g_stop_requested && ros::ok()) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+
+  ros::ServiceClient unload = private_nh.serviceClient<nodelet::NodeletUnload>("unload_nodelet");
+  for (const std::string& name : loader.listLoadedNodelets()) {
+    nodelet::NodeletUnload call;
+    call.request.name = name;
+    // A loader that got the same Ctrl-C may have unloaded it first: then this one just fails.
+    if (!unload.call(call)) loader.unload(name);
+  }
+  spinner.stop();
+  ros::shutdown();
+  return 0;
+}
