@@ -16,9 +16,12 @@ include(${K40T_TARGETS_FILE})
 
 # rosrun/roslaunch look for the programs in the devel space's lib/k40t_driver: link them there.
 foreach(program k40t k40t_sim skyport_sim k40t_video_sim)
-  get_target_property(location ${program} IMPORTED_LOCATION_RELWITHDEBINFO)
+  # The location under the build type the ROS-free build was configured with (Release, ...).
+  get_target_property(configs ${program} IMPORTED_CONFIGURATIONS)
+  list(GET configs 0 config)
+  get_target_property(location ${program} IMPORTED_LOCATION_${config})
   if(NOT location)
-    get_target_property(location ${program} IMPORTED_LOCATION_NOCONFIG)
+    message(FATAL_ERROR "${K40T_TARGETS_FILE} gives no location for ${program}")
   endif()
   file(MAKE_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION})
   file(CREATE_LINK ${location} ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/${program}

@@ -18,7 +18,7 @@ generate_dynamic_reconfigure_options(cfg/K40t.cfg)
 
 catkin_package(
   INCLUDE_DIRS include
-  LIBRARIES k40t_ros
+  LIBRARIES k40t_ros k40t_ros_video k40t_ros_skyport
   CATKIN_DEPENDS roscpp nodelet pluginlib std_msgs std_srvs sensor_msgs geometry_msgs
                  diagnostic_msgs diagnostic_updater dynamic_reconfigure tf2 tf2_ros actionlib actionlib_msgs
                  message_runtime)

@@ -1,33 +1,46 @@
-# The ROS layer (src/ros/): one library holding the driver and its ROS glue, the nodelet plugin
-# that wraps it, the standalone node, and the rostest programs under test/ros/.
-file(GLOB_RECURSE K40T_ROS_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/*.cpp)
-list(FILTER K40T_ROS_SOURCES EXCLUDE REGEX ".*/src/ros/nodes/.*")
+# The ROS layer, one shared library per nodelet so that each loads only what it uses:
+#   k40t_ros          src/ros/*.cpp: the pod driver (PodNodelet, k40t_node) and the glue the
+#                     others share (parameters, conversions); no OpenCV, GStreamer or OpenSSL;
+#   k40t_ros_video    src/ros/video/: VideoNodelet, k40t_video_node (OpenCV, GStreamer,
+#                     image_transport, camera_info_manager; cmake/video_ros.cmake);
+#   k40t_ros_skyport  src/ros/skyport/: SkyportNodelet, k40t_skyport_node (the PSDK layer, OpenSSL).
+# The standalone nodes, k40t_manager and the rostest programs under test/ros/ link them.
+file(GLOB K40T_ROS_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/*.cpp)
+file(GLOB K40T_ROS_SKYPORT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/skyport/*.cpp)
 
-if(NOT K40T_ROS_SOURCES)
-  return()  # nothing in src/ros/ yet
-endif()
 add_library(k40t_ros SHARED ${K40T_ROS_SOURCES})
 target_include_directories(k40t_ros PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_include_directories(k40t_ros SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
-target_link_libraries(k40t_ros PUBLIC k40t_core k40t_psdk ${catkin_LIBRARIES})  # psdk: the SKYPORT bridge
+target_link_libraries(k40t_ros PUBLIC k40t_core ${catkin_LIBRARIES})
 # Generated message/service headers and the dynamic_reconfigure K40tConfig.h.
 add_dependencies(k40t_ros ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg)
-include(cmake/video_ros.cmake)  # the video nodelet's dependencies
 
-# One executable per src/ros/nodes/*.cpp (k40t_node, ...), each a thin main() over k40t_ros.
+add_library(k40t_ros_skyport SHARED ${K40T_ROS_SKYPORT_SOURCES})
+target_link_libraries(k40t_ros_skyport PUBLIC k40t_ros k40t_psdk)
+include(cmake/video_ros.cmake)  # k40t_ros_video
+
+# One executable per src/ros/nodes/*.cpp, each a thin main() over the library it names.
+set(K40T_NODE_LIBRARY_k40t_node k40t_ros)
+set(K40T_NODE_LIBRARY_k40t_video_node k40t_ros_video)
+set(K40T_NODE_LIBRARY_k40t_skyport_node k40t_ros_skyport)
+set(K40T_NODE_LIBRARY_k40t_manager k40t_ros)
 file(GLOB K40T_ROS_NODES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/nodes/*.cpp)
 foreach(source ${K40T_ROS_NODES})
   get_filename_component(name ${source} NAME_WE)
+  if(NOT K40T_NODE_LIBRARY_${name})
+    message(FATAL_ERROR "src/ros/nodes/${name}.cpp: say which library it links in ros_targets.cmake")
+  endif()
   add_executable(${name} ${source})
-  target_link_libraries(${name} PRIVATE k40t_ros)
+  target_link_libraries(${name} PRIVATE ${K40T_NODE_LIBRARY_${name}})
   install(TARGETS ${name} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 endforeach()
 
-install(TARGETS k40t_ros
+install(TARGETS k40t_ros k40t_ros_video k40t_ros_skyport
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 install(DIRECTORY include/k40t_driver/ DESTINATION ${CATKIN_PACKAGE_INCLUDE_DESTINATION})
 install(FILES nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
+install(FILES bench/bench_nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/bench)
 install(DIRECTORY launch config urdf rviz DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 
 # rostest programs, run by scripts/run_tests.sh through test/ros/*.test:
@@ -40,19 +53,20 @@ if(CATKIN_ENABLE_TESTING)
   file(GLOB K40T_ROS_UNIT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/test/ros/unit/*.cpp)
   if(K40T_ROS_UNIT_SOURCES)
     add_executable(k40t_ros_unit_tests ${K40T_ROS_UNIT_SOURCES})
-    target_link_libraries(k40t_ros_unit_tests PRIVATE k40t_ros GTest::gtest GTest::gtest_main)
+    target_link_libraries(k40t_ros_unit_tests PRIVATE k40t_ros k40t_ros_skyport GTest::gtest
+                                                      GTest::gtest_main)
   endif()
   file(GLOB K40T_ROSTEST_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/test/ros/*.cpp)
   foreach(source ${K40T_ROSTEST_SOURCES})
     get_filename_component(name ${source} NAME_WE)
     add_executable(${name} ${source})
-    target_link_libraries(${name} PRIVATE k40t_ros GTest::gtest)
+    target_link_libraries(${name} PRIVATE k40t_ros k40t_ros_video k40t_ros_skyport GTest::gtest)
   endforeach()
 endif()
 
 # End-to-end benchmarks of the ROS layer (bench/ros/, run by bench/ros/run_ros_bench.sh): the
 # latency probe as a node and as a nodelet (library k40t_bench_nodelets, listed in
-# nodelet_plugins.xml), and the service round-trip client.
+# bench/bench_nodelet_plugins.xml), and the service round-trip client.
 add_library(k40t_bench_nodelets SHARED ${PROJECT_SOURCE_DIR}/bench/ros/latency_probe.cpp
                                        ${PROJECT_SOURCE_DIR}/bench/ros/latency_probe_nodelet.cpp)
 target_link_libraries(k40t_bench_nodelets PUBLIC k40t_ros)
@@ -60,3 +74,6 @@ add_executable(k40t_latency_probe ${PROJECT_SOURCE_DIR}/bench/ros/latency_probe_
 target_link_libraries(k40t_latency_probe PRIVATE k40t_bench_nodelets)
 add_executable(k40t_service_rtt ${PROJECT_SOURCE_DIR}/bench/ros/service_rtt.cpp)
 target_link_libraries(k40t_service_rtt PRIVATE k40t_ros)
+install(TARGETS k40t_bench_nodelets k40t_video_bench k40t_latency_probe k40t_service_rtt
+  LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
+  RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

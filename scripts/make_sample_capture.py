@@ -1,12 +1,12 @@
 #!/usr/bin/python3
-"""Builds test/data/sample_capture.bin, the demo capture (`k40t monitor` on it is scripts/demo.sh).
+"""Builds test/data/sample_capture.bin, a capture to try `k40t decode` and `k40t monitor` on.
 
 The capture is the frames of every test/data/golden/*.txt file (sorted by file name, frames in
 file order) as a byte stream that a real serial line could have produced: between the good
 frames it interleaves, in turn, line-noise bytes, false STX bytes (one with an impossible LEN,
 one whose LEN swallows the next good frame), a truncated copy of the previous frame and a
 corrupted copy of it (one payload bit flipped, so its checksum fails). A correct parser recovers
-every good frame and nothing else; test/unit/test_sample_capture.cpp checks that with `k40t
+every good frame and nothing else; test/unit/test_k40t_tool.cpp checks that with `k40t
 decode`, and that the committed capture is what this script produces now.
 
 usage: scripts/make_sample_capture.py [--golden DIR] [--output FILE]

@@ -6,7 +6,8 @@
      moment of a scenario (while connecting, during the settings read-back, in the middle of a
      service call, while the link reconnects, while the video opens, ...). Checked: the loader ends
      in bounded time, the nodelet leaves the manager, the manager stays alive and answers, its
-     thread count does not grow from cycle to cycle (every thread joined).
+     thread count does not grow from cycle to cycle (every thread joined). One more cycle per
+     nodelet signals the loader while it is still loading.
   2. Manager shutdowns: a manager with all three nodelets loaded gets SIGINT together with its
      loaders, as roslaunch's Ctrl-C does. Checked: exit code 0 within bounded time, no process left.
   3. Nodes: k40t_node, k40t_video_node and k40t_skyport_node get SIGINT or SIGTERM at a random
@@ -18,7 +19,7 @@ It runs its own master, simulated pod (with its RTSP stream) and simulated SKYPO
 (scripts/run_tests.sh does). Writes one JUnit test case per check group to --junit.
 
   clean_stop.py [--cycles N] [--shutdowns N] [--node-runs N] [--seed N] [--junit FILE]
-                [--logs DIR]"""
+                [--logs DIR] [--stock-manager]"""
 import argparse
 import os
 import random
@@ -99,6 +100,9 @@ def unload_cycles(h, results, rng, cycles):
                                   "first cycle: a thread was not joined" % (threads, baseline))
 
             run_case(results, "unload", "%s_%02d_%s" % (kind, i, scenario), cycle)
+        run_case(results, "unload", "%s_during_load" % kind,
+                 lambda: h.unload_during_load(manager, kind, nodelet_type, rng,
+                                              "%s_during_load" % kind))
     h.stop_manager(manager)
     run_case(results, "unload", "manager_log_clean", lambda: h.check_log(manager.log))
 
@@ -125,6 +129,8 @@ def main():
     ap.add_argument("--seed", type=int, default=None, help="seed of the random moments")
     ap.add_argument("--junit", help="JUnit XML output path")
     ap.add_argument("--logs", help="directory for the processes' logs (default: a temporary one)")
+    ap.add_argument("--stock-manager", action="store_true",
+                    help="use `nodelet manager` instead of k40t_manager (to see it abort)")
     options = ap.parse_args()
 
     seed = options.seed if options.seed is not None else random.randrange(1 << 30)
@@ -134,7 +140,7 @@ def main():
     print("clean_stop: seed %d, logs in %s" % (seed, logs), flush=True)
     results = Results()
     start = time.monotonic()
-    with Harness(logs) as h:
+    with Harness(logs, options.stock_manager) as h:
         unload_cycles(h, results, rng, options.cycles)
         manager_shutdowns(h, results, rng, options.shutdowns)
         node_stops(h, results, rng, options.node_runs)

@@ -17,6 +17,7 @@ CRASH = re.compile(r"terminate called|Aborted|core dumped|Segmentation fault|"
                    r"stack smashing|double free|corrupted|AddressSanitizer")
 EXIT_TIMEOUT_S = 15.0   # a loader, node or manager must end this long after its signal
 UNLOAD_TIMEOUT_S = 15.0  # a nodelet must leave its manager this long after its loader's signal
+BOND_CONNECT_TIMEOUT_S = 10.0  # bondcpp's default: a loader that never connects is given up then
 
 
 class Failure(Exception):
@@ -71,8 +72,9 @@ class Proc:
 
 
 class Harness:
-    def __init__(self, logs):
+    def __init__(self, logs, stock_manager=False):
         self.logs = logs
+        self.stock_manager = stock_manager
         self.procs = []  # everything the checks start (not the master and the simulators)
         self.infra = []
         self.tag = "k40t_stop_%d" % os.getpid()
@@ -136,7 +138,8 @@ class Harness:
     def start_manager(self, name):
         # The package's manager (src/ros/nodes/k40t_manager.cpp): `nodelet manager` of nodelet 1.10
         # aborts on Ctrl-C when bonded nodelets unload while it exits (see that file).
-        manager = self.spawn([program("k40t_manager"), "__name:=" + name], name)
+        command = [NODELET, "manager"] if self.stock_manager else [program("k40t_manager")]
+        manager = self.spawn(command + ["__name:=" + name], name)
         manager.name = name
         self.wait_for(lambda: self.loaded(manager) is not None, 20,
                       "manager %s did not come up" % name)
@@ -189,6 +192,31 @@ class Harness:
             time.sleep(0.05)
 
     # --- one unload at a chosen moment -----------------------------------------------------
+    def unload_during_load(self, manager, kind, nodelet_type, rng, label):
+        """SIGINT while `nodelet load` is still loading. Before the loader has installed its own
+        SIGINT handler the signal ends it at once (nodelet's tool starts roscpp without one), so
+        nobody unloads the nodelet: the manager's bond to the dead loader does, when its connect
+        timeout (10 s) expires. Checked: the loader ends, and the nodelet is gone after that."""
+        loader = self.start_loader(manager, kind, nodelet_type, "random", label)
+        try:
+            time.sleep(rng.uniform(0.0, 0.5))
+            loader.signal(signal.SIGINT)
+            code = loader.wait(EXIT_TIMEOUT_S)
+            if code is None:
+                raise Failure("the loader still running %.0f s after SIGINT (see %s)"
+                              % (EXIT_TIMEOUT_S, loader.log))
+            if code not in (0, -signal.SIGINT):
+                raise Failure("the loader exited with %d (see %s)" % (code, loader.log))
+            time.sleep(BOND_CONNECT_TIMEOUT_S + 1.0)
+            self.wait_for(lambda: loader.nodelet_name not in (self.loaded(manager) or [None]),
+                          UNLOAD_TIMEOUT_S, "%s still loaded %.0f s after its loader ended"
+                          % (nodelet_type, BOND_CONNECT_TIMEOUT_S + 1 + UNLOAD_TIMEOUT_S))
+            if not manager.alive():
+                raise Failure("the manager died (see %s)" % manager.log)
+            self.check_log(manager.log)
+        finally:
+            loader.kill()
+
     def unload_cycle(self, manager, kind, nodelet_type, scenario, rng, label):
         if scenario == "service_call":
             self.pod_control("delay-acks 250")  # the call is still waiting when SIGINT comes

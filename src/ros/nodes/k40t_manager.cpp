@@ -1,5 +1,5 @@
 // k40t_manager: a nodelet manager (drop-in for `nodelet manager`) that unloads its nodelets
-// before it shuts ROS down.
+// before it shuts ROS down (after waiting up to a second for their loaders to do it).
 //
 // Why: nodelet 1.10 (Debian 12) destroys a manager's nodelets before the bonds to their loaders.
 // On Ctrl-C every loader breaks its bond while the manager is exiting; the bond's "broken"
@@ -46,6 +46,12 @@ int main(int argc, char** argv) {
   spinner.start();
 
   while (!g_stop_requested && ros::ok()) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+
+  // roslaunch's Ctrl-C reaches the loaders too, and each asks to unload its own nodelet: give
+  // them a moment, so that they do not find the nodelet gone and log an error.
+  const auto grace_end = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+  while (!loader.listLoadedNodelets().empty() && std::chrono::steady_clock::now() < grace_end)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
 
   ros::ServiceClient unload = private_nh.serviceClient<nodelet::NodeletUnload>("unload_nodelet");
   for (const std::string& name : loader.listLoadedNodelets()) {
