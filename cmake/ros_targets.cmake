@@ -74,6 +74,10 @@ add_executable(k40t_latency_probe ${PROJECT_SOURCE_DIR}/bench/ros/latency_probe_
 target_link_libraries(k40t_latency_probe PRIVATE k40t_bench_nodelets)
 add_executable(k40t_service_rtt ${PROJECT_SOURCE_DIR}/bench/ros/service_rtt.cpp)
 target_link_libraries(k40t_service_rtt PRIVATE k40t_ros)
+# The SKYPORT bridge's getter ACK latency while a pod call is blocked (no ROS master needed).
+add_executable(k40t_skyport_getter_latency ${PROJECT_SOURCE_DIR}/bench/ros/skyport_getter_latency.cpp)
+target_link_libraries(k40t_skyport_getter_latency PRIVATE k40t_ros_skyport)
 install(TARGETS k40t_bench_nodelets k40t_video_bench k40t_latency_probe k40t_service_rtt
+                k40t_skyport_getter_latency
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

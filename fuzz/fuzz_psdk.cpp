@@ -9,7 +9,9 @@
 
 #include "k40t_driver/psdk/aes.h"
 #include "k40t_driver/psdk/catalogue.h"
+#include "k40t_driver/psdk/commands/header_variants.h"
 #include "k40t_driver/psdk/parser.h"
+#include "k40t_driver/psdk/sim/payload_reading.h"
 
 namespace {
 
@@ -44,6 +46,22 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size >= 1) {
     const auto& all = catalogue();
     (void)all[data[0] % all.size()].describe(data + 1, size - 1, sink);
+  }
+  // The layouts read by their length (header_variants.h) and the simulated adapter's own readers
+  // (payload_reading.h), on the input as DATA.
+  bool has_osdk = false;
+  (void)decode_shoot_photo_mode(data, size);
+  (void)decode_link_bandwidth(data, size, &has_osdk);
+  if (size <= kMaxDataSize) {
+    Data ack;
+    for (size_t i = 0; i < size; ++i) ack.bytes[i] = data[i];
+    ack.size = size;
+    for (const sim::PayloadReading reading :
+         {sim::PayloadReading::kDjiHeaders, sim::PayloadReading::kDocument}) {
+      (void)sim::read_gimbal_state(ack, reading);
+      (void)sim::read_sd_card(ack, reading);
+      (void)sim::read_shoot_photo_mode(ack, reading);
+    }
   }
   const size_t split = size > 0 ? data[0] % (size + 1) : 0;
   parser.feed(data, split, on_frame);

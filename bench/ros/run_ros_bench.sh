@@ -6,6 +6,7 @@
 #      (target <= wire + 3 ms)
 #   3. CPU and RSS of the driver at full telemetry over BENCH_SECONDS (default 60; target <= 1 %
 #      of a core and <= 30 MB)
+#   4. SKYPORT bridge: getter ACK latency while a pod call is blocked 2 s (target p99 <= 20 ms)
 # Runs on its own ROS master port. Expects a build (scripts/build.sh ros).
 set -o pipefail
 source "$(dirname "$0")/../../scripts/ros_env.sh"
@@ -39,3 +40,6 @@ echo "== driver CPU and RSS over ${seconds} s at full telemetry"
 launch "$K40T_ROOT/launch/sim.launch" sim_link:=/tmp/k40t_bench_res_$$
 /usr/bin/python3 "$K40T_ROOT/bench/ros/driver_resources.py" --seconds "$seconds" --node /k40t/driver
 stop
+
+echo "== SKYPORT getter ACK latency while a pod call is blocked"
+rosrun k40t_driver k40t_skyport_getter_latency 10

@@ -28,6 +28,15 @@ SettingsSync::SettingsSync(ros::NodeHandle private_nh, PodDriver& driver) : driv
   });
   server_ = std::make_unique<dynamic_reconfigure::Server<Config>>(server_mutex_, private_nh);
   server_->setCallback([this](Config& config, uint32_t level) { on_reconfigure(config, level); });
+  // updateConfig() sets every parameter on the master, tens of XML-RPC calls (about 8 ms): a
+  // service's write publishes through this one-shot timer, after the service has answered.
+  publish_timer_ = private_nh.createTimer(
+      ros::Duration(0.001),
+      [this](const ros::TimerEvent&) {
+        boost::recursive_mutex::scoped_lock server_lock(server_mutex_);
+        server_->updateConfig(current_);
+      },
+      /*oneshot=*/true, /*autostart=*/false);
 }
 
 void SettingsSync::on_reconfigure(Config& config, uint32_t) {
@@ -79,11 +88,20 @@ session::AckResult SettingsSync::write(const std::string& name,
                                        const std::function<void(Config&)>& edit) {
   const SettingBinding* binding = find_binding(name);
   if (!binding) return session::AckResult::not_sent("no setting named '" + name + "'");
-  boost::recursive_mutex::scoped_lock server_lock(server_mutex_);
-  Config next = current_;
-  edit(next);
-  const session::AckResult result = apply(*binding, next);
-  if (result.ok()) server_->updateConfig(current_);
+  session::AckResult result;
+  {
+    boost::recursive_mutex::scoped_lock server_lock(server_mutex_);
+    Config next = current_;
+    edit(next);
+    result = apply(*binding, next);
+  }
+  // Re-armed outside the server's mutex: stop() waits for a publication in progress, which
+  // takes that mutex.
+  if (result.ok()) {
+    std::lock_guard<std::mutex> lock(publish_mutex_);
+    publish_timer_.stop();
+    publish_timer_.start();
+  }
   return result;
 }
 

@@ -124,7 +124,8 @@ class Skyport(unittest.TestCase):
 
     def test_payload_state_exchanges(self):
         steps = self.check("payload")
-        self.assertTrue(any("'K40T'" in s for s in steps), steps)
+        # DJI's code sends the app name as the product name (docs/psdk.md P32).
+        self.assertTrue(any("'k40t_test'" in s for s in steps), steps)
 
     def test_check_camera_every_step_passes(self):
         # Photo, photo state until stored, video, record start/stop, focal length until the lens
@@ -251,6 +252,14 @@ class Skyport(unittest.TestCase):
         # A pod event becomes a floating-window message in DJI Pilot.
         self.assertTrue(wait_until(lambda: "recording started" in self.skyport.ok("floating"), 10.0),
                         self.skyport.ok("floating"))
+        # record/status goes silent (the pod sends nothing for 5 s): after 2.5 s the recording state
+        # is unknown, answered 0x01 rather than "recording" for good; known again once it speaks.
+        self.pod.ok("silence 5")
+        self.assertTrue(wait_until(lambda: self.command("record_state")[0] == 0x01, 5.0))
+        def known_recording():
+            code, data = self.command("record_state")
+            return code == 0x00 and data[:1] == b"\x01"
+        self.assertTrue(wait_until(known_recording, 15.0), self.skyport("record_state"))
         code, _ = self.command("record stop")
         self.assertEqual(code, 0x00)
         self.assertTrue(wait_until(lambda: "recording no" in self.pod_status(), 10.0), self.pod_status())
@@ -330,10 +339,22 @@ class Skyport(unittest.TestCase):
 
     def test_get_position_service(self):
         proxy = service("skyport/get_position", GetPosition)
-        response = proxy(base_time=rospy.Time(START_UTC + 20), time_offsets_us=[0, 500000])
+        self.assertTrue(self.utc.wait_for(1, 15.0), "no skyport/utc_time")
+        # 3.7.1: the instants must lie in the 2 s before the newest UTC push; a fractional base
+        # time is honoured (the stamps come back at exactly the instants asked for).
+        newest = self.utc.latest().time_ref
+        base = newest - rospy.Duration(1.25)
+        response = proxy(base_time=base, time_offsets_us=[0, 500000])
         self.assertTrue(response.success, response.message)
         self.assertEqual(len(response.positions), 2)
         self.assertAlmostEqual(response.positions[0].latitude, HOME_LAT, delta=CIRCLE_DEG)
+        self.assertEqual(response.positions[0].header.stamp, base)
+        self.assertEqual(response.positions[1].header.stamp, base + rospy.Duration(0.5))
+        # Outside the window: refused with the reason, nothing asked of the adapter.
+        time.sleep(0.3)  # past the rate limit
+        late = proxy(base_time=newest - rospy.Duration(5), time_offsets_us=[0])
+        self.assertFalse(late.success)
+        self.assertIn("2 s", late.message)
 
     def test_y_diagnostics_error_while_the_adapter_is_silent(self):
         self.assertTrue(self.diagnostics.wait_level("SKYPORT link", DiagnosticStatus.OK, 20.0))
@@ -349,6 +370,29 @@ class Skyport(unittest.TestCase):
         self.assertIn("silent", errors[0])
         self.assertTrue(self.diagnostics.wait_level("SKYPORT link", DiagnosticStatus.OK, 15.0),
                         "not OK again after the silence")
+
+    def test_yy_unplugged_pod_while_dji_pilot_polls(self):
+        # The pod's link is cut (k40t_sim closes it; the driver's status topics stop and its
+        # services fail) while the adapter keeps polling: the bridge answers every getter from the
+        # last known state at once, diagnostics mark that state stale, and nothing piles up.
+        self.assertTrue(self.diagnostics.wait_level("SKYPORT link", DiagnosticStatus.OK, 20.0))
+        before, _ = self.command("gimbal_state")
+        self.assertEqual(before, 0x00)
+        self.pod.ok("disconnect 8")
+        self.assertTrue(wait_until(lambda: self.diagnostics.value("SKYPORT link", "pod state stale") == "True",
+                                   10.0), self.diagnostics.status("SKYPORT link"))
+        codes = []
+        for _ in range(5):
+            for getter in ("gimbal_state", "record_state"):
+                codes.append(self.command(getter)[0])
+            self.command("gimbal_return")  # a pod call: refused or busy, never waited for by getters
+        self.assertEqual(codes, [0x00] * len(codes))
+        status = self.diagnostics.status("SKYPORT link")
+        self.assertIn("stale", status.message)
+        self.assertLessEqual(int(self.diagnostics.value("SKYPORT link", "pod jobs queued")), 8)
+        # Plugged in again: the state is fresh, diagnostics OK.
+        self.assertTrue(wait_until(lambda: self.diagnostics.value("SKYPORT link", "pod state stale") == "False",
+                                   30.0), self.diagnostics.status("SKYPORT link"))
 
     # --- power-off: last (the announcement stays) -------------------------------------------------
 

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <map>
+#include <vector>
 
 #include "k40t_driver/psdk/identity.h"
 #include "k40t_driver/psdk/sim/adapter_simulator.h"
@@ -88,7 +89,14 @@ class TestPayload {
     if (handle_camera_and_gimbal) add_camera_and_gimbal();
   }
 
-  ~TestPayload() { session_->stop(); }  // before the state its handlers use goes
+  ~TestPayload() { session_->stop(); }
+
+  static Data code_data(AckCode code) {
+    Data d;
+    d.bytes[0] = static_cast<uint8_t>(code);
+    d.size = 1;
+    return d;
+  }  // before the state its handlers use goes
 
   Session& session() { return *session_; }
   uint64_t pushes(const std::string& name) {
@@ -127,6 +135,21 @@ class TestPayload {
       return mode_ == CameraWorkMode::kShootPhoto ? AckCode::kOk : AckCode::kError;
     });
     s.handle<GetShootPhotoState>([](const GetShootPhotoState&) { return ShootPhotoStateAck{}; });
+    // 3.4.5/3.4.6 as DJI's headers lay them out (uint16 interval, docs/psdk.md P30), the
+    // simulator's default reading: the set's 5 bytes kept and sent back after the return code.
+    s.on_command(SetShootPhotoMode::key(),
+                 [this](const IncomingCommand& in) -> std::optional<Data> {
+                   if (in.data.size != 5) return code_data(AckCode::kError);
+                   lock_and([&] { photo_mode_.assign(in.data.data(), in.data.data() + 5); });
+                   return code_data(AckCode::kOk);
+                 });
+    s.on_command(GetShootPhotoMode::key(), [this](const IncomingCommand&) -> std::optional<Data> {
+      Data d = code_data(AckCode::kOk);
+      lock_and([&] {
+        for (uint8_t b : photo_mode_) d.bytes[d.size++] = b;
+      });
+      return d;
+    });
     s.handle<RecordVideo>([this](const RecordVideo& c) {
       return lock_and([&] { recording_ = c.action == RecordAction::kStart; });
     });
@@ -218,6 +241,7 @@ class TestPayload {
   FocusMode focus_ = FocusMode::kManual;
   MeteringMode metering_ = MeteringMode::kAverage;
   GimbalAngles angles_;
+  std::vector<uint8_t> photo_mode_;  // the last shoot photo mode set, as sent
 };
 
 // Both sides are stopped before either is destroyed: a running side may still be writing into

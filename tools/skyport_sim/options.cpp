@@ -73,6 +73,13 @@ const std::vector<OptionSpec>& option_table() {
          o.adapter.encryption = false;
          return Status::ok();
        }},
+      {"--payload-layout", "dji_headers|document",
+       "how the checks read the gimbal mode, SD card bits and interval where DJI's headers and the "
+       "document disagree (default dji_headers; docs/psdk.md P28..P30)",
+       [](SkyportSimOptions& o, const std::string& option, const std::string& v) {
+         if (psdk::sim::parse_payload_reading(v, o.adapter.reading)) return Status::ok();
+         return Status::fail(option + ": dji_headers or document, got '" + v + "'");
+       }},
       {"--ack-timeout-ms", "MS", "how long to wait for the payload's ACKs (default 500)",
        [](SkyportSimOptions& o, const std::string& option, const std::string& v) {
          double ms = 0;

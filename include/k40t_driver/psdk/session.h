@@ -107,6 +107,10 @@ class Session {
   // The ACK of `command` (whose header a handler kept), for replies that come later.
   Status send_ack(const FrameHeader& command, const Data& data);
 
+  // Counts a command whose DATA did not decode, for handlers registered with on_command() that
+  // decode it themselves (handle() counts its own).
+  void note_decode_error() { count(&SessionStats::decode_errors); }
+
   // Jumps our sequence counter forward (the simulator's sequence-jump fault).
   void skip_sequence(uint16_t count);
 

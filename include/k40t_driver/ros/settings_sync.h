@@ -78,7 +78,9 @@ class SettingsSync {
 
   // The one write path of a setting, for services (set_palette, set_photo_mode, ...): `edit`
   // changes the configuration, the binding `name` sends its request whether or not the value
-  // changed, and the configuration the server publishes is what the pod accepted. Blocking.
+  // changed, and the configuration the server publishes is what the pod accepted (published a
+  // moment after the return, so that a service answers without the master's round trips).
+  // Blocking.
   session::AckResult write(const std::string& name, const std::function<void(Config&)>& edit);
 
  private:
@@ -94,6 +96,9 @@ class SettingsSync {
   bool initialised_ = false;
   std::set<std::string> set_by_user_;  // bindings applied through reconfigure (server mutex)
   std::mutex read_mutex_;              // one read_from_pod() at a time
+
+  std::mutex publish_mutex_;  // one re-arm of publish_timer_ at a time
+  ros::Timer publish_timer_;  // after server_: stopped (and its callback done) before it goes
 
   mutable std::mutex mutex_;  // guards what follows; never held while waiting for the pod
   std::condition_variable reports_arrived_;

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "k40t_driver/psdk/sim/adapter_simulator.h"
+#include "k40t_driver/psdk/sim/payload_reading.h"
 
 namespace k40t::psdk::sim {
 namespace {
@@ -76,9 +77,36 @@ std::string photo_state_text(const ShootPhotoState& s) {
   return "shooting:" + out;
 }
 
-std::string angles_text(const GimbalAngles& a) {
+std::string angles_text(const GimbalStateReading& a) {
   return "pitch " + std::to_string(a.pitch_deg) + ", roll " + std::to_string(a.roll_deg) +
          ", yaw " + std::to_string(a.yaw_deg) + " deg";
+}
+
+// The gimbal state read with the adapter's own table (payload_reading.h).
+Result<GimbalStateReading> gimbal_state(Session& session, PayloadReading reading) {
+  const AckResult r = session.request_raw(GetGimbalState::key(), nullptr, 0);
+  if (!r.received) return Status::fail(r.message);
+  return read_gimbal_state(r.data, reading);
+}
+
+// poll_until() for the gimbal state.
+template <class Done>
+bool poll_gimbal(Session& session, PayloadReading reading, Done done, GimbalStateReading* last,
+                 std::string* why) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  *why = "no answer";
+  while (std::chrono::steady_clock::now() < until) {
+    const Result<GimbalStateReading> state = gimbal_state(session, reading);
+    if (!state) {
+      *why = state.error();
+    } else {
+      *last = state.value();
+      if (done(*last)) return true;
+      *why = "not within 10 s";
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  return false;
 }
 
 }  // namespace
@@ -143,6 +171,8 @@ CheckReport AdapterSimulator::check_camera() {
   report.add("photo_stored", stored,
              "photo state " + photo_state_text(photo_state.state) + (stored ? "" : ", " + why));
 
+  check_interval_mode(report);
+
   mode.mode = CameraWorkMode::kRecordVideo;
   exchange(s, report, mode, "work mode: video");
   RecordVideo record;
@@ -154,11 +184,20 @@ CheckReport AdapterSimulator::check_camera() {
   exchange(s, report, record, "record stop");
   exchange(s, report, GetRecordState{}, "not recording",
            [](const RecordStateAck& a, std::string&) { return !a.recording; });
-  exchange(s, report, GetSdCardInfo{}, "SD card", [](const SdCardInfoAck& a, std::string& d) {
-    d += a.state.inserted ? ", inserted, " + std::to_string(a.remaining_mb) + " MB free"
-                          : ", no card";
-    return true;
-  });
+  {
+    const AckResult r = s.request_raw(GetSdCardInfo::key(), nullptr, 0);
+    const Result<SdCardReading> sd = r.received ? read_sd_card(r.data, options_.reading)
+                                                : Result<SdCardReading>::fail(r.message);
+    // A card the pod writes to must not read as read-only or faulty in the adapter's layout.
+    const bool healthy = sd && (!sd->inserted || (!sd->read_only && !sd->has_error));
+    report.add(GetSdCardInfo::kName, healthy,
+               !sd ? "SD card: " + sd.error()
+                   : std::string("SD card: ") +
+                         (sd->inserted ? "inserted, " + std::to_string(sd->free_mb) + " MB free" +
+                                             (sd->read_only ? ", READ-ONLY" : "") +
+                                             (sd->has_error ? ", ERROR" : "")
+                                       : "no card"));
+  }
 
   const OpticalZoomSpecAck spec = exchange(s, report, GetOpticalZoomSpec{}, "optical zoom range",
                                            [](const OpticalZoomSpecAck& a, std::string& d) {
@@ -210,23 +249,58 @@ CheckReport AdapterSimulator::check_camera() {
   return report;
 }
 
+// Interval shooting set and read back in the payload's layout (P30), written byte by byte as an
+// adapter of that layout would (3.4.5: type 6, burst 0, count 255 = until stopped, interval 5 s;
+// the headers' interval is a uint16), read with the adapter's own table; then single shots again.
+void AdapterSimulator::check_interval_mode(CheckReport& report) {
+  Session& s = *session_;
+  const bool wide = options_.reading == PayloadReading::kDjiHeaders;
+  const std::vector<uint8_t> interval = wide ? std::vector<uint8_t>{0x06, 0x00, 0xFF, 0x05, 0x00}
+                                             : std::vector<uint8_t>{0x06, 0x00, 0xFF, 0x05};
+  const AckResult set = s.request_raw(SetShootPhotoMode::key(), interval.data(), interval.size());
+  report.add(
+      SetShootPhotoMode::kName, set.ok(),
+      "photo mode: interval 5 s: " + (set.received ? ack_code_text(set.code()) : set.message));
+  ShootPhotoModeReading last;
+  std::string why = "no answer";
+  bool read_back = false;
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (set.ok() && !read_back && std::chrono::steady_clock::now() < until) {
+    const AckResult r = s.request_raw(GetShootPhotoMode::key(), nullptr, 0);
+    const Result<ShootPhotoModeReading> m = r.received
+                                                ? read_shoot_photo_mode(r.data, options_.reading)
+                                                : Result<ShootPhotoModeReading>::fail(r.message);
+    if (m) {
+      last = m.value();
+      read_back = last.type == 0x06 && last.interval_count == 0xFF && last.interval_s == 5;
+      why = "type " + std::to_string(last.type) + ", interval " + std::to_string(last.interval_s) +
+            " s";
+    } else {
+      why = m.error();
+    }
+    if (!read_back) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  report.add(GetShootPhotoMode::kName, read_back, "photo mode reads back: " + why);
+  const std::vector<uint8_t> single = wide ? std::vector<uint8_t>{0x01, 0x00, 0x00, 0x00, 0x00}
+                                           : std::vector<uint8_t>{0x01, 0x00, 0x00, 0x00};
+  const AckResult back = s.request_raw(SetShootPhotoMode::key(), single.data(), single.size());
+  report.add(SetShootPhotoMode::kName, back.ok(),
+             "photo mode: single: " + (back.received ? ack_code_text(back.code()) : back.message));
+}
+
 CheckReport AdapterSimulator::check_gimbal() {
   CheckReport report;
   Session& s = *session_;
   exchange(s, report, GetGimbalCapability{}, "capability",
            [](const GimbalCapabilityAck& a, std::string&) { return a.supported; });
-  const GimbalStateAck state =
-      exchange(s, report, GetGimbalState{}, "state", [](const GimbalStateAck& a, std::string& d) {
-        d += ", " + std::string(to_string(a.mode)) + ", " + angles_text(a.angles);
-        return true;
-      });
+  const Result<GimbalStateReading> state = gimbal_state(s, options_.reading);
+  report.add(GetGimbalState::kName, static_cast<bool>(state),
+             state ? "state: OK, " + state->mode + ", " + angles_text(state.value())
+                   : "state: " + state.error());
   // The mode the gimbal says it is in must be accepted; PSDK lets a gimbal answer 0x02 for a mode
   // it does not have (a pod whose yaw is relative to the aircraft has no free mode), never 0x01.
   SetGimbalMode mode;
-  mode.mode = GimbalMode::kFollowing;
-  for (const GimbalMode m : {GimbalMode::kFree, GimbalMode::kFpv, GimbalMode::kFollowing}) {
-    if (to_state_mode(m) == state.mode) mode.mode = m;
-  }
+  mode.mode = state ? static_cast<GimbalMode>(state->set_mode_code) : GimbalMode::kFollowing;
   exchange(s, report, mode, std::string("mode: ") + to_string(mode.mode) + " (its own)");
   mode.mode = GimbalMode::kFree;
   const Result<SetGimbalMode::Ack> free = s.request(mode);
@@ -240,17 +314,15 @@ CheckReport AdapterSimulator::check_gimbal() {
   angle.pitch_deg = -30.0f;
   angle.yaw_deg = 20.0f;
   exchange(s, report, angle, "angle pitch -30, yaw 20 deg");
-  GimbalStateAck last;
+  GimbalStateReading last;
   std::string why;
-  const bool reached = poll_until(
-      s, GetGimbalState{},
-      [](const GimbalStateAck& a) {
-        return std::abs(a.angles.pitch_deg + 30.0) <= 2.0 &&
-               std::abs(a.angles.yaw_deg - 20.0) <= 2.0;
+  const bool reached = poll_gimbal(
+      s, options_.reading,
+      [](const GimbalStateReading& a) {
+        return std::abs(a.pitch_deg + 30.0) <= 2.0 && std::abs(a.yaw_deg - 20.0) <= 2.0;
       },
       &last, &why);
-  report.add("gimbal_reaches_angle", reached,
-             angles_text(last.angles) + (reached ? "" : ", " + why));
+  report.add("gimbal_reaches_angle", reached, angles_text(last) + (reached ? "" : ", " + why));
 
   ControlGimbalSpeed speed;
   speed.yaw_rate_deg_s = 10.0;
@@ -260,14 +332,13 @@ CheckReport AdapterSimulator::check_gimbal() {
   exchange(s, report, speed, "speed control stop");
 
   exchange(s, report, GimbalReturnHead{}, "return head");
-  const bool centred = poll_until(
-      s, GetGimbalState{},
-      [](const GimbalStateAck& a) {
-        return std::abs(a.angles.pitch_deg) <= 2.0 && std::abs(a.angles.yaw_deg) <= 2.0;
+  const bool centred = poll_gimbal(
+      s, options_.reading,
+      [](const GimbalStateReading& a) {
+        return std::abs(a.pitch_deg) <= 2.0 && std::abs(a.yaw_deg) <= 2.0;
       },
       &last, &why);
-  report.add("gimbal_returns_to_centre", centred,
-             angles_text(last.angles) + (centred ? "" : ", " + why));
+  report.add("gimbal_returns_to_centre", centred, angles_text(last) + (centred ? "" : ", " + why));
 
   exchange(s, report, CalibrateGimbal{}, "calibration");
   exchange(s, report, GetCalibrationProgress{}, "calibration progress",

@@ -1,9 +1,13 @@
 #include "k40t_driver/ros/skyport/ros_pod_port.h"
 
+#include <algorithm>
+
 #include <dynamic_reconfigure/Reconfigure.h>
 #include <geometry_msgs/Twist.h>
 #include <ros/service.h>
 #include <std_srvs/Trigger.h>
+#include <tf2/LinearMath/Matrix3x3.h>
+#include <tf2/LinearMath/Quaternion.h>
 
 #include "k40t_driver/Calibrate.h"
 #include "k40t_driver/Focus.h"
@@ -19,7 +23,8 @@
 namespace k40t::driver::skyport {
 
 namespace {
-// record/status comes at 1 Hz while recording; older than this, the pod has stopped.
+// record/status comes at 1 Hz while recording, and at start and stop. Silent for longer than this
+// after it said "recording" (or after a start it accepted), the pod's recording is unknown.
 constexpr double kRecordStatusFresh_s = 2.5;
 
 bool ends_with(const std::string& s, const std::string& tail) {
@@ -35,18 +40,45 @@ RosPodPort::RosPodPort(ros::NodeHandle nh, std::string reconfigure, double servi
       events_(std::move(events)) {
   cmd_rate_ = nh_.advertise<geometry_msgs::Twist>("gimbal/cmd_rate", 1);
   joints_ = nh_.subscribe("joint_states", 1, &RosPodPort::on_joints, this);
+  attitude_ = nh_.subscribe("gimbal/attitude", 1, &RosPodPort::on_attitude, this);
   camera_ = nh_.subscribe("camera/status", 1, &RosPodPort::on_camera, this);
   visible_ = nh_.subscribe("visible/status", 1, &RosPodPort::on_visible, this);
   record_ = nh_.subscribe("record/status", 1, &RosPodPort::on_record, this);
   photo_ = nh_.subscribe("photo/status", 10, &RosPodPort::on_photo, this);
+  upgrade_ = nh_.subscribe("camera/upgrade_status", 10, &RosPodPort::on_upgrade, this);
+}
+
+template <class Srv>
+bool RosPodPort::client(const std::string& name, ros::ServiceClient& out, std::string& why) {
+  {
+    std::lock_guard<std::mutex> lock(clients_mutex_);
+    const auto it = clients_.find(name);
+    if (it != clients_.end() && it->second.isValid()) {
+      out = it->second;
+      return true;
+    }
+  }
+  ros::ServiceClient made = nh_.serviceClient<Srv>(name, /*persistent=*/true);
+  if (!made.waitForExistence(timeout_)) {
+    why = "the driver's service " + made.getService() + " is not there";
+    return false;
+  }
+  std::lock_guard<std::mutex> lock(clients_mutex_);
+  clients_[name] = made;
+  out = made;
+  return true;
 }
 
 template <class Srv>
 PodCall RosPodPort::call(const std::string& name, Srv& srv) {
-  ros::ServiceClient client = nh_.serviceClient<Srv>(name);
-  if (!client.waitForExistence(timeout_))
-    return {false, "the driver's service " + client.getService() + " is not there"};
-  if (!client.call(srv)) return {false, "call of " + client.getService() + " failed"};
+  ros::ServiceClient c;
+  std::string why;
+  if (!client<Srv>(name, c, why)) return {false, why};
+  if (!c.call(srv)) {
+    std::lock_guard<std::mutex> lock(clients_mutex_);
+    clients_.erase(name);  // the connection broke (driver restarted?): a new one next time
+    return {false, "call of " + c.getService() + " failed"};
+  }
   PodCall result{static_cast<bool>(srv.response.success), srv.response.message};
   // The driver's refusal message carries the pod's response text ("... refused by the pod:
   // taking photo (response code 0x0203)").
@@ -61,10 +93,14 @@ PodCall RosPodPort::reconfigure_int(const std::string& name, int value) {
   p.name = name;
   p.value = value;
   srv.request.config.ints.push_back(p);
-  ros::ServiceClient client = nh_.serviceClient<dynamic_reconfigure::Reconfigure>(reconfigure_);
-  if (!client.waitForExistence(timeout_))
-    return {false, "the driver's " + client.getService() + " is not there"};
-  if (!client.call(srv)) return {false, "call of " + client.getService() + " failed"};
+  ros::ServiceClient c;
+  std::string why;
+  if (!client<dynamic_reconfigure::Reconfigure>(reconfigure_, c, why)) return {false, why};
+  if (!c.call(srv)) {
+    std::lock_guard<std::mutex> lock(clients_mutex_);
+    clients_.erase(reconfigure_);
+    return {false, "call of " + c.getService() + " failed"};
+  }
   for (const auto& applied : srv.response.config.ints) {
     if (applied.name == name)
       return {applied.value == value, applied.value == value ? "ok" : name + " not applied"};
@@ -86,8 +122,12 @@ PodCall RosPodPort::record(bool start) {
   PodCall result = call("record", srv);
   if (result.ok) {
     std::lock_guard<std::mutex> lock(mutex_);
-    recording_commanded_ = start;
-    if (!start) state_.recording = false;
+    if (start) {
+      record_commanded_at_ = ros::Time::now();
+    } else {
+      record_commanded_at_ = ros::Time();
+      state_.recording = false;
+    }
   }
   return result;
 }
@@ -179,10 +219,23 @@ PodCall RosPodPort::measure_range(double& range_m) {
 PodSnapshot RosPodPort::snapshot() const {
   std::lock_guard<std::mutex> lock(mutex_);
   PodSnapshot out = state_;
-  const bool fresh = !record_status_at_.isZero() &&
-                     (ros::Time::now() - record_status_at_).toSec() < kRecordStatusFresh_s;
-  out.recording = recording_commanded_ || (fresh && state_.recording);
+  const ros::Time now = ros::Time::now();
+  const auto recent = [&now](const ros::Time& t) {
+    return !t.isZero() && (now - t).toSec() < kRecordStatusFresh_s;
+  };
+  // A start the pod accepted counts as recording until record/status confirms or denies it; a
+  // "recording" state counts while record/status keeps coming. Either gone silent: unknown.
+  const bool started = !record_commanded_at_.isZero();
+  const bool said_recording = state_.recording;
+  out.recording =
+      (started && recent(record_commanded_at_)) || (said_recording && recent(record_status_at_));
+  out.recording_known = out.recording || (!started && !said_recording);
+  out.state_age_s = heard_at_.isZero() ? -1.0 : std::max(0.0, (now - heard_at_).toSec());
   return out;
+}
+
+void RosPodPort::pod_heard() {
+  heard_at_ = ros::Time::now();
 }
 
 void RosPodPort::on_joints(const sensor_msgs::JointState::ConstPtr& msg) {
@@ -201,6 +254,19 @@ void RosPodPort::on_joints(const sensor_msgs::JointState::ConstPtr& msg) {
     }
   }
   state_.have_joints = true;
+  pod_heard();
+}
+
+void RosPodPort::on_attitude(const geometry_msgs::QuaternionStamped::ConstPtr& msg) {
+  // The driver builds it as Rz(yaw) Ry(pitch) Rx(roll) of the pod's attitude angles (REP 103).
+  double roll = 0, pitch = 0, yaw = 0;
+  const auto& q = msg->quaternion;
+  tf2::Matrix3x3(tf2::Quaternion(q.x, q.y, q.z, q.w).normalized()).getRPY(roll, pitch, yaw);
+  std::lock_guard<std::mutex> lock(mutex_);
+  state_.have_attitude = true;
+  state_.attitude_roll_rad = roll;
+  state_.attitude_pitch_rad = pitch;
+  state_.attitude_yaw_rad = yaw;
 }
 
 void RosPodPort::on_camera(const k40t_driver::CameraStatus::ConstPtr& msg) {
@@ -218,6 +284,7 @@ void RosPodPort::on_camera(const k40t_driver::CameraStatus::ConstPtr& msg) {
     state_.image_mode = msg->image_mode;
     state_.sd_total_mb = msg->sd_total_mb;
     state_.sd_free_mb = msg->sd_free_mb;
+    pod_heard();
   }
   if (became_full && events_) events_("K40T: SD card full");
 }
@@ -227,12 +294,20 @@ void RosPodPort::on_visible(const k40t_driver::VisibleStatus::ConstPtr& msg) {
   state_.have_visible = true;
   state_.zoom_ratio = msg->zoom_ratio;
   state_.focal_length_mm = msg->focal_length_mm;
+  pod_heard();
 }
 
 void RosPodPort::on_photo(const k40t_driver::PhotoStatus::ConstPtr& msg) {
   std::lock_guard<std::mutex> lock(mutex_);
   ++state_.photo_status_count;
   state_.photo_state = msg->state;
+}
+
+void RosPodPort::on_upgrade(const k40t_driver::CameraUpgradeStatus::ConstPtr& msg) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++state_.repair_status_count;
+  state_.repair_state = msg->state;
+  state_.repair_percent = msg->progress_percent;
 }
 
 void RosPodPort::on_record(const k40t_driver::RecordStatus::ConstPtr& msg) {
@@ -248,7 +323,7 @@ void RosPodPort::on_record(const k40t_driver::RecordStatus::ConstPtr& msg) {
     state_.recording = recording;
     state_.record_duration_s = msg->duration_s;
     record_status_at_ = ros::Time::now();
-    if (!recording) recording_commanded_ = false;
+    record_commanded_at_ = ros::Time();  // the pod's own word replaces the command's
   }
   if (started && events_) events_("K40T: recording started");
   if (stopped && events_) events_("K40T: recording stopped (" + msg->state_text + ")");

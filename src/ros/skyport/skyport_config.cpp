@@ -1,9 +1,36 @@
 #include "k40t_driver/ros/skyport/skyport_config.h"
 
+#include <cstdio>
+
 #include "k40t_driver/psdk/app_key_file.h"
 #include "k40t_driver/ros/param_reader.h"
 
 namespace k40t::driver::skyport {
+
+namespace {
+// "A.B.C.D", each 0..255 (3.1.2: 0xAABBCCDD is version AA.BB.CC.DD).
+bool parse_version(const std::string& text, psdk::Version& out) {
+  unsigned a = 0, b = 0, c = 0, d = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%u.%u.%u.%u%c", &a, &b, &c, &d, &tail) != 4) return false;
+  if (a > 255 || b > 255 || c > 255 || d > 255) return false;
+  out = psdk::Version{static_cast<uint8_t>(a), static_cast<uint8_t>(b), static_cast<uint8_t>(c),
+                      static_cast<uint8_t>(d)};
+  return true;
+}
+
+void read_layout(ParamReader& p, const std::string& name, psdk::PsdkLayout& out) {
+  const std::string text = p.get<std::string>(name, psdk::to_string(out));
+  if (!psdk::parse_psdk_layout(text, out))
+    p.fail(name, "must be dji_headers or document, got '" + text + "'");
+}
+
+void read_version(ParamReader& p, const std::string& name, psdk::Version& out) {
+  const std::string text = p.get<std::string>(name, "");
+  if (!text.empty() && !parse_version(text, out))
+    p.fail(name, "must be a version A.B.C.D (each 0..255), got '" + text + "'");
+}
+}  // namespace
 
 Result<SkyportConfig> read_skyport_config(const ros::NodeHandle& nh) {
   SkyportConfig c;
@@ -28,8 +55,30 @@ Result<SkyportConfig> read_skyport_config(const ros::NodeHandle& nh) {
   c.encryption = p.get("encryption", c.encryption);
   c.bridge.app_key = c.credentials.app_key;
   c.bridge.developer_account = c.credentials.developer_account;
-  c.bridge.product_name = p.get("product_name", c.bridge.product_name);
+  // DJI's code sends the app name and the app id as product name and id (docs/psdk.md P32).
+  c.bridge.product_name =
+      p.get("product_name",
+            c.credentials.app_name.empty() ? c.bridge.product_name : c.credentials.app_name);
   c.bridge.alias = p.get("alias", c.bridge.alias);
+  c.bridge.product_id = p.get(
+      "product_id", c.credentials.app_id.empty() ? c.bridge.product_id : c.credentials.app_id);
+  // 3.1.4: 32- and 16-byte text fields ending with NUL (docs/psdk.md P3).
+  if (c.bridge.product_name.size() > 31)
+    p.fail("product_name",
+           "at most 31 bytes (3.1.4), got " + std::to_string(c.bridge.product_name.size()));
+  if (c.bridge.product_id.size() > 15)
+    p.fail("product_id",
+           "at most 15 bytes (3.1.4), got " + std::to_string(c.bridge.product_id.size()));
+  read_version(p, "firmware_version", c.bridge.firmware);
+  read_layout(p, "gimbal_mode_layout", c.bridge.gimbal_mode_layout);
+  read_layout(p, "sd_card_layout", c.bridge.sd_card_layout);
+  read_layout(p, "interval_layout", c.bridge.interval_layout);
+  read_layout(p, "gimbal_angle_layout", c.bridge.gimbal_angle_layout);
+  read_version(p, "skyport_version", c.bridge.skyport_version);
+  c.bridge.max_queued_jobs =
+      static_cast<size_t>(p.number("max_queued_jobs", double(c.bridge.max_queued_jobs), 1, 1000));
+  c.bridge.calibration_report_timeout_s =
+      p.number("calibration_report_timeout", c.bridge.calibration_report_timeout_s, 0.1, 3600);
   c.bridge.tele_focal_length_mm =
       p.number("tele_focal_length_mm", c.bridge.tele_focal_length_mm, 0.1, 1000);
   c.bridge.max_optical_zoom = p.number("max_optical_zoom", c.bridge.max_optical_zoom, 1, 1000);
@@ -46,6 +95,9 @@ Result<SkyportConfig> read_skyport_config(const ros::NodeHandle& nh) {
   c.ack_timeout_s = p.number("ack_timeout", c.ack_timeout_s, 0.01, 60);
   c.silence_timeout_s = p.number("silence_timeout", c.silence_timeout_s, 0.01, 60);
   c.diagnostic_period_s = p.number("diagnostic_period", c.diagnostic_period_s, 0.01, 60);
+  c.pps_topic = p.get("pps_topic", c.pps_topic);
+  c.pod_stale_s = p.number("pod_stale_timeout", c.pod_stale_s, 0.1, 3600);
+  c.position_min_interval_s = p.number("position_min_interval", c.position_min_interval_s, 0, 60);
   if (!p.error().empty()) return Status::fail(p.error());
   return c;
 }

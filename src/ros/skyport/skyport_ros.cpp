@@ -12,8 +12,6 @@
 #include <sensor_msgs/TimeReference.h>
 #include <std_msgs/Bool.h>
 #include <std_msgs/Float32.h>
-#include <tf2/LinearMath/Matrix3x3.h>
-#include <tf2/LinearMath/Quaternion.h>
 
 #include "k40t_driver/BarometricAltitude.h"
 #include "k40t_driver/LinkBandwidth.h"
@@ -26,51 +24,6 @@
 namespace k40t::driver::skyport {
 
 using namespace psdk;
-
-namespace {
-
-constexpr double kDegPerRad = 180.0 / M_PI;
-
-ros::Time unix_time(const DateTime& t, uint32_t microsecond) {
-  std::tm tm{};
-  tm.tm_year = t.year - 1900;
-  tm.tm_mon = t.month - 1;
-  tm.tm_mday = t.day;
-  tm.tm_hour = t.hour;
-  tm.tm_min = t.minute;
-  tm.tm_sec = t.second;
-  const time_t seconds = timegm(&tm);
-  return ros::Time(static_cast<uint32_t>(std::max<time_t>(seconds, 0)), microsecond * 1000);
-}
-
-// NED velocity in cm/s -> ENU m/s.
-geometry_msgs::TwistStamped enu_velocity(const ros::Time& stamp, const std::string& frame,
-                                         double north_cm_s, double east_cm_s, double down_cm_s) {
-  geometry_msgs::TwistStamped out;
-  out.header.stamp = stamp;
-  out.header.frame_id = frame;
-  out.twist.linear.x = east_cm_s / 100.0;
-  out.twist.linear.y = north_cm_s / 100.0;
-  out.twist.linear.z = -down_cm_s / 100.0;
-  return out;
-}
-
-sensor_msgs::NavSatFix fix_message(const ros::Time& stamp, const std::string& frame,
-                                   double latitude_deg, double longitude_deg, double altitude_m,
-                                   int8_t status) {
-  sensor_msgs::NavSatFix fix;
-  fix.header.stamp = stamp;
-  fix.header.frame_id = frame;
-  fix.latitude = latitude_deg;
-  fix.longitude = longitude_deg;
-  fix.altitude = altitude_m;
-  fix.status.status = status;
-  fix.status.service = sensor_msgs::NavSatStatus::SERVICE_GPS;
-  fix.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN;
-  return fix;
-}
-
-}  // namespace
 
 Result<std::unique_ptr<SkyportRos>> SkyportRos::create(ros::NodeHandle nh,
                                                        ros::NodeHandle private_nh) {
@@ -177,149 +130,16 @@ void SkyportRos::advertise() {
     feed_attitude_ = nh_.advertise<sensor_msgs::Imu>("attitude", 10);
     feed_time_ = nh_.advertise<sensor_msgs::TimeReference>("time_reference", 10);
   }
+  if (!config_.pps_topic.empty()) {
+    pps_ = nh_.subscribe<sensor_msgs::TimeReference>(
+        config_.pps_topic, 10, [this](const sensor_msgs::TimeReference::ConstPtr& edge) {
+          std::lock_guard<std::mutex> lock(mutex_);
+          last_pps_edge_ = edge->header.stamp;
+        });
+  }
   to_mobile_ = nh_.subscribe("skyport/transparent/to_mobile", 10, &SkyportRos::on_to_mobile, this);
   to_onboard_ =
       nh_.subscribe("skyport/transparent/to_onboard", 10, &SkyportRos::on_to_onboard, this);
-}
-
-void SkyportRos::register_pushes() {
-  session_->handle<AttitudePush>([this](const AttitudePush& p) {
-    const ros::Time now = ros::Time::now();
-    geometry_msgs::QuaternionStamped q;  // as pushed: body (FRD) -> NED
-    q.header.stamp = now;
-    q.header.frame_id = "ned";
-    q.quaternion.w = p.q0;
-    q.quaternion.x = p.q1;
-    q.quaternion.y = p.q2;
-    q.quaternion.z = p.q3;
-    attitude_.publish(q);
-    // REP 103: base_link (FLU) in ENU. Same roll, pitch negated, yaw from east counter-clockwise.
-    double roll = 0, pitch = 0, yaw = 0;
-    tf2::Matrix3x3(tf2::Quaternion(p.q1, p.q2, p.q3, p.q0).normalized()).getRPY(roll, pitch, yaw);
-    tf2::Quaternion enu;
-    enu.setRPY(roll, -pitch, M_PI / 2 - yaw);
-    sensor_msgs::Imu imu;
-    imu.header.stamp = now;
-    imu.header.frame_id = config_.base_frame;
-    imu.orientation.x = enu.x();
-    imu.orientation.y = enu.y();
-    imu.orientation.z = enu.z();
-    imu.orientation.w = enu.w();
-    imu.angular_velocity_covariance[0] = -1;  // not pushed
-    imu.linear_acceleration_covariance[0] = -1;
-    imu_.publish(imu);
-    if (config_.feed_pod) feed_attitude_.publish(imu);
-  });
-  session_->handle<GpsPush>([this](const GpsPush& p) {
-    const ros::Time now = ros::Time::now();
-    // The fused position carries only the height above take-off: altitude unknown (NaN).
-    gps_.publish(fix_message(now, config_.world_frame, p.latitude_rad * kDegPerRad,
-                             p.longitude_rad * kDegPerRad, std::nan(""),
-                             p.signal == GpsSignal::kNone ? sensor_msgs::NavSatStatus::STATUS_NO_FIX
-                                                          : sensor_msgs::NavSatStatus::STATUS_FIX));
-    std_msgs::Float32 height;
-    height.data = static_cast<float>(p.relative_height_m);
-    relative_height_.publish(height);
-  });
-  session_->handle<RawGpsPush>([this](const RawGpsPush& p) {
-    const ros::Time now = ros::Time::now();
-    sensor_msgs::NavSatFix fix =
-        fix_message(now, config_.world_frame, p.latitude_deg, p.longitude_deg, p.height_m,
-                    p.fix_state >= 3 ? sensor_msgs::NavSatStatus::STATUS_FIX
-                                     : sensor_msgs::NavSatStatus::STATUS_NO_FIX);
-    const double h = p.horizontal_accuracy_mm / 1000.0, v = p.vertical_accuracy_mm / 1000.0;
-    fix.position_covariance = {h * h, 0, 0, 0, h * h, 0, 0, 0, v * v};
-    fix.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_DIAGONAL_KNOWN;
-    raw_gps_.publish(fix);
-    raw_gps_velocity_.publish(enu_velocity(now, config_.world_frame, p.velocity_north_cm_s,
-                                           p.velocity_east_cm_s, p.velocity_down_cm_s));
-    if (config_.feed_pod && config_.feed_fix == "raw_gps") feed_fix_.publish(fix);
-  });
-  session_->handle<RawRtkPush>([this](const RawRtkPush& p) {
-    const ros::Time now = ros::Time::now();
-    // Position type 0: no solution; 50 (narrow integer): RTK fixed (DJI's numbering).
-    const int8_t status = p.position_type == 0    ? sensor_msgs::NavSatStatus::STATUS_NO_FIX
-                          : p.position_type >= 50 ? sensor_msgs::NavSatStatus::STATUS_GBAS_FIX
-                                                  : sensor_msgs::NavSatStatus::STATUS_FIX;
-    const sensor_msgs::NavSatFix fix =
-        fix_message(now, config_.world_frame, p.latitude_deg, p.longitude_deg, p.height_m, status);
-    rtk_.publish(fix);
-    rtk_velocity_.publish(enu_velocity(now, config_.world_frame, p.velocity_north_cm_s,
-                                       p.velocity_east_cm_s, p.velocity_down_cm_s));
-    if (config_.feed_pod && config_.feed_fix == "rtk") feed_fix_.publish(fix);
-  });
-  session_->handle<UavStatePush>([this](const UavStatePush& p) {
-    k40t_driver::UavState out;
-    out.header.stamp = ros::Time::now();
-    out.compass_abnormal = p.state.compass_abnormal;
-    out.motors_rotating = p.state.motors_rotating;
-    out.landing = static_cast<uint8_t>(p.state.landing);
-    out.flight_time_s = static_cast<float>(p.flight_time_s);
-    out.drone_type = static_cast<uint8_t>(p.drone_type);
-    const char* text = to_string(p.drone_type);
-    out.drone_type_text = text ? text : "unknown";
-    uav_state_.publish(out);
-  });
-  session_->handle<LinkBandwidthPush>([this](const LinkBandwidthPush& p) {
-    k40t_driver::LinkBandwidth out;
-    out.header.stamp = ros::Time::now();
-    out.image_link_normal = p.image_link_normal;
-    out.max_image_link_bandwidth = p.max_image_link_bandwidth;
-    out.remote_controller_connected = p.connection.remote_controller_connected;
-    out.image_downlink_connected = p.connection.image_downlink_connected;
-    out.data_downlink_connected = p.connection.data_downlink_connected;
-    out.app_connected = p.connection.app_connected;
-    out.msdk_uplink_max_bytes_s = p.msdk_uplink_max_bytes_s;
-    out.msdk_downlink_max_bytes_s = p.msdk_downlink_max_bytes_s;
-    out.msdk_uplink_bytes_s = p.msdk_uplink_bytes_s;
-    out.msdk_downlink_bytes_s = p.msdk_downlink_bytes_s;
-    out.network_max_kbit_s = p.network_max_kbit_s;
-    out.network_video_kbit_s = p.network_video_kbit_s;
-    out.network_data_kbit_s = p.network_data_kbit_s;
-    out.osdk_uplink_max_bytes_s = p.osdk_uplink_max_bytes_s;
-    out.osdk_uplink_bytes_s = p.osdk_uplink_bytes_s;
-    link_.publish(out);
-  });
-  session_->handle<BarometricAltitudePush>([this](const BarometricAltitudePush& p) {
-    k40t_driver::BarometricAltitude out;
-    out.header.stamp = ros::Time::now();
-    out.altitude_m = p.altitude_m;
-    baro_.publish(out);
-  });
-  session_->handle<AppDateTimePush>([this](const AppDateTimePush& p) {
-    sensor_msgs::TimeReference out;
-    out.header.stamp = ros::Time::now();
-    out.time_ref = unix_time(p.time, 0);
-    out.source = "dji_app";
-    app_time_.publish(out);
-  });
-  session_->handle<UtcTimePush>([this](const UtcTimePush& p) {
-    // Sent once per PPS pulse: the UTC time of the pulse, received just after it.
-    sensor_msgs::TimeReference out;
-    out.header.stamp = ros::Time::now();
-    out.time_ref = unix_time(p.time, p.microsecond);
-    out.source = "skyport_pps";
-    utc_time_.publish(out);
-    if (config_.feed_pod) feed_time_.publish(out);
-  });
-  const auto publish_other = [this] {
-    k40t_driver::OtherPayload out;
-    out.header.stamp = ros::Time::now();
-    out.type = other_payload_type_;
-    const char* text = to_string(static_cast<OtherPayloadType>(other_payload_type_));
-    out.type_text = text ? text : "unknown";
-    out.focal_length_mm = other_payload_focal_mm_;
-    other_payload_.publish(out);
-  };
-  session_->handle<OtherPayloadTypePush>([this, publish_other](const OtherPayloadTypePush& p) {
-    other_payload_type_ = static_cast<uint8_t>(p.type);
-    publish_other();
-  });
-  session_->handle<OtherPayloadFocalLengthPush>(
-      [this, publish_other](const OtherPayloadFocalLengthPush& p) {
-        other_payload_focal_mm_ = static_cast<float>(p.focal_length_mm);
-        publish_other();
-      });
 }
 
 void SkyportRos::register_transparent() {
@@ -358,47 +178,6 @@ void SkyportRos::on_to_onboard(const std_msgs::UInt8MultiArray::ConstPtr& msg) {
   send_chunks(*session_, TransparentToOnboard::key(), msg->data, kMaxOsdkTransparent);
 }
 
-bool SkyportRos::on_get_position(k40t_driver::GetPosition::Request& req,
-                                 k40t_driver::GetPosition::Response& res) {
-  GetPosition request;
-  if (req.time_offsets_us.empty() || req.time_offsets_us.size() > 4) {
-    res.message = "time_offsets_us: 1..4 points, got " + std::to_string(req.time_offsets_us.size());
-    return true;
-  }
-  const std::time_t base = static_cast<std::time_t>(req.base_time.sec);
-  std::tm tm{};
-  gmtime_r(&base, &tm);
-  request.base_time =
-      DateTime{static_cast<uint16_t>(tm.tm_year + 1900), static_cast<uint8_t>(tm.tm_mon + 1),
-               static_cast<uint8_t>(tm.tm_mday),         static_cast<uint8_t>(tm.tm_hour),
-               static_cast<uint8_t>(tm.tm_min),          static_cast<uint8_t>(tm.tm_sec)};
-  request.count = static_cast<uint8_t>(req.time_offsets_us.size());
-  for (size_t i = 0; i < req.time_offsets_us.size(); ++i) {
-    request.points[i].time_offset_us = req.time_offsets_us[i];
-    request.points[i].event.event_index = static_cast<uint16_t>(i);
-  }
-  const Result<GetPositionAck> ack = session_->request(request);
-  if (!ack) {
-    res.message = ack.error();
-    return true;
-  }
-  if (ack->code != AckCode::kOk) {
-    res.message = "the adapter answered " + ack_code_text(static_cast<uint8_t>(ack->code));
-    return true;
-  }
-  for (size_t i = 0; i < ack->count && i < ack->points.size(); ++i) {
-    const TargetPosition& p = ack->points[i];
-    sensor_msgs::NavSatFix fix = fix_message(req.base_time + ros::Duration(p.time_offset_us * 1e-6),
-                                             config_.world_frame, p.latitude_deg, p.longitude_deg,
-                                             p.height_m, sensor_msgs::NavSatStatus::STATUS_FIX);
-    res.positions.push_back(fix);
-    res.solutions.push_back(static_cast<uint8_t>(p.solution));
-  }
-  res.success = true;
-  res.message = "ok";
-  return true;
-}
-
 void SkyportRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   const SessionStats s = session_->stats();
   const BridgeStats b = bridge_->stats();
@@ -409,6 +188,8 @@ void SkyportRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
       silent_s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - *last_frame_).count();
   }
+  const double pod_age_s = pod_->snapshot().state_age_s;
+  const bool pod_stale = pod_age_s < 0 || pod_age_s > config_.pod_stale_s;
   const transport::LinkState link = session_->link_state();
   if (link != transport::LinkState::kConnected) {
     status.summary(diagnostic_msgs::DiagnosticStatus::ERROR,
@@ -421,6 +202,9 @@ void SkyportRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
     status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "identity verification refused");
   } else if (b.power_off_announced) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "the aircraft announces power-off");
+  } else if (pod_stale) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "the pod's state is stale: getters answer from the last known state");
   } else {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, "pushes arriving, identity answered");
   }
@@ -441,6 +225,14 @@ void SkyportRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   status.add("pod calls", b.pod_calls);
   status.add("pod call failures", b.pod_call_failures);
   status.add("power-off ready", b.power_off_ready);
+  status.add("invalid commands refused", b.invalid_commands);
+  status.add("busy answers (work queue full)", b.busy_answers);
+  status.add("pod jobs queued", b.queued_jobs);
+  status.add("pod state age (s)", pod_age_s);
+  status.add("pod state stale", pod_stale);
+  status.add("UTC pushes dropped (invalid)", utc_pushes_invalid_.load());
+  status.add("UTC pushes dropped (over 500 ms after the PPS edge)", utc_pushes_late_.load());
+  status.add("UTC pushes stamped at reception (no PPS source)", utc_pushes_unchecked_.load());
 }
 
 }  // namespace k40t::driver::skyport

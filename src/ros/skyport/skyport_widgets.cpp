@@ -1,7 +1,9 @@
 // DJI Pilot widgets of the K40T (APP function set 0x02, ids 0x04..0x08, sections 3.2.4..3.2.8):
 //   0 choose list "Palette"      ten of the pod's 20 thermal palettes (dynamic_reconfigure)
 //   1 choose list "Image mode"   thermal, visible, split screen (dynamic_reconfigure)
-//   2 button      "Laser range"  one ranging (laser/measure); the result as a floating window
+//   2 button      "Laser range"  one ranging (laser/measure) per press (value 1 = pressed down, 0 =
+//                                released, as DJI's headers number the button states); the result
+//                                as a floating window
 //   3 switch      "Record"       record start/stop; reads back the pod's recording state
 // All values fit one group.
 #include <array>
@@ -93,12 +95,17 @@ void SkyportBridge::register_widgets() {
     ack.count = 1;
     return ack;
   });
-  deferred<GetWidgetGroupData>([this](const GetWidgetGroupData& c) {
+  session_.handle<GetWidgetGroupData>([this](const GetWidgetGroupData& c) {
     if (c.group != 0) return refused<WidgetGroupDataAck>(AckCode::kError);
     const PodSnapshot s = pod_.snapshot();
     WidgetGroupDataAck ack;
     ack.count = kWidgetCount;
-    ack.widgets[kPalette] = {WidgetType::kChooseList, kPalette, palette_item_};
+    int32_t palette_item = 0;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      palette_item = palette_item_;
+    }
+    ack.widgets[kPalette] = {WidgetType::kChooseList, kPalette, palette_item};
     ack.widgets[kImageMode] = {WidgetType::kChooseList, kImageMode, image_mode_item(s.image_mode)};
     ack.widgets[kLaser] = {WidgetType::kButton, kLaser, 0};
     ack.widgets[kRecord] = {WidgetType::kSwitch, kRecord, s.recording ? 1 : 0};
@@ -111,15 +118,25 @@ AckCode SkyportBridge::set_widget(const WidgetValue& widget) {
   const int32_t v = widget.value;
   switch (widget.index) {
     case kPalette: {
-      if (v < 0 || v >= static_cast<int32_t>(kPalettes.size())) return AckCode::kError;
+      if (v < 0 || v >= static_cast<int32_t>(kPalettes.size()))
+        return invalid("palette widget: no item " + std::to_string(v));
       const AckCode code = pod_code(pod_.set_palette(kPalettes[v].pod_value), "palette widget");
-      if (code == AckCode::kOk) palette_item_ = v;
+      if (code == AckCode::kOk) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        palette_item_ = v;
+      }
       return code;
     }
     case kImageMode:
-      if (v < 0 || v >= static_cast<int32_t>(kImageModes.size())) return AckCode::kError;
+      if (v < 0 || v >= static_cast<int32_t>(kImageModes.size()))
+        return invalid("image mode widget: no item " + std::to_string(v));
       return pod_code(pod_.set_image_mode(kImageModes[v].pod_value), "image mode widget");
     case kLaser: {
+      // One tap is a press then a release: range on the press only, once until released.
+      if (v != 0 && v != 1) return invalid("laser button: value " + std::to_string(v));
+      const bool was_pressed = laser_pressed_;
+      laser_pressed_ = v == 1;
+      if (v == 0 || was_pressed) return AckCode::kOk;
       double range_m = 0;
       const AckCode code = pod_code(pod_.measure_range(range_m), "laser widget");
       if (code != AckCode::kOk) return code;
@@ -133,10 +150,10 @@ AckCode SkyportBridge::set_widget(const WidgetValue& widget) {
       return code;
     }
     case kRecord:
-      if (v != 0 && v != 1) return AckCode::kError;
+      if (v != 0 && v != 1) return invalid("record switch: value " + std::to_string(v));
       return pod_code(pod_.record(v == 1), "record widget");
     default:
-      return AckCode::kError;
+      return invalid("no widget " + std::to_string(widget.index));
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <condition_variable>
+#include <memory>
 #include <mutex>
 #include <thread>
 
@@ -69,6 +70,59 @@ void release_mat(gpointer mat) {
   delete static_cast<cv::Mat*>(mat);
 }
 
+// What the frame thread and GStreamer's signal handlers share. Each handler holds its own
+// reference, released when GStreamer drops the handler, so a signal that comes after the server
+// is gone (the media is GStreamer's, torn down on whichever thread drops it last) still finds
+// valid state instead of a destroyed mutex.
+struct SharedState {
+  std::mutex mutex;  // guards what follows
+  std::condition_variable wake;
+  bool stopping = false;
+  GstElement* appsrc = nullptr;  // our reference, while a media is up
+  cv::Size caps_size;            // empty after a new media: caps must be set
+  StreamCounters counters;
+
+  ~SharedState() {
+    if (appsrc) gst_object_unref(appsrc);
+  }
+};
+using SharedRef = std::shared_ptr<SharedState>;
+
+void release_shared(gpointer shared, GClosure*) {
+  delete static_cast<SharedRef*>(shared);
+}
+
+template <typename Handler>
+void connect_shared(gpointer instance, const char* signal, Handler handler,
+                    const SharedRef& shared) {
+  g_signal_connect_data(instance, signal, G_CALLBACK(handler), new SharedRef(shared),
+                        &release_shared, GConnectFlags(0));
+}
+
+SharedState& shared_of(gpointer data) {
+  return **static_cast<SharedRef*>(data);
+}
+
+void on_media_unprepared(GstRTSPMedia*, gpointer data) {
+  SharedState& shared = shared_of(data);
+  std::lock_guard<std::mutex> lock(shared.mutex);
+  if (shared.appsrc) gst_object_unref(shared.appsrc);
+  shared.appsrc = nullptr;
+}
+
+void on_media_configure(GstRTSPMediaFactory*, GstRTSPMedia* media, gpointer data) {
+  GstElement* pipeline = gst_rtsp_media_get_element(media);
+  GstElement* appsrc = gst_bin_get_by_name_recurse_up(GST_BIN(pipeline), "src");
+  gst_object_unref(pipeline);
+  connect_shared(media, "unprepared", &on_media_unprepared, *static_cast<SharedRef*>(data));
+  SharedState& shared = shared_of(data);
+  std::lock_guard<std::mutex> lock(shared.mutex);
+  if (shared.appsrc) gst_object_unref(shared.appsrc);
+  shared.appsrc = appsrc;  // our reference
+  shared.caps_size = cv::Size();
+  ++shared.counters.media_started;
+}
+
 }  // namespace
 
 class RtspStreamServer::Impl {
@@ -88,18 +142,19 @@ class RtspStreamServer::Impl {
     server_ = gst_rtsp_server_new();
     gst_rtsp_server_set_address(server_, options_.address.c_str());
     gst_rtsp_server_set_service(server_, std::to_string(options_.port).c_str());
+    serve_clients_on_the_loop_thread();
 
     GstRTSPMediaFactory* factory = gst_rtsp_media_factory_new();
     gst_rtsp_media_factory_set_launch(factory, launch_line(options_).c_str());
     gst_rtsp_media_factory_set_shared(factory, TRUE);
-    g_signal_connect(factory, "media-configure", G_CALLBACK(&Impl::on_media_configure), this);
+    connect_shared(factory, "media-configure", &on_media_configure, shared_);
     GstRTSPMountPoints* mounts = gst_rtsp_server_get_mount_points(server_);
     gst_rtsp_mount_points_add_factory(mounts, options_.path.c_str(), factory);  // takes factory
     g_object_unref(mounts);
 
     GError* error = nullptr;
-    GSource* listener = gst_rtsp_server_create_source(server_, nullptr, &error);
-    if (!listener) {
+    listener_ = gst_rtsp_server_create_source(server_, nullptr, &error);
+    if (!listener_) {
       std::string message = "cannot serve RTSP on " + options_.address + ":" +
                             std::to_string(options_.port) + ": " +
                             (error ? error->message : "unknown error");
@@ -107,8 +162,7 @@ class RtspStreamServer::Impl {
       return Status::fail(message);
     }
     bound_port_ = gst_rtsp_server_get_bound_port(server_);
-    g_source_attach(listener, context_);
-    g_source_unref(listener);
+    g_source_attach(listener_, context_);
 
     loop_thread_ = std::thread([this] {
       g_main_context_push_thread_default(context_);
@@ -124,29 +178,20 @@ class RtspStreamServer::Impl {
   }
 
   StreamCounters counters() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return counters_;
+    std::lock_guard<std::mutex> lock(shared_->mutex);
+    return shared_->counters;
   }
 
  private:
-  static void on_media_configure(GstRTSPMediaFactory*, GstRTSPMedia* media, gpointer self) {
-    auto* impl = static_cast<Impl*>(self);
-    GstElement* pipeline = gst_rtsp_media_get_element(media);
-    GstElement* appsrc = gst_bin_get_by_name_recurse_up(GST_BIN(pipeline), "src");
-    gst_object_unref(pipeline);
-    g_signal_connect(media, "unprepared", G_CALLBACK(&Impl::on_media_unprepared), self);
-    std::lock_guard<std::mutex> lock(impl->mutex_);
-    if (impl->appsrc_) gst_object_unref(impl->appsrc_);
-    impl->appsrc_ = appsrc;  // our reference
-    impl->caps_size_ = cv::Size();
-    ++impl->counters_.media_started;
-  }
-
-  static void on_media_unprepared(GstRTSPMedia*, gpointer self) {
-    auto* impl = static_cast<Impl*>(self);
-    std::lock_guard<std::mutex> lock(impl->mutex_);
-    if (impl->appsrc_) gst_object_unref(impl->appsrc_);
-    impl->appsrc_ = nullptr;
+  // By default gst-rtsp-server serves clients on a thread of its own pool. stop() closes the
+  // connections from the loop thread, and a client being served meanwhile (reading a request, or
+  // tearing down after its peer hung up) then read from a closed connection (a GLib-GIO critical,
+  // then a crash) or dropped the media only after the server was destroyed. On the loop thread,
+  // closing a client cannot overlap serving it, and stop() returns with every client gone.
+  void serve_clients_on_the_loop_thread() {
+    GstRTSPThreadPool* pool = gst_rtsp_server_get_thread_pool(server_);
+    gst_rtsp_thread_pool_set_max_threads(pool, 0);
+    g_object_unref(pool);
   }
 
   void frame_loop() {
@@ -154,15 +199,16 @@ class RtspStreamServer::Impl {
     const auto period = std::chrono::nanoseconds(1000000000LL / options_.fps);
     auto next = Clock::now();
     uint32_t counter = 0;
-    std::unique_lock<std::mutex> lock(mutex_);
-    while (!stopping_) {
-      wake_.wait_until(lock, next, [this] { return stopping_; });
-      if (stopping_) break;
+    SharedState& shared = *shared_;
+    std::unique_lock<std::mutex> lock(shared.mutex);
+    while (!shared.stopping) {
+      shared.wake.wait_until(lock, next, [&shared] { return shared.stopping; });
+      if (shared.stopping) break;
       next += period;
       if (Clock::now() > next) next = Clock::now() + period;  // late: skip, never burst
-      if (!appsrc_) continue;
-      GstElement* appsrc = GST_ELEMENT(gst_object_ref(appsrc_));
-      const cv::Size caps_size = caps_size_;  // empty after a new media: caps must be set
+      if (!shared.appsrc) continue;
+      GstElement* appsrc = GST_ELEMENT(gst_object_ref(shared.appsrc));
+      const cv::Size caps_size = shared.caps_size;
       lock.unlock();
       push_frame(appsrc, counter++, caps_size);
       gst_object_unref(appsrc);
@@ -179,8 +225,8 @@ class RtspStreamServer::Impl {
                                           "framerate", GST_TYPE_FRACTION, options_.fps, 1, nullptr);
       gst_app_src_set_caps(GST_APP_SRC(appsrc), caps);
       gst_caps_unref(caps);
-      std::lock_guard<std::mutex> lock(mutex_);
-      caps_size_ = bgr.size();
+      std::lock_guard<std::mutex> lock(shared_->mutex);
+      shared_->caps_size = bgr.size();
     }
     auto* yuv = new cv::Mat();
     cv::cvtColor(bgr, *yuv, cv::COLOR_BGR2YUV_I420);
@@ -188,14 +234,16 @@ class RtspStreamServer::Impl {
     GstBuffer* buffer = gst_buffer_new_wrapped_full(GST_MEMORY_FLAG_READONLY, yuv->data, bytes, 0,
                                                     bytes, yuv, &release_mat);
     if (gst_app_src_push_buffer(GST_APP_SRC(appsrc), buffer) == GST_FLOW_OK) {
-      std::lock_guard<std::mutex> lock(mutex_);
-      ++counters_.frames_pushed;
+      std::lock_guard<std::mutex> lock(shared_->mutex);
+      ++shared_->counters.frames_pushed;
     }
   }
 
-  // Closes every client session so that the shared media is torn down, then ends the loop.
+  // On the loop thread: no new client from now on, every client closed (which tears the shared
+  // media down), then the loop ends.
   static gboolean shut_down(gpointer self) {
     auto* impl = static_cast<Impl*>(self);
+    g_source_destroy(impl->listener_);
     gst_rtsp_server_client_filter(
         impl->server_,
         [](GstRTSPServer*, GstRTSPClient*, gpointer) { return GST_RTSP_FILTER_REMOVE; }, nullptr);
@@ -205,23 +253,31 @@ class RtspStreamServer::Impl {
 
   void stop() {
     {
-      std::lock_guard<std::mutex> lock(mutex_);
-      stopping_ = true;
+      std::lock_guard<std::mutex> lock(shared_->mutex);
+      shared_->stopping = true;
     }
-    wake_.notify_all();
+    shared_->wake.notify_all();
     if (frame_thread_.joinable()) frame_thread_.join();
     if (loop_thread_.joinable()) {
-      g_main_context_invoke(context_, &Impl::shut_down, this);
+      // An idle source, not g_main_context_invoke(): that runs the function on the calling
+      // thread when the loop has not acquired the context yet, and the loop would then start
+      // after its quit and never end.
+      GSource* idle = g_idle_source_new();
+      g_source_set_callback(idle, &Impl::shut_down, this, nullptr);
+      g_source_attach(idle, context_);
+      g_source_unref(idle);
       loop_thread_.join();
     }
     {
-      std::lock_guard<std::mutex> lock(mutex_);
-      if (appsrc_) gst_object_unref(appsrc_);
-      appsrc_ = nullptr;
+      std::lock_guard<std::mutex> lock(shared_->mutex);
+      if (shared_->appsrc) gst_object_unref(shared_->appsrc);
+      shared_->appsrc = nullptr;
     }
+    if (listener_) g_source_unref(listener_);
     if (server_) g_object_unref(server_);
     if (loop_) g_main_loop_unref(loop_);
     if (context_) g_main_context_unref(context_);
+    listener_ = nullptr;
     server_ = nullptr;
     loop_ = nullptr;
     context_ = nullptr;
@@ -232,17 +288,12 @@ class RtspStreamServer::Impl {
   GMainContext* context_ = nullptr;
   GMainLoop* loop_ = nullptr;
   GstRTSPServer* server_ = nullptr;
+  GSource* listener_ = nullptr;  // our reference, to stop accepting before closing the clients
   int bound_port_ = 0;
   std::thread loop_thread_;
   std::thread frame_thread_;
   FrameRenderer renderer_;  // used by the frame thread only
-
-  mutable std::mutex mutex_;  // guards what follows
-  std::condition_variable wake_;
-  bool stopping_ = false;
-  GstElement* appsrc_ = nullptr;
-  cv::Size caps_size_;
-  StreamCounters counters_;
+  SharedRef shared_ = std::make_shared<SharedState>();
 };
 
 Result<std::unique_ptr<RtspStreamServer>> RtspStreamServer::start(const RtspServerOptions& options,

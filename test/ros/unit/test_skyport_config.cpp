@@ -72,6 +72,34 @@ TEST_F(SkyportConfigTest, OutOfRangeValuesNameTheParameterAndTheRange) {
   EXPECT_NE(error().find("glonass"), std::string::npos) << error();
 }
 
+TEST_F(SkyportConfigTest, ProductInformationDefaultsToTheAppNameAndId) {
+  nh_.setParam("app_name", "MyApp");
+  nh_.setParam("app_id", "123456");
+  Result<SkyportConfig> c = read_skyport_config(nh_);
+  ASSERT_TRUE(c) << c.error();
+  EXPECT_EQ(c->bridge.product_name, "MyApp");
+  EXPECT_EQ(c->bridge.product_id, "123456");
+  nh_.setParam("product_id", "0123456789abcdefg");  // 17 bytes: 3.1.4 holds 15 + NUL
+  EXPECT_NE(error().find("product_id"), std::string::npos) << error();
+}
+
+TEST_F(SkyportConfigTest, VersionsAndLayoutsAreParsedOrNamed) {
+  nh_.setParam("firmware_version", "2.1.0.7");
+  nh_.setParam("sd_card_layout", "document");
+  Result<SkyportConfig> c = read_skyport_config(nh_);
+  ASSERT_TRUE(c) << c.error();
+  EXPECT_EQ(c->bridge.firmware.major, 2);
+  EXPECT_EQ(c->bridge.firmware.debug, 7);
+  EXPECT_EQ(c->bridge.sd_card_layout, psdk::PsdkLayout::kDocument);
+  EXPECT_EQ(c->bridge.gimbal_mode_layout, psdk::PsdkLayout::kDjiHeaders);  // the default
+  nh_.setParam("firmware_version", "2.1.256.0");
+  EXPECT_NE(error().find("firmware_version"), std::string::npos) << error();
+  nh_.setParam("firmware_version", "2.1.0.7");
+  nh_.setParam("interval_layout", "wide");
+  EXPECT_NE(error().find("interval_layout"), std::string::npos) << error();
+  EXPECT_NE(error().find("dji_headers or document"), std::string::npos) << error();
+}
+
 TEST_F(SkyportConfigTest, TheKeyFileGivesItsFirstLineTrimmed) {
   const std::string path = "/tmp/skyport_config_test_key_" + std::to_string(::getpid());
   { std::ofstream(path) << "fedcba9876543210  \nsecond line\n"; }

@@ -28,6 +28,7 @@
 #include "k40t_driver/psdk/sim/check_report.h"
 #include "k40t_driver/psdk/sim/faulty_transport.h"
 #include "k40t_driver/psdk/sim/flight_model.h"
+#include "k40t_driver/psdk/sim/payload_reading.h"
 #include "k40t_driver/psdk/sim/pushes.h"
 
 namespace k40t::psdk::sim {
@@ -53,6 +54,8 @@ struct AdapterOptions {
   ByteFaults byte_faults;
   ProtocolFaults protocol_faults;
   uint32_t seed = 1;  // random bytes of identity verification, fault dice
+  // How the checks read the payload's answers where DJI's headers and the document disagree.
+  PayloadReading reading = PayloadReading::kDjiHeaders;
 };
 
 struct IdentityResult {
@@ -119,6 +122,7 @@ class AdapterSimulator {
  private:
   void run();
   void send_due_pushes(double t_s);
+  void check_interval_mode(CheckReport& report);  // part of check_camera()
   template <class Push>
   void push(const Push& message);
   void maybe_jump_sequence();

@@ -21,6 +21,11 @@ struct PodSnapshot {
   double yaw_rad = 0, roll_rad = 0, pitch_rad = 0;
   double yaw_rate_rad_s = 0, roll_rate_rad_s = 0, pitch_rate_rad_s = 0;
 
+  // gimbal/attitude: the stabilised attitude angles (0x000002 bytes 7-12), REP 103 signs like
+  // the joints; the yaw's origin is the pod's (north once the pod is fed the aircraft's attitude).
+  bool have_attitude = false;
+  double attitude_yaw_rad = 0, attitude_roll_rad = 0, attitude_pitch_rad = 0;
+
   bool have_camera = false;  // camera/status
   bool video_mode = false;
   uint8_t photo_mode = 0;  // CameraStatus PHOTO_SINGLE / BURST / TIMELAPSE
@@ -30,6 +35,9 @@ struct PodSnapshot {
   double sd_total_mb = 0, sd_free_mb = 0;
 
   bool recording = false;  // record/status RECORDING (or time-lapse recording), recent
+  // False when record/status went silent while the pod was (or was told to start) recording: the
+  // pod may or may not still record.
+  bool recording_known = true;
   uint16_t record_duration_s = 0;
 
   uint8_t image_mode = 0;  // CameraStatus IMAGE_*: 0 thermal, 5/6 visible, 7 split
@@ -40,7 +48,21 @@ struct PodSnapshot {
 
   uint64_t photo_status_count = 0;  // photo/status messages received so far
   uint8_t photo_state = 0;          // the last one's PhotoStatus STATE_*
+
+  // camera/upgrade_status (0x000008): the pod's repair progress, which covers a gimbal
+  // calibration (state 3 "repairing", then 0 succeeded or 1 failed).
+  uint64_t repair_status_count = 0;  // messages received so far
+  uint8_t repair_state = 0;          // CameraUpgradeStatus STATE_*
+  uint8_t repair_percent = 0;
+
+  // Seconds since the newest status message from the pod (joints, camera, visible); negative
+  // before the first. Getters answer from this state however old; diagnostics mark it stale.
+  double state_age_s = -1;
 };
+
+// CameraUpgradeStatus STATE_* (0x000008 byte 1, 3.2.1.4), kept here so the core needs no ROS
+// header.
+constexpr uint8_t kRepairSucceeded = 0, kRepairFailed = 1, kRepairUpgrading = 2, kRepairing = 3;
 
 // The pod's zoom actions (k40t_driver/Zoom.srv) and focus modes (Focus.srv).
 enum class PodZoom : uint8_t { kIn = 0, kOut = 1, kStop = 2 };

@@ -1,21 +1,26 @@
 // The PodPort of the SKYPORT bridge over the driver's ROS interface: its services (take_photo,
 // record, set_zoom, zoom, focus, set_photo_mode, format_sd, gimbal/set_angle, gimbal/center,
 // gimbal/calibrate), dynamic_reconfigure (camera_mode, metering), the gimbal/cmd_rate topic, and
-// its status topics (joint_states, camera/status, visible/status, record/status, photo/status) for
-// the pod's state. `events` hears of pod events worth a floating-window message (recording started
-// or stopped, SD card full).
+// its status topics (joint_states, gimbal/attitude, camera/status, visible/status, record/status,
+// photo/status, camera/upgrade_status) for the pod's state. Service clients are persistent and
+// cached per service (a new client per call costs a connection and a lookup each time); a client
+// whose call failed is dropped and made again on the next call. `events` hears of pod events worth
+// a floating-window message (recording started or stopped, SD card full).
 #pragma once
 
 #include <functional>
+#include <map>
 #include <mutex>
 #include <string>
 
+#include <geometry_msgs/QuaternionStamped.h>
 #include <ros/node_handle.h>
 #include <ros/publisher.h>
 #include <ros/subscriber.h>
 #include <sensor_msgs/JointState.h>
 
 #include "k40t_driver/CameraStatus.h"
+#include "k40t_driver/CameraUpgradeStatus.h"
 #include "k40t_driver/PhotoStatus.h"
 #include "k40t_driver/RecordStatus.h"
 #include "k40t_driver/VisibleStatus.h"
@@ -50,24 +55,35 @@ class RosPodPort : public PodPort {
  private:
   template <class Srv>
   PodCall call(const std::string& name, Srv& srv);
+  // The cached persistent client of `name` (absolute), made when missing or broken; false with
+  // `why` when the service is not there within the timeout.
+  template <class Srv>
+  bool client(const std::string& name, ros::ServiceClient& out, std::string& why);
   PodCall reconfigure_int(const std::string& name, int value);
   void on_joints(const sensor_msgs::JointState::ConstPtr& msg);
+  void on_attitude(const geometry_msgs::QuaternionStamped::ConstPtr& msg);
   void on_camera(const k40t_driver::CameraStatus::ConstPtr& msg);
   void on_visible(const k40t_driver::VisibleStatus::ConstPtr& msg);
   void on_record(const k40t_driver::RecordStatus::ConstPtr& msg);
   void on_photo(const k40t_driver::PhotoStatus::ConstPtr& msg);
+  void on_upgrade(const k40t_driver::CameraUpgradeStatus::ConstPtr& msg);
+  void pod_heard();  // a status message from the pod arrived (under mutex_)
 
   ros::NodeHandle nh_;
   std::string reconfigure_;
   ros::Duration timeout_;
   Events events_;
   ros::Publisher cmd_rate_;
-  ros::Subscriber joints_, camera_, visible_, record_, photo_;
+  ros::Subscriber joints_, attitude_, camera_, visible_, record_, photo_, upgrade_;
+
+  std::mutex clients_mutex_;
+  std::map<std::string, ros::ServiceClient> clients_;
 
   mutable std::mutex mutex_;
   PodSnapshot state_;
   ros::Time record_status_at_;
-  bool recording_commanded_ = false;
+  ros::Time record_commanded_at_;  // a record start the pod accepted, not yet confirmed
+  ros::Time heard_at_;             // the newest status message from the pod
 };
 
 }  // namespace k40t::driver::skyport

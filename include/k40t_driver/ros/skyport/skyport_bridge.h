@@ -4,20 +4,24 @@
 // answered 0x02 (unsupported) or 0x01 (error), never a made-up success. The battery push's
 // power-off announcement stops the pod's recording first, then ACKs "ready".
 //
-// Commands that need the pod are answered from a worker thread (the session's handlers must not
-// block its I/O thread): the handler queues the job, the job sends the ACK with send_ack().
+// Commands that drive the pod are answered from a worker thread (the session's handlers must not
+// block its I/O thread): the handler queues the job, the job sends the ACK with send_ack() when the
+// command asked for one. The queue is bounded: when full, the command is answered 0x01 ("busy") at
+// once and counted. Getters never wait for the pod: they answer on the session thread from the
+// pod's latest state (PodPort::snapshot()) and what the bridge itself commanded.
 #pragma once
 
-#include <condition_variable>
-#include <deque>
+#include <chrono>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <string>
-#include <thread>
 
 #include "k40t_driver/psdk/commands/all.h"
+#include "k40t_driver/psdk/commands/header_variants.h"
 #include "k40t_driver/psdk/session.h"
 #include "k40t_driver/ros/skyport/ack_reply.h"
+#include "k40t_driver/ros/skyport/job_queue.h"
 #include "k40t_driver/ros/skyport/photo_progress.h"
 #include "k40t_driver/ros/skyport/pod_port.h"
 
@@ -26,7 +30,9 @@ namespace k40t::driver::skyport {
 struct BridgeOptions {
   std::string app_key;  // proves identity; never logged
   std::string product_name = "K40T";
-  std::string product_id = "k40t_driver";
+  std::string product_id = "k40t_driver";  // skyport_config: the app id by default, as DJI's code
+  // 0x01/0x05: the SKYPORT protocol version this payload was written for (PSDK v1.0).
+  psdk::Version skyport_version{1, 0, 0, 0};
   std::string developer_account;
   std::string alias = "K40T gimbal pod";
   psdk::Version firmware{1, 0, 0, 0};
@@ -37,6 +43,20 @@ struct BridgeOptions {
   double max_hybrid_zoom = 160.0;
   // How long the pod may take to store a single photo when nothing else tells (photo_progress.h).
   double photo_storing_s = 2.0;
+  // Where DJI's published headers and the document disagree (header_variants.h, docs/psdk.md
+  // P28..P30): the gimbal state's mode numbering, the SD card state bits, the interval width.
+  psdk::PsdkLayout gimbal_mode_layout = psdk::PsdkLayout::kDjiHeaders;
+  psdk::PsdkLayout sd_card_layout = psdk::PsdkLayout::kDjiHeaders;
+  psdk::PsdkLayout interval_layout = psdk::PsdkLayout::kDjiHeaders;
+  // 3.5.1's angles: the pod's attitude in NED (DJI's headers; kDjiHeaders) or its joint angles
+  // (kDocument: the document does not say which). Joint by default: the angle commands (3.5.5,
+  // 3.5.6) drive the joints, and the state must read back what they set (docs/psdk.md P28).
+  psdk::PsdkLayout gimbal_angle_layout = psdk::PsdkLayout::kDocument;
+  // Pod commands waiting for the worker at most; more are answered "busy" (0x01) at once.
+  size_t max_queued_jobs = 8;
+  // After the pod accepted a calibration, how long its repair report (0x000008) may stay away
+  // before the progress is answered 0x01 (unknown) instead of "in progress".
+  double calibration_report_timeout_s = 30.0;
 };
 
 struct BridgeStats {
@@ -45,6 +65,9 @@ struct BridgeStats {
   uint64_t pod_calls = 0;
   uint64_t pod_call_failures = 0;
   uint64_t unsupported_answers = 0;  // known commands the pod cannot do (0x02)
+  uint64_t invalid_commands = 0;     // out of the document's or the pod's range (0x01)
+  uint64_t busy_answers = 0;         // the work queue was full (0x01 at once)
+  uint64_t queued_jobs = 0;          // waiting for the worker now
   uint64_t battery_pushes = 0;
   bool power_off_announced = false;
   bool power_off_ready = false;
@@ -78,13 +101,25 @@ class SkyportBridge {
   // A command answered from the worker: `answer(const Cmd&)` returns Cmd::Ack or an AckCode.
   template <class Cmd, class F>
   void deferred(F answer);
+  // deferred() for a command whose DATA `decode(bytes, size)` reads (a layout variant).
+  template <class Cmd, class Decode, class F>
+  void deferred_raw(Decode decode, F answer);
   // The pod's answer as a return code (and counted).
   psdk::AckCode pod_code(const PodCall& call, const char* what);
   psdk::AckCode unsupported();
-  psdk::AckCode apply_zoom();
+  psdk::AckCode invalid(const std::string& why);
+  // Queues `job` for the worker; false (and counted) when the queue is full.
+  bool queue(std::function<void()> job);
+  struct ZoomSplit {
+    double optical = 1, digital = 1;
+  };
+  // The zoom as PSDK sees it now (skyport_lens.cpp).
+  ZoomSplit zoom_split(const PodSnapshot& s) const;
+  // Sets the commanded zoom (optical focal-length factor x digital factor) and drives the pod.
+  psdk::AckCode apply_zoom(double optical, double digital);
+  psdk::CalibrationProgressAck calibration_progress(const PodSnapshot& s) const;
   // pod_code() for a capture command the pod refuses while it takes a photo (photo_progress_).
   psdk::AckCode capture_code(const PodCall& call, const char* what);
-  void run_worker();
 
   psdk::Session& session_;
   PodPort& pod_;
@@ -94,40 +129,58 @@ class SkyportBridge {
 
   mutable std::mutex mutex_;
   BridgeStats stats_;
-  double optical_zoom_ = 1.0;  // commanded through PSDK (worker thread only)
+  double optical_zoom_ = 1.0;  // commanded through PSDK (written by the worker)
   double digital_zoom_ = 1.0;
+  bool zoom_follows_pod_ = true;  // no set since start or since a continuous zoom (skyport_lens)
   psdk::MeteringMode metering_ = psdk::MeteringMode::kCenter;
   psdk::FocusMode focus_mode_ = psdk::FocusMode::kAuto;
   float focus_x_ = 0.5f, focus_y_ = 0.5f;
-  bool calibrated_ = false;             // the pod acknowledged a calibration
+  // The calibration the pod last accepted: when, and how many repair reports had come before it.
+  struct Calibration {
+    std::chrono::steady_clock::time_point accepted;
+    uint64_t repair_reports_before = 0;
+  };
+  std::optional<Calibration> calibration_;
   bool power_off_job_pending_ = false;  // stopping the pod's recording before "ready" is under way
-  int32_t palette_item_ = 0;            // the palette widget's choice (worker thread only)
+  int32_t palette_item_ = 0;            // the palette widget's choice
+  bool laser_pressed_ = false;  // the laser button is down, ranged for this press (worker only)
   PhotoProgress photo_progress_;
 
-  std::mutex jobs_mutex_;
-  std::condition_variable jobs_wake_;
-  std::deque<std::function<void()>> jobs_;
-  bool stopping_ = false;
-  std::thread worker_;
+  JobQueue jobs_;  // last: stopped first, while everything its jobs use still exists
 };
 
 // --- template ------------------------------------------------------------------------------------
 
 template <class Cmd, class F>
 void SkyportBridge::deferred(F answer) {
-  session_.on_command(Cmd::key(),
-                      [this, answer](const psdk::IncomingCommand& in) -> std::optional<psdk::Data> {
-                        const Result<Cmd> command = psdk::decode_data<Cmd>(in.data);
-                        if (!command) return detail::reply_data(psdk::AckCode::kError);
-                        {
-                          std::lock_guard<std::mutex> lock(jobs_mutex_);
-                          jobs_.push_back([this, answer, header = in.header, c = command.value()] {
-                            session_.send_ack(header, detail::reply_data(answer(c)));
-                          });
-                        }
-                        jobs_wake_.notify_one();
-                        return std::nullopt;
-                      });
+  deferred_raw<Cmd>(
+      [](const uint8_t* bytes, size_t size) { return psdk::decode_data<Cmd>(bytes, size); },
+      std::move(answer));
+}
+
+template <class Cmd, class Decode, class F>
+void SkyportBridge::deferred_raw(Decode decode, F answer) {
+  session_.on_command(
+      Cmd::key(),
+      [this, decode, answer](const psdk::IncomingCommand& in) -> std::optional<psdk::Data> {
+        const auto command = decode(in.data.data(), in.data.size);
+        if (!command) {
+          session_.note_decode_error();
+          return detail::reply_data(psdk::AckCode::kError);
+        }
+        const Status valid = psdk::validate(command.value());
+        if (!valid) return detail::reply_data(invalid(valid.message()));
+        // The session sends a returned reply only when the command asked for an ACK; the job
+        // obeys the same bits.
+        const bool wants_ack = in.header.ack_request != psdk::AckRequest::kNoAck;
+        const bool queued =
+            queue([this, answer, wants_ack, header = in.header, c = command.value()] {
+              const auto reply = answer(c);
+              if (wants_ack) session_.send_ack(header, detail::reply_data(reply));
+            });
+        if (!queued) return detail::reply_data(psdk::AckCode::kError);  // busy
+        return std::nullopt;
+      });
 }
 
 }  // namespace k40t::driver::skyport

@@ -26,6 +26,12 @@ struct SkyportConfig {
   double ack_timeout_s = 1.0;
   double silence_timeout_s = 1.0;  // no frame for this long: the adapter is silent (ERROR)
   double diagnostic_period_s = 1.0;
+  // sensor_msgs/TimeReference whose header.stamp is the local time of each PPS rising edge (a PPS
+  // driver's output); empty: none, the UTC push's 500 ms rule cannot be applied (3.3.10).
+  std::string pps_topic;
+  double pod_stale_s = 3.0;  // no status from the pod for this long: its state is stale (WARN)
+  // skyport/get_position: the least time between two requests to the adapter.
+  double position_min_interval_s = 0.2;
 };
 
 // Reads the private parameters; the app key comes from `app_key_file` (or `app_key`). A missing

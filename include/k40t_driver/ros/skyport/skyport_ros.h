@@ -66,6 +66,15 @@ class SkyportRos {
   std::optional<bool> power_off_soon_;
   uint8_t other_payload_type_ = 0;
   float other_payload_focal_mm_ = std::nanf("");
+  std::optional<int64_t> newest_utc_ns_;  // the newest synchronised UTC time (UTC push), ns
+  std::optional<std::chrono::steady_clock::time_point> last_position_request_;
+  uint16_t next_event_index_ = 0;
+  std::mutex position_mutex_;  // one get_position at a time (rate limit, event indices)
+  std::atomic<uint64_t> utc_pushes_invalid_{0};
+  std::atomic<uint64_t> utc_pushes_late_{0};       // 3.3.10's 500 ms rule (pps_topic set)
+  std::atomic<uint64_t> utc_pushes_unchecked_{0};  // no pps_topic: the rule cannot be applied
+  std::optional<ros::Time> last_pps_edge_;         // local time of the newest PPS rising edge
+  ros::Subscriber pps_;
 };
 
 }  // namespace k40t::driver::skyport
