@@ -2,7 +2,8 @@
 file(GLOB_RECURSE K40T_CORE_SOURCES CONFIGURE_DEPENDS
   ${PROJECT_SOURCE_DIR}/src/protocol/*.cpp
   ${PROJECT_SOURCE_DIR}/src/transport/*.cpp
-  ${PROJECT_SOURCE_DIR}/src/session/*.cpp)
+  ${PROJECT_SOURCE_DIR}/src/session/*.cpp
+  ${PROJECT_SOURCE_DIR}/src/operations/*.cpp)  # ROS-free logic of the driver's actions
 add_library(k40t_core STATIC ${K40T_CORE_SOURCES})
 target_include_directories(k40t_core PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_link_libraries(k40t_core PUBLIC Threads::Threads util)

@@ -24,6 +24,7 @@
 #include "k40t_driver/TakePhoto.h"
 #include "k40t_driver/Track.h"
 #include "k40t_driver/Zoom.h"
+#include "k40t_driver/operations/gimbal_operations.h"
 #include "k40t_driver/protocol/messages/camera_capture.h"
 #include "k40t_driver/protocol/messages/camera_imaging.h"
 #include "k40t_driver/protocol/messages/camera_system.h"
@@ -41,9 +42,6 @@ namespace p = protocol;
 using session::AckResult;
 
 namespace {
-
-constexpr double kRadToDeg = 180.0 / M_PI;
-constexpr double kDegToRad = M_PI / 180.0;
 
 // take_photo and record: a lens mode, an action and the file's folder and name.
 template <class Req, class SrvReq, class Action>
@@ -130,17 +128,10 @@ void PodServices::advertise_camera() {
 
 void PodServices::advertise_gimbal() {
   serve<k40t_driver::SetAngle>("gimbal/set_angle", [this](auto& req, auto& res) {
-    // Checked in the caller's units first (REP 103 signs, radians), so the message speaks them.
-    const Status valid = p::first_failure(
-        p::check_range("pitch", req.pitch, -p::GimbalAngleRequest::kPitchMaxDeg * kDegToRad,
-                       -p::GimbalAngleRequest::kPitchMinDeg * kDegToRad, "rad (positive = down)"),
-        p::check_range("yaw", req.yaw, -p::GimbalAngleRequest::kYawLimitDeg * kDegToRad,
-                       p::GimbalAngleRequest::kYawLimitDeg * kDegToRad, "rad (positive = left)"));
-    if (!valid) return fail(res, valid.message());
-    p::GimbalAngleRequest r;
-    r.pitch_deg = -req.pitch * kRadToDeg;
-    r.yaw_deg = -req.yaw * kRadToDeg;
-    fill(res, driver_.request(r));
+    // Checked in the caller's units (REP 103 signs, radians), so the message speaks them.
+    Result<p::GimbalAngleRequest> r = operations::angle_request_from_rep103(req.pitch, req.yaw);
+    if (!r) return fail(res, r.error());
+    fill(res, driver_.request(r.value()));
   });
   p::GimbalControlRequest centre;
   centre.mode = p::GimbalMode::kCentre;
@@ -161,16 +152,15 @@ void PodServices::advertise_gimbal() {
     fill(res, driver_.request(r));
   });
   serve<k40t_driver::Calibrate>("gimbal/calibrate", [this](auto& req, auto& res) {
-    switch (req.kind) {
-      case k40t_driver::Calibrate::Request::DRIFT:
+    Result<operations::CalibrationKind> kind = operations::calibration_kind(req.kind);
+    if (!kind) return fail(res, kind.error());
+    switch (kind.value()) {
+      case operations::CalibrationKind::kDrift:
         return fill(res, driver_.request(p::GimbalDriftCalibrationRequest{}));
-      case k40t_driver::Calibrate::Request::LINEAR:
+      case operations::CalibrationKind::kLinear:
         return fill(res, driver_.request(p::GimbalLinearCalibrationRequest{}));
-      case k40t_driver::Calibrate::Request::ACCELEROMETER:
+      case operations::CalibrationKind::kAccelerometer:
         return fill(res, driver_.request(p::GimbalAccelerationCalibrationRequest{}));
-      default:
-        return fail(res, "field 'kind' must be 0 (drift), 1 (linear) or 2 (accelerometer), got " +
-                             std::to_string(req.kind));
     }
   });
 }

@@ -27,6 +27,7 @@ RosPod::RosPod(ros::NodeHandle nh, ros::NodeHandle private_nh, const RosPodConfi
   } else {
     settings_ = std::make_unique<SettingsSync>(private_nh, *driver_);
     commands_ = std::make_unique<CommandInput>(nh, *driver_);
+    actions_ = std::make_unique<PodActions>(nh, *driver_);
   }
   diagnostics_ =
       std::make_unique<PodDiagnostics>(nh, private_nh, *driver_, config_, settings_.get());
@@ -45,12 +46,16 @@ RosPod::RosPod(ros::NodeHandle nh, ros::NodeHandle private_nh, const RosPodConfi
 }
 
 RosPod::~RosPod() {
-  // The link stops first so that no handler runs into a half-destroyed glue object.
+  // Running goals end and their threads are joined while the link still runs (they may be
+  // waiting for it); then the link stops so that no handler runs into a half-destroyed glue
+  // object.
+  if (actions_) actions_->shutdown();
   if (driver_) driver_->stop();
 }
 
 Status RosPod::start() {
   const Status started = driver_->start();
+  if (started && actions_) actions_->start();  // goals are taken once the link runs
   if (started && !config_.driver.replay) {
     ROS_INFO("K40T driver started on %s",
              device_url_with_baud(config_.driver.device, config_.driver.baud).c_str());

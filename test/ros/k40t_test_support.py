@@ -165,6 +165,20 @@ class Diagnostics:
         return wait_until(lambda: self.status(task) is not None and self.status(task).level == level, timeout)
 
 
+class Run:
+    """One actionlib goal sent with a SimpleActionClient: its feedback, final state and result."""
+
+    def __init__(self, client, goal):
+        self.feedback = []
+        self.client = client
+        client.send_goal(goal, feedback_cb=self.feedback.append)
+
+    def wait(self, timeout):
+        if not self.client.wait_for_result(rospy.Duration(timeout)):
+            raise AssertionError("no result within %.0f s" % timeout)
+        return self.client.get_state(), self.client.get_result()
+
+
 def service(relative, srv_type, timeout=15.0):
     """A ServiceProxy for a driver service, after waiting for it."""
     full = name(relative)

@@ -11,24 +11,16 @@
 #include <ros/node_handle.h>
 #include <ros/service_server.h>
 
-#include "k40t_driver/protocol/messages/camera_capture.h"
+#include "k40t_driver/operations/camera_operations.h"
 #include "k40t_driver/protocol/messages/visible.h"
 #include "k40t_driver/ros/pod_driver.h"
 
 namespace k40t::driver {
 
-// The service's request in physical units -> 0x000307; `latest` is the newest visible report,
-// which supplies a zoom or focal value given as 0. Fails naming the field and its range.
-struct ReshootArgs {
-  uint8_t lens = 0;
-  uint8_t resolution = 0;
-  double zoom_ratio = 0;
-  double focal_length_mm = 0;
-  std::string folder;
-  std::string name;
-};
-Result<protocol::PreciseReshootRequest> reshoot_request(
-    const ReshootArgs& args, const std::optional<protocol::VisibleStatus>& latest);
+// The request in physical units -> 0x000307 (ReshootArgs, reshoot_request) is shared with the
+// precise_reshoot action: operations/camera_operations.h.
+using operations::reshoot_request;
+using operations::ReshootArgs;
 
 class JobServices {
  public:

@@ -14,6 +14,7 @@
 #include "k40t_driver/protocol/result.h"
 #include "k40t_driver/ros/command_input.h"
 #include "k40t_driver/ros/job_services.h"
+#include "k40t_driver/ros/pod_actions.h"
 #include "k40t_driver/ros/pod_diagnostics.h"
 #include "k40t_driver/ros/pod_driver.h"
 #include "k40t_driver/ros/pod_services.h"
@@ -48,6 +49,7 @@ class RosPod {
   std::unique_ptr<JobServices> job_services_;
   std::unique_ptr<CommandInput> commands_;
   std::unique_ptr<ReplayInput> replay_;
+  std::unique_ptr<PodActions> actions_;  // live mode; shut down before the driver stops
 };
 
 }  // namespace k40t::driver

@@ -1,0 +1,179 @@
+// One actionlib action over one ROS-free operation (operations/): the thin glue that turns a goal
+// into the operation, sends its request, feeds it the status frames (through feed(), called by
+// the PodDriver handlers of PodActions) and publishes what its tracker decides: feedback after
+// every frame or ACK fed to it, then SUCCEEDED, ABORTED (refused goal with nothing sent, NACK,
+// failure state, timeout) or PREEMPTED (cancel; the binding's stop() stops what the pod can stop).
+//
+// Every action's Result has `success`, `message` and `elapsed`, every Feedback `elapsed`; the
+// binding fills the rest.
+//
+// Threads: a SimpleActionServer with an execute callback runs each goal on its own thread. The
+// server is built with autostart=false and started by start(); shutdown() ends a running goal
+// within ~0.1 s and joins that thread, so it must run before the PodDriver is stopped.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include <actionlib/server/simple_action_server.h>
+#include <ros/node_handle.h>
+
+#include "k40t_driver/operations/shared_operation.h"
+#include "k40t_driver/protocol/result.h"
+#include "k40t_driver/session/session.h"
+
+namespace k40t::driver {
+
+inline double steady_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+template <class Action, class Op>
+class OperationServer {
+ public:
+  using Goal = typename Action::_action_goal_type::_goal_type;
+  using ResultMsg = typename Action::_action_result_type::_result_type;
+  using FeedbackMsg = typename Action::_action_feedback_type::_feedback_type;
+  using AckHandler = std::function<void(const session::AckResult&)>;
+
+  struct Binding {
+    std::function<Result<Op>(const Goal&, double now_s)> create;  // validates; nothing sent
+    std::function<void(const Op&, AckHandler)> send;              // the request, asynchronously
+    std::function<void(const Op&, FeedbackMsg&)> feedback;        // the operation's figures
+    std::function<void(const Op&, ResultMsg&)> result;
+    // Stops the pod on cancel and timeout and says how; empty where the pod cannot stop.
+    std::function<std::string()> stop;
+  };
+
+  OperationServer(ros::NodeHandle nh, const std::string& name, Binding binding)
+      : binding_(std::move(binding)),
+        server_(
+            nh, name, [this](const typename Goal::ConstPtr& goal) { execute(*goal); }, false) {}
+  ~OperationServer() { shutdown(); }
+
+  void start() { server_.start(); }
+  // Idempotent: SimpleActionServer::shutdown() asserts that its thread still exists.
+  void shutdown() {
+    if (stopping_.exchange(true)) return;
+    if (auto op = active()) op->update([](Op&) { return 0; });  // wake the goal thread
+    server_.shutdown();                                         // joins the goal thread
+  }
+
+  // Runs f(op) on the running goal's operation, if any (status frames, on the I/O thread).
+  template <class F>
+  void feed(F&& f) {
+    if (auto op = active()) {
+      op->update([&](Op& o) {
+        f(o);
+        return 0;
+      });
+    }
+  }
+
+ private:
+  using Shared = operations::SharedOperation<Op>;
+
+  std::shared_ptr<Shared> active() const {
+    std::lock_guard<std::mutex> lock(active_mutex_);
+    return active_;
+  }
+  void set_active(std::shared_ptr<Shared> op) {
+    std::lock_guard<std::mutex> lock(active_mutex_);
+    active_ = std::move(op);
+  }
+
+  void execute(const Goal& goal) {
+    const double start_s = steady_seconds();
+    Result<Op> created = binding_.create(goal, start_s);
+    if (!created) {
+      ResultMsg result;
+      result.success = false;
+      result.message = created.error();
+      server_.setAborted(result, result.message);
+      return;
+    }
+    auto op = std::make_shared<Shared>(std::move(created.value()));
+    set_active(op);
+    binding_.send(op->read([](const Op& o) { return o; }), [op](const session::AckResult& ack) {
+      op->update([&](Op& o) {
+        o.tracker().acknowledged(ack.ok(), ack.message);
+        return 0;
+      });
+    });
+    run(*op, start_s);
+    set_active(nullptr);
+  }
+
+  // Publishes feedback on every change until the operation ends, then its result.
+  void run(Shared& op, double start_s) {
+    using operations::Phase;
+    uint64_t seen = 0;
+    uint64_t published = 0;
+    for (;;) {
+      if (stopping_) {
+        op.inspect([](Op& o) {
+          o.tracker().cancel("the driver is shutting down");
+          return 0;
+        });
+        break;
+      }
+      if (server_.isPreemptRequested()) {
+        const std::string how = server_.isNewGoalAvailable() ? "replaced by a new goal"
+                                : binding_.stop              ? binding_.stop()
+                                                : "the pod cannot stop it and carries on";
+        op.inspect([&](Op& o) {
+          o.tracker().cancel(how);
+          return 0;
+        });
+        break;
+      }
+      const double now_s = steady_seconds();
+      const Phase phase = op.inspect([&](Op& o) { return o.tracker().check(now_s); });
+      if (phase != Phase::kRunning) break;
+      if (seen != published) {  // a status frame, an ACK: whatever fed the operation
+        FeedbackMsg feedback;
+        op.inspect([&](Op& o) {
+          binding_.feedback(o, feedback);
+          return 0;
+        });
+        feedback.elapsed = now_s - start_s;
+        server_.publishFeedback(feedback);
+        published = seen;
+      }
+      seen = op.wait_for_change(seen, std::chrono::milliseconds(100));
+    }
+    finish(op, start_s);
+  }
+
+  void finish(Shared& op, double start_s) {
+    using operations::Phase;
+    ResultMsg result;
+    const Phase phase = op.inspect([&](Op& o) {
+      binding_.result(o, result);
+      result.message = o.tracker().reason();
+      return o.tracker().phase();
+    });
+    if (phase == Phase::kTimedOut && binding_.stop) result.message += "; " + binding_.stop();
+    result.success = phase == Phase::kSucceeded;
+    result.elapsed = steady_seconds() - start_s;
+    if (phase == Phase::kSucceeded) {
+      server_.setSucceeded(result, result.message);
+    } else if (phase == Phase::kCancelled && !stopping_) {
+      server_.setPreempted(result, result.message);
+    } else {
+      server_.setAborted(result, result.message);
+    }
+  }
+
+  Binding binding_;
+  actionlib::SimpleActionServer<Action> server_;
+  std::atomic<bool> stopping_{false};
+  mutable std::mutex active_mutex_;
+  std::shared_ptr<Shared> active_;
+};
+
+}  // namespace k40t::driver

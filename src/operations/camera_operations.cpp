@@ -1,0 +1,169 @@
+#include "k40t_driver/operations/camera_operations.h"
+
+#include <cmath>
+
+namespace k40t::operations {
+
+namespace p = protocol;
+
+namespace {
+
+Step step(Phase phase, std::string text) {
+  Step s;
+  s.phase = phase;
+  s.text = std::move(text);
+  return s;
+}
+
+// The enum's own text, or the code for one the document does not define.
+template <class E>
+std::string state_text(E state) {
+  const char* text = to_string(state);
+  return text ? text : "state " + std::to_string(static_cast<int>(state));
+}
+
+}  // namespace
+
+Step zoom_step(const p::ZoomStatus& status) {
+  return status.progress == p::ZoomProgress::kDone ? step(Phase::kSucceeded, "done")
+                                                   : step(Phase::kRunning, "zooming");
+}
+
+Step sd_format_step(const p::SdFormatStatus& status) {
+  switch (status.state) {
+    case p::SdFormatState::kDone:
+      return step(Phase::kSucceeded, state_text(status.state));
+    case p::SdFormatState::kFormatting:
+      return step(Phase::kRunning, state_text(status.state));
+    case p::SdFormatState::kFailed:
+    case p::SdFormatState::kUnavailable:
+      break;
+  }
+  return step(Phase::kFailed, state_text(status.state));
+}
+
+Step reshoot_step(const p::PreciseReshootStatus& status) {
+  switch (status.state) {
+    case p::ReshootState::kDone:
+      return step(Phase::kSucceeded, state_text(status.state));
+    case p::ReshootState::kReshooting:
+    case p::ReshootState::kBurst:
+    case p::ReshootState::kContinuous:
+    case p::ReshootState::kTimeLapse:
+    case p::ReshootState::kSingleShot:
+      return step(Phase::kRunning, state_text(status.state));
+    default:  // stopped, failed, and the SD card states 7..11
+      return step(Phase::kFailed, state_text(status.state));
+  }
+}
+
+Step tf_upgrade_step(const p::TfCardUpgradeStatus& status) {
+  switch (status.state) {
+    case p::TfUpgradeState::kSucceeded:
+      return step(Phase::kSucceeded, state_text(status.state));
+    case p::TfUpgradeState::kUpgrading:
+      return step(Phase::kRunning, state_text(status.state));
+    case p::TfUpgradeState::kFailed:
+      break;
+  }
+  return step(Phase::kFailed, state_text(status.state));
+}
+
+// ---- zoom ------------------------------------------------------------------------------------
+
+Result<ZoomTo> ZoomTo::create(double ratio_x, double timeout_s, double now_s) {
+  // Named as the goal names it; the struct's own check stays as the backstop.
+  const Status in_range = p::check_range("ratio", ratio_x, p::kMinZoomRatio, p::kMaxZoomRatio, "x");
+  if (!in_range) return in_range;
+  p::ZoomRatioRequest request;
+  request.zoom_x = ratio_x;
+  const Status valid = request.validate();
+  if (!valid) return valid;
+  const TimeoutChoice timeout = choose_timeout(timeout_s, kDefaultTimeoutS);
+  if (!timeout.ok) return Status::fail(timeout.error);
+  return ZoomTo(request, timeout.seconds, now_s);
+}
+
+ZoomTo::ZoomTo(const p::ZoomRatioRequest& request, double timeout_s, double now_s)
+    : request_(request), tracker_("zoom", "zoom status 0x020304 'done'", timeout_s, now_s) {}
+
+// ---- SD format -------------------------------------------------------------------------------
+
+Result<SdFormat> SdFormat::create(double timeout_s, double now_s) {
+  const TimeoutChoice timeout = choose_timeout(timeout_s, kDefaultTimeoutS);
+  if (!timeout.ok) return Status::fail(timeout.error);
+  return SdFormat(timeout.seconds, now_s);
+}
+
+SdFormat::SdFormat(double timeout_s, double now_s)
+    : tracker_("SD format", "SD format status 0x02030D 'done'", timeout_s, now_s) {}
+
+// ---- precise re-shoot ------------------------------------------------------------------------
+
+namespace {
+constexpr double kMaxFocalMm = 65535 / kReshootFocalUnitsPerMm;
+}  // namespace
+
+Result<p::PreciseReshootRequest> reshoot_request(const ReshootArgs& args,
+                                                 const std::optional<p::VisibleStatus>& latest) {
+  using R = Result<p::PreciseReshootRequest>;
+  const bool current_zoom = args.zoom_ratio == 0;
+  const bool current_focal = args.focal_length_mm == 0;
+  if ((current_zoom || current_focal) && !latest) {
+    return R::fail(std::string("field '") + (current_zoom ? "zoom_ratio" : "focal_length_mm") +
+                   "' is 0 (the current value) but no visible/status report (0x000005) has come "
+                   "yet: give it explicitly");
+  }
+  const double focal_mm =
+      current_focal ? latest->precise_shot_focal_length_mm : args.focal_length_mm;
+  const double zoom = current_zoom ? latest->zoom_x : args.zoom_ratio;
+  const Status range =
+      p::first_failure(p::check_range("zoom_ratio", zoom, 1.0, 160.0, "x"),
+                       p::check_range("focal_length_mm", focal_mm, 0.0, kMaxFocalMm, "mm"));
+  if (!range) return R::fail(range.message());
+  p::PreciseReshootRequest r;
+  r.lens = static_cast<p::PhotoLensMode>(args.lens);
+  r.resolution = static_cast<p::ReshootResolution>(args.resolution);
+  r.zoom_x = zoom;
+  r.focal_length_raw = static_cast<uint16_t>(std::lround(focal_mm * kReshootFocalUnitsPerMm));
+  r.folder = args.folder;
+  r.name = args.name;
+  const Status valid = r.validate();  // lens, resolution, zoom, folder and name
+  if (!valid) return R::fail(valid.message());
+  return r;
+}
+
+Result<PreciseReshoot> PreciseReshoot::create(const PreciseReshootGoal& goal,
+                                              const std::optional<p::VisibleStatus>& latest_visible,
+                                              double now_s) {
+  Result<p::PreciseReshootRequest> request = reshoot_request(goal.args, latest_visible);
+  if (!request) return request.status();
+  const TimeoutChoice timeout = choose_timeout(goal.timeout_s, kDefaultTimeoutS);
+  if (!timeout.ok) return Status::fail(timeout.error);
+  return PreciseReshoot(request.value(), timeout.seconds, now_s);
+}
+
+PreciseReshoot::PreciseReshoot(const p::PreciseReshootRequest& request, double timeout_s,
+                               double now_s)
+    : request_(request),
+      tracker_("precise re-shoot", "precise re-shoot status 0x020307 'done'", timeout_s, now_s) {}
+
+// ---- TF-card upgrade -------------------------------------------------------------------------
+
+Result<TfUpgrade> TfUpgrade::create(double timeout_s, double now_s) {
+  const TimeoutChoice timeout = choose_timeout(timeout_s, kDefaultTimeoutS);
+  if (!timeout.ok) return Status::fail(timeout.error);
+  return TfUpgrade(timeout.seconds, now_s);
+}
+
+TfUpgrade::TfUpgrade(double timeout_s, double now_s)
+    : tracker_("TF-card upgrade", "TF-card upgrade status 0x02030C 'succeeded'", timeout_s, now_s) {
+}
+
+void TfUpgrade::on_progress(const p::CameraUpgradeStatus& status) {
+  // 0x000008 also reports calibrations ("repairing"); only "upgrading" is this operation's.
+  if (status.state != p::CameraUpgradeState::kUpgrading || tracker_.done()) return;
+  progress_percent_ = status.progress_percent;
+}
+
+}  // namespace k40t::operations

@@ -1,0 +1,134 @@
+#include "k40t_driver/operations/gimbal_operations.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace k40t::operations {
+
+namespace p = protocol;
+
+namespace {
+constexpr double kRadToDeg = 180.0 / M_PI;
+constexpr double kDegToRad = M_PI / 180.0;
+
+const char* calibration_name(CalibrationKind kind) {
+  switch (kind) {
+    case CalibrationKind::kDrift:
+      return "gimbal drift calibration";
+    case CalibrationKind::kLinear:
+      return "gimbal linear calibration";
+    case CalibrationKind::kAccelerometer:
+      return "gimbal accelerometer calibration";
+  }
+  return "gimbal calibration";
+}
+}  // namespace
+
+Result<p::GimbalAngleRequest> angle_request_from_rep103(double pitch_rad, double yaw_rad) {
+  // REP 103 pitch is the pod's pitch negated, so the pod's "up 30 .. down 90" becomes -30..+90 deg.
+  const Status valid = p::first_failure(
+      p::check_range("pitch", pitch_rad, -p::GimbalAngleRequest::kPitchMaxDeg * kDegToRad,
+                     -p::GimbalAngleRequest::kPitchMinDeg * kDegToRad, "rad (positive = down)"),
+      p::check_range("yaw", yaw_rad, -p::GimbalAngleRequest::kYawLimitDeg * kDegToRad,
+                     p::GimbalAngleRequest::kYawLimitDeg * kDegToRad, "rad (positive = left)"));
+  if (!valid) return valid;
+  p::GimbalAngleRequest request;
+  request.pitch_deg = -pitch_rad * kRadToDeg;
+  request.yaw_deg = -yaw_rad * kRadToDeg;
+  return request;
+}
+
+JointAngles rep103_joints(const p::GimbalAttitude& attitude) {
+  // The signs of ros/conversions.h: REP 103 yaw and pitch are the pod's negated, roll is kept.
+  JointAngles joints;
+  joints.yaw_rad = -attitude.joint_yaw_deg * kDegToRad;
+  joints.roll_rad = attitude.joint_roll_deg * kDegToRad;
+  joints.pitch_rad = -attitude.joint_pitch_deg * kDegToRad;
+  return joints;
+}
+
+Result<GimbalMove> GimbalMove::create(const GimbalMoveGoal& goal, double now_s) {
+  Result<p::GimbalAngleRequest> request = angle_request_from_rep103(goal.pitch_rad, goal.yaw_rad);
+  if (!request) return request.status();
+  if (!std::isfinite(goal.tolerance_rad) || goal.tolerance_rad < 0 || goal.tolerance_rad > M_PI) {
+    return Status::fail("field 'tolerance' must be 0 (the default, 0.5 deg) or 0..pi rad, got " +
+                        std::to_string(goal.tolerance_rad));
+  }
+  const TimeoutChoice timeout = choose_timeout(goal.timeout_s, kDefaultTimeoutS);
+  if (!timeout.ok) return Status::fail(timeout.error);
+  const double tolerance = goal.tolerance_rad == 0 ? kDefaultToleranceRad : goal.tolerance_rad;
+  return GimbalMove(goal, request.value(), tolerance, timeout.seconds, now_s);
+}
+
+GimbalMove::GimbalMove(const GimbalMoveGoal& goal, const p::GimbalAngleRequest& request,
+                       double tolerance_rad, double timeout_s, double now_s)
+    : goal_(goal),
+      request_(request),
+      tolerance_rad_(tolerance_rad),
+      tracker_("gimbal move", "both joints within tolerance in 0x000002", timeout_s, now_s) {}
+
+void GimbalMove::on_attitude(const p::GimbalAttitude& attitude) {
+  joints_ = rep103_joints(attitude);
+  // The yaw joint has end stops, so its error is not wrapped: -179 deg is far from +179 deg.
+  error_rad_ = std::max(std::abs(joints_->pitch_rad - goal_.pitch_rad),
+                        std::abs(joints_->yaw_rad - goal_.yaw_rad));
+  char text[96];
+  std::snprintf(text, sizeof text, "%.2f deg from the target", error_rad_ * kRadToDeg);
+  Step step;
+  step.text = text;
+  if (error_rad_ <= tolerance_rad_) step.phase = Phase::kSucceeded;
+  tracker_.report(step);
+}
+
+Result<CalibrationKind> calibration_kind(int kind) {
+  if (kind < 0 || kind > 2) {
+    return Status::fail("field 'kind' must be 0 (drift), 1 (linear) or 2 (accelerometer), got " +
+                        std::to_string(kind));
+  }
+  return static_cast<CalibrationKind>(kind);
+}
+
+std::optional<Step> calibration_step(const p::CameraUpgradeStatus& status) {
+  Step step;
+  switch (status.state) {
+    case p::CameraUpgradeState::kRepairing:
+      step.text = "calibrating, " + std::to_string(status.progress_percent) + " %";
+      return step;
+    case p::CameraUpgradeState::kSucceeded:
+      step.phase = Phase::kSucceeded;
+      step.text = "done";
+      return step;
+    case p::CameraUpgradeState::kFailed:
+      step.phase = Phase::kFailed;
+      step.text = "the pod reported the calibration failed";
+      return step;
+    case p::CameraUpgradeState::kUpgrading:
+      break;
+  }
+  return std::nullopt;
+}
+
+Result<GimbalCalibration> GimbalCalibration::create(int kind, double timeout_s, double now_s) {
+  Result<CalibrationKind> which = calibration_kind(kind);
+  if (!which) return which.status();
+  const TimeoutChoice timeout = choose_timeout(timeout_s, kDefaultTimeoutS);
+  if (!timeout.ok) return Status::fail(timeout.error);
+  return GimbalCalibration(which.value(), timeout.seconds, now_s);
+}
+
+GimbalCalibration::GimbalCalibration(CalibrationKind kind, double timeout_s, double now_s)
+    : kind_(kind), tracker_(calibration_name(kind), "0x000008 'succeeded'", timeout_s, now_s) {}
+
+void GimbalCalibration::on_status(const p::CameraUpgradeStatus& status) {
+  const std::optional<Step> step = calibration_step(status);
+  if (!step) return;
+  if (status.state == p::CameraUpgradeState::kRepairing ||
+      status.state == p::CameraUpgradeState::kSucceeded) {
+    progress_percent_ = status.progress_percent;
+  }
+  tracker_.report(*step);
+}
+
+}  // namespace k40t::operations

@@ -1,0 +1,90 @@
+#include "k40t_driver/operations/operation_tracker.h"
+
+#include <cmath>
+#include <cstdio>
+#include <utility>
+
+namespace k40t::operations {
+
+namespace {
+std::string seconds_text(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f s", s);
+  return text;
+}
+}  // namespace
+
+const char* to_string(Phase phase) {
+  switch (phase) {
+    case Phase::kRunning:
+      return "running";
+    case Phase::kSucceeded:
+      return "succeeded";
+    case Phase::kFailed:
+      return "failed";
+    case Phase::kTimedOut:
+      return "timed out";
+    case Phase::kCancelled:
+      return "cancelled";
+  }
+  return "?";
+}
+
+OperationTracker::OperationTracker(std::string what, std::string awaited, double timeout_s,
+                                   double now_s)
+    : what_(std::move(what)),
+      awaited_(std::move(awaited)),
+      timeout_s_(timeout_s),
+      start_s_(now_s) {}
+
+void OperationTracker::end(Phase phase, std::string reason) {
+  phase_ = phase;
+  reason_ = std::move(reason);
+}
+
+void OperationTracker::acknowledged(bool ok, const std::string& message) {
+  if (done()) return;
+  if (!ok) return end(Phase::kFailed, what_ + " refused or not acknowledged: " + message);
+  acked_ = true;
+  if (success_reported_) end(Phase::kSucceeded, what_ + ": " + success_text_);
+}
+
+void OperationTracker::report(const Step& step) {
+  if (done()) return;
+  ++reports_;
+  status_text_ = step.text;
+  if (step.phase == Phase::kFailed) return end(Phase::kFailed, what_ + " failed: " + step.text);
+  if (step.phase != Phase::kSucceeded) return;
+  if (acked_) return end(Phase::kSucceeded, what_ + ": " + step.text);
+  success_reported_ = true;  // the ACK decides
+  success_text_ = step.text;
+}
+
+void OperationTracker::cancel(const std::string& how) {
+  if (done()) return;
+  end(Phase::kCancelled, what_ + " cancelled" + (how.empty() ? "" : ": " + how));
+}
+
+Phase OperationTracker::check(double now_s) {
+  if (done() || elapsed_s(now_s) < timeout_s_) return phase_;
+  const std::string last = !acked_                ? "the request was not acknowledged yet"
+                           : status_text_.empty() ? "no status frame received"
+                                                  : "last status '" + status_text_ + "'";
+  end(Phase::kTimedOut, what_ + " timed out after " + seconds_text(timeout_s_) + " waiting for " +
+                            awaited_ + " (" + last + ")");
+  return phase_;
+}
+
+TimeoutChoice choose_timeout(double requested_s, double default_s) {
+  TimeoutChoice choice;
+  if (!std::isfinite(requested_s) || requested_s < 0) {
+    choice.error = "field 'timeout' must be 0 (the default, " + seconds_text(default_s) +
+                   ") or a positive number of seconds, got " + std::to_string(requested_s);
+    return choice;
+  }
+  choice.ok = true;
+  choice.seconds = requested_s == 0 ? default_s : requested_s;
+  return choice;
+}
+
+}  // namespace k40t::operations

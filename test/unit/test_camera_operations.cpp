@@ -1,0 +1,171 @@
+// ZoomTo, SdFormat, PreciseReshoot, TfUpgrade: each status state's step (sections 3.2.4.5,
+// 3.2.4.7, 3.2.4.11, 3.2.4.12), goal validation with nothing built for a bad goal, and the
+// precise re-shoot request built from physical units and the latest 0x000005.
+#include <gtest/gtest.h>
+
+#include "k40t_driver/operations/camera_operations.h"
+
+namespace k40t::operations {
+namespace {
+
+namespace p = protocol;
+
+TEST(StatusSteps, ZoomStatus) {
+  p::ZoomStatus s;
+  s.progress = p::ZoomProgress::kZooming;
+  EXPECT_EQ(zoom_step(s).phase, Phase::kRunning);
+  s.progress = p::ZoomProgress::kDone;
+  EXPECT_EQ(zoom_step(s).phase, Phase::kSucceeded);
+}
+
+TEST(StatusSteps, SdFormatStatus) {
+  p::SdFormatStatus s;
+  s.state = p::SdFormatState::kFormatting;
+  EXPECT_EQ(sd_format_step(s).phase, Phase::kRunning);
+  s.state = p::SdFormatState::kDone;
+  EXPECT_EQ(sd_format_step(s).phase, Phase::kSucceeded);
+  s.state = p::SdFormatState::kFailed;
+  EXPECT_EQ(sd_format_step(s).phase, Phase::kFailed);
+  s.state = p::SdFormatState::kUnavailable;
+  EXPECT_EQ(sd_format_step(s).phase, Phase::kFailed);
+  EXPECT_EQ(sd_format_step(s).text, "SD card unavailable");
+}
+
+TEST(StatusSteps, PreciseReshootStatusEveryState) {
+  // Section 3.2.4.7 byte 2: 0 completed, 12 precise re-shooting, 1/2/3/5 shooting, 4 stopped,
+  // 6 failed, 7..11 SD card problems.
+  for (int code = 0; code <= 12; ++code) {
+    p::PreciseReshootStatus s;
+    s.state = static_cast<p::ReshootState>(code);
+    const Phase expected = code == 0                                             ? Phase::kSucceeded
+                           : (code >= 1 && code <= 3) || code == 5 || code == 12 ? Phase::kRunning
+                                                                                 : Phase::kFailed;
+    EXPECT_EQ(reshoot_step(s).phase, expected) << "state " << code;
+    EXPECT_FALSE(reshoot_step(s).text.empty());
+  }
+  p::PreciseReshootStatus unknown;
+  unknown.state = static_cast<p::ReshootState>(40);
+  EXPECT_EQ(reshoot_step(unknown).phase, Phase::kFailed);
+  EXPECT_EQ(reshoot_step(unknown).text, "state 40");
+}
+
+TEST(StatusSteps, TfUpgradeStatus) {
+  // Section 3.2.4.11: 0x01 upgrading, 0x02 failed, 0x00 succeeded.
+  p::TfCardUpgradeStatus s;
+  s.state = p::TfUpgradeState::kUpgrading;
+  EXPECT_EQ(tf_upgrade_step(s).phase, Phase::kRunning);
+  s.state = p::TfUpgradeState::kSucceeded;
+  EXPECT_EQ(tf_upgrade_step(s).phase, Phase::kSucceeded);
+  s.state = p::TfUpgradeState::kFailed;
+  EXPECT_EQ(tf_upgrade_step(s).phase, Phase::kFailed);
+}
+
+TEST(ZoomTo, ValidatesTheRatioAndEndsOnDone) {
+  EXPECT_FALSE(ZoomTo::create(0.5, 0, 0));
+  const Result<ZoomTo> too_far = ZoomTo::create(161, 0, 0);
+  ASSERT_FALSE(too_far);
+  EXPECT_NE(too_far.error().find("field 'ratio'"), std::string::npos);
+  Result<ZoomTo> zoom = ZoomTo::create(10, 0, 0);
+  ASSERT_TRUE(zoom) << zoom.error();
+  EXPECT_EQ(zoom->request().zoom_x, 10);
+  EXPECT_EQ(zoom->tracker().timeout_s(), ZoomTo::kDefaultTimeoutS);
+  EXPECT_FALSE(zoom->ratio_x());
+  p::VisibleStatus visible;
+  visible.zoom_x = 4.2;
+  zoom->on_visible(visible);
+  EXPECT_EQ(zoom->ratio_x().value(), 4.2);
+  zoom->tracker().acknowledged(true, "ok");
+  p::ZoomStatus status;
+  status.progress = p::ZoomProgress::kZooming;
+  zoom->on_status(status);
+  EXPECT_EQ(zoom->tracker().phase(), Phase::kRunning);
+  status.progress = p::ZoomProgress::kDone;
+  zoom->on_status(status);
+  EXPECT_EQ(zoom->tracker().phase(), Phase::kSucceeded);
+}
+
+TEST(SdFormat, TimeoutChoice) {
+  EXPECT_EQ(SdFormat::create(0, 0)->tracker().timeout_s(), SdFormat::kDefaultTimeoutS);
+  EXPECT_EQ(SdFormat::create(3, 0)->tracker().timeout_s(), 3);
+  EXPECT_FALSE(SdFormat::create(-3, 0));
+}
+
+// reshoot_request itself (defaults from 0x000005, ranges): test/ros/unit/test_reshoot_request.cpp.
+TEST(PreciseReshoot, RequestFromTheArgsAndTheLatestVisibleStatus) {
+  p::VisibleStatus visible;
+  visible.zoom_x = 6.5;
+  visible.precise_shot_focal_length_mm = 12.34;  // bytes 13-14 = 1234 (0.01 mm)
+  PreciseReshootGoal goal;
+  goal.args.lens = 2;
+  goal.args.resolution = 0x14;  // section 3.2.4.7 byte 2: 8000*6000
+  goal.args.folder = "survey";
+  goal.args.name = "pole_7";
+  Result<PreciseReshoot> shot = PreciseReshoot::create(goal, visible, 0);
+  ASSERT_TRUE(shot) << shot.error();
+  const p::PreciseReshootRequest& r = shot->request();
+  EXPECT_EQ(r.lens, p::PhotoLensMode::kVisible);
+  EXPECT_EQ(r.resolution, p::ReshootResolution::k8000x6000);
+  EXPECT_EQ(r.zoom_x, 6.5);
+  EXPECT_EQ(r.focal_length_raw, 1234);
+  EXPECT_EQ(r.folder, "survey");
+  EXPECT_EQ(shot->tracker().timeout_s(), PreciseReshoot::kDefaultTimeoutS);
+}
+
+TEST(PreciseReshoot, RefusesBadGoals) {
+  p::VisibleStatus visible;
+  PreciseReshootGoal goal;
+  goal.args.resolution = 0x15;
+  const Result<PreciseReshoot> no_status = PreciseReshoot::create(goal, std::nullopt, 0);
+  ASSERT_FALSE(no_status);
+  EXPECT_NE(no_status.error().find("0x000005"), std::string::npos);
+  goal.args.zoom_ratio = 2;
+  goal.args.focal_length_mm = 10;
+  EXPECT_TRUE(PreciseReshoot::create(goal, std::nullopt, 0));  // nothing taken from the report
+  goal.timeout_s = -1;
+  const Result<PreciseReshoot> timeout = PreciseReshoot::create(goal, visible, 0);
+  ASSERT_FALSE(timeout);
+  EXPECT_NE(timeout.error().find("field 'timeout'"), std::string::npos);
+  goal.timeout_s = 0;
+  goal.args.resolution = 0x18;
+  EXPECT_FALSE(PreciseReshoot::create(goal, visible, 0));
+}
+
+TEST(PreciseReshoot, EndsOnTakenOrAFailureState) {
+  p::VisibleStatus visible;
+  visible.zoom_x = 1;
+  PreciseReshootGoal goal;
+  goal.args.resolution = 0x15;
+  Result<PreciseReshoot> shot = PreciseReshoot::create(goal, visible, 0);
+  ASSERT_TRUE(shot);
+  shot->tracker().acknowledged(true, "ok");
+  p::PreciseReshootStatus status;
+  status.state = p::ReshootState::kReshooting;
+  shot->on_status(status);
+  EXPECT_EQ(shot->tracker().phase(), Phase::kRunning);
+  status.state = p::ReshootState::kSdFull;
+  shot->on_status(status);
+  EXPECT_EQ(shot->tracker().phase(), Phase::kFailed);
+}
+
+TEST(TfUpgrade, ProgressOnlyFromUpgradingFrames) {
+  Result<TfUpgrade> upgrade = TfUpgrade::create(0, 0);
+  ASSERT_TRUE(upgrade);
+  EXPECT_EQ(upgrade->tracker().timeout_s(), TfUpgrade::kDefaultTimeoutS);
+  upgrade->tracker().acknowledged(true, "ok");
+  p::CameraUpgradeStatus progress;
+  progress.state = p::CameraUpgradeState::kRepairing;  // a calibration's
+  progress.progress_percent = 70;
+  upgrade->on_progress(progress);
+  EXPECT_EQ(upgrade->progress_percent(), -1);
+  progress.state = p::CameraUpgradeState::kUpgrading;
+  progress.progress_percent = 30;
+  upgrade->on_progress(progress);
+  EXPECT_EQ(upgrade->progress_percent(), 30);
+  p::TfCardUpgradeStatus status;
+  status.state = p::TfUpgradeState::kSucceeded;
+  upgrade->on_status(status);
+  EXPECT_EQ(upgrade->tracker().phase(), Phase::kSucceeded);
+}
+
+}  // namespace
+}  // namespace k40t::operations
