@@ -8,26 +8,15 @@
 #include <vector>
 
 #include "k40t_driver/psdk/commands/all.h"
+#include "psdk_data_codec.h"
 #include "k40t_driver/psdk/commands/header_variants.h"
 
 namespace k40t::psdk {
 namespace {
 
-using Bytes = std::vector<uint8_t>;
-
-template <class T>
-Bytes encoded(const T& m) {
-  const Result<Data> d = encode_data(m);
-  EXPECT_TRUE(d) << d.error();
-  return d ? Bytes(d->data(), d->data() + d->size) : Bytes{};
-}
-
-template <class T>
-T decoded(const Bytes& b) {
-  const Result<T> m = decode_data<T>(b.data(), b.size());
-  EXPECT_TRUE(m) << m.error();
-  return m ? m.value() : T{};
-}
+using test::Bytes;
+using test::decoded;
+using test::encoded;
 
 // 3.4.8 ACK: code 0, recording 1, uint16 duration 75 s = 0x004B.
 TEST(PsdkBridgeGolden, RecordStateAck) {

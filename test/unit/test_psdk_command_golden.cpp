@@ -6,25 +6,14 @@
 #include <vector>
 
 #include "k40t_driver/psdk/commands/all.h"
+#include "psdk_data_codec.h"
 
 namespace k40t::psdk {
 namespace {
 
-using Bytes = std::vector<uint8_t>;
-
-template <class T>
-Bytes encoded(const T& m) {
-  const Result<Data> d = encode_data(m);
-  EXPECT_TRUE(d) << d.error();
-  return d ? Bytes(d->data(), d->data() + d->size) : Bytes{};
-}
-
-template <class T>
-T decoded(const Bytes& b) {
-  const Result<T> m = decode_data<T>(b.data(), b.size());
-  EXPECT_TRUE(m) << m.error();
-  return m ? m.value() : T{};
-}
+using test::Bytes;
+using test::decoded;
+using test::encoded;
 
 // 3.3.4: double longitude 2.0 rad, double latitude -0.5 rad, int16 12.3 m as 123 (0.1 m),
 // 14 satellites, signal 3 (very strong).
