@@ -5,10 +5,12 @@ import re
 import signal
 import socket
 import subprocess
+import threading
 import time
 
 import rosgraph
 import rospy
+from k40t_driver.srv import GetVersions
 from nodelet.srv import NodeletList
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -77,6 +79,7 @@ class Harness:
         self.stock_manager = stock_manager
         self.procs = []  # everything the checks start (not the master and the simulators)
         self.infra = []
+        self.pending_calls = []  # service calls made in the service_call scenario
         self.tag = "k40t_stop_%d" % os.getpid()
         self.pod_link = "/tmp/%s_pod" % self.tag
         self.skyport_link = "/tmp/%s_skyport" % self.tag
@@ -247,16 +250,23 @@ class Harness:
             if scenario == "service_call":
                 self.pod_control("clear")
 
+    def call_get_versions(self):
+        try:
+            rospy.ServiceProxy("/stop_pod/get_versions", GetVersions)()
+        except Exception:  # the nodelet went away under the call: that is the scenario
+            pass
+
     def at_moment(self, kind, scenario, rng):
         """Waits for the scenario's moment after the nodelet's onInit returned."""
         if scenario == "readback":
             time.sleep(rng.uniform(0.0, 0.6))  # the pod comes online, the settings are read
         elif scenario == "service_call":
-            call = subprocess.Popen(["rosservice", "call", "/stop_pod/get_versions"],
-                                    env=self.env, stdout=subprocess.DEVNULL,
-                                    stderr=subprocess.DEVNULL)
-            self.pending_calls = getattr(self, "pending_calls", []) + [call]
-            time.sleep(rng.uniform(0.6, 1.2))  # rosservice starts, then waits for the ACK
+            # In this process, so that the call is surely waiting for the pod's (delayed) ACK
+            # when the SIGINT comes: the driver answers it only after 250 ms.
+            call = threading.Thread(target=self.call_get_versions, daemon=True)
+            call.start()
+            self.pending_calls.append(call)
+            time.sleep(rng.uniform(0.05, 0.2))
         elif scenario == "reconnecting":
             time.sleep(0.5)
             self.pod_control("disconnect 1")
@@ -323,9 +333,10 @@ class Harness:
                     raise Failure("%s: %s" % (os.path.basename(path), line.strip()[:200]))
 
     def check_no_process_left(self):
-        for call in getattr(self, "pending_calls", []):
-            if call.poll() is None:
-                call.kill()
+        stuck = [c for c in self.pending_calls if (c.join(EXIT_TIMEOUT_S) or c.is_alive())]
+        if stuck:
+            raise Failure("%d service calls never returned after their nodelet was unloaded"
+                          % len(stuck))
         left = [p for p in self.procs if p.alive()]
         if left:
             raise Failure("still running: " + ", ".join(" ".join(p.args[:3]) for p in left))
