@@ -47,6 +47,7 @@ CameraWidget::CameraWidget(PodLink* link, QWidget* parent)
   zoom_->setSingleStep(10);
   zoom_->setPageStep(50);
   zoom_label_ = new QLabel("1.0x", this);
+  zoom_label_->setObjectName("zoom_value");
   zoom_label_->setMinimumWidth(50);
   auto* zoom_in = button("zoom_in", "Zoom +", this);
   auto* zoom_out = button("zoom_out", QString::fromUtf8("Zoom −"), this);
@@ -54,6 +55,7 @@ CameraWidget::CameraWidget(PodLink* link, QWidget* parent)
   zoom_out->setToolTip("Zooms out while held");
   palette_ = choicesBox("palette", "palette", this);
   image_mode_ = choicesBox("image_mode", "image_mode", this);
+  camera_mode_ = choicesBox("camera_mode", "camera_mode", this);
   auto* photo = button("take_photo", "Photo", this);
   auto* record_start = button("record_start", "Record", this);
   auto* record_stop = button("record_stop", "Stop recording", this);
@@ -69,10 +71,12 @@ CameraWidget::CameraWidget(PodLink* link, QWidget* parent)
   layout->addWidget(palette_, 2, 1, 1, 3);
   layout->addWidget(new QLabel("Image", this), 3, 0);
   layout->addWidget(image_mode_, 3, 1, 1, 3);
-  layout->addWidget(photo, 4, 0);
-  layout->addWidget(record_start, 4, 1);
-  layout->addWidget(record_stop, 4, 2, 1, 2);
-  layout->addWidget(measure, 5, 0, 1, 4);
+  layout->addWidget(new QLabel("Mode", this), 4, 0);
+  layout->addWidget(camera_mode_, 4, 1, 1, 3);
+  layout->addWidget(photo, 5, 0);
+  layout->addWidget(record_start, 5, 1);
+  layout->addWidget(record_stop, 5, 2, 1, 2);
+  layout->addWidget(measure, 6, 0, 1, 4);
 
   // The slider sets the zoom when let go, or at once when moved by keys or page clicks.
   connect(zoom_, &QSlider::sliderReleased, this, &CameraWidget::applySliderZoom);
@@ -88,11 +92,14 @@ CameraWidget::CameraWidget(PodLink* link, QWidget* parent)
           [this] { link_->zoom(k40t_driver::Zoom::Request::STOP); });
   connect(zoom_out, &QPushButton::released, this,
           [this] { link_->zoom(k40t_driver::Zoom::Request::STOP); });
-  // activated: only the user's choices, not showSettings() following the driver.
+  // activated: only the user's choices, not showSetting() following the driver.
   connect(palette_, QOverload<int>::of(&QComboBox::activated), this,
           [this](int index) { link_->setPalette(palette_->itemData(index).toInt()); });
-  connect(image_mode_, QOverload<int>::of(&QComboBox::activated), this,
-          [this](int index) { link_->setImageMode(image_mode_->itemData(index).toInt()); });
+  for (QComboBox* box : {image_mode_, camera_mode_}) {
+    connect(box, QOverload<int>::of(&QComboBox::activated), this, [this, box](int index) {
+      link_->setParameter(box->objectName(), box->itemData(index).toInt());
+    });
+  }
   connect(photo, &QPushButton::clicked, this, [this] { link_->takePhoto(); });
   connect(record_start, &QPushButton::clicked, this, [this] { link_->record(true); });
   connect(record_stop, &QPushButton::clicked, this, [this] { link_->record(false); });
@@ -103,9 +110,10 @@ void CameraWidget::applySliderZoom() {
   link_->setZoom(zoom_->value() / 10.0);
 }
 
-void CameraWidget::showSettings(int palette, int image_mode) {
-  selectValue(palette_, palette);
-  selectValue(image_mode_, image_mode);
+void CameraWidget::showSetting(const QString& name, int value) {
+  for (QComboBox* box : {palette_, image_mode_, camera_mode_}) {
+    if (box->objectName() == name) selectValue(box, value);
+  }
 }
 
 void CameraWidget::showZoom(double ratio) {

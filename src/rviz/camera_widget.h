@@ -1,5 +1,6 @@
 // Camera controls: zoom (a slider for the ratio, and in/out buttons that zoom while held),
-// thermal palette and image mode (the choices of cfg/K40t.cfg), photo, recording, laser ranging.
+// thermal palette, image mode and photo/video mode (the choices of cfg/K40t.cfg), photo,
+// recording, laser ranging.
 #pragma once
 
 #include <QGroupBox>
@@ -19,7 +20,7 @@ class CameraWidget : public QGroupBox {
 
   // Follow the driver: the combos show its current settings, the slider its zoom (unless the
   // user is moving it).
-  void showSettings(int palette, int image_mode);
+  void showSetting(const QString& name, int value);
   void showZoom(double ratio);
 
  private:
@@ -30,6 +31,7 @@ class CameraWidget : public QGroupBox {
   QLabel* zoom_label_;
   QComboBox* palette_;
   QComboBox* image_mode_;
+  QComboBox* camera_mode_;  // photo or video: the pod records only in video mode
 };
 
 }  // namespace k40t::rviz_panel

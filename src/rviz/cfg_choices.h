@@ -13,7 +13,7 @@ struct Choice {
   QString label;  // the constant's description in K40t.cfg, e.g. "iron red"
 };
 
-// The enum constants of `parameter` ("palette", "image_mode"); empty if it has none.
+// The enum constants of `parameter` ("palette", "image_mode", "camera_mode"); empty if it has none.
 QVector<Choice> cfgChoices(const char* parameter);
 
 }  // namespace k40t::rviz_panel

@@ -4,6 +4,7 @@
 #include <QComboBox>
 #include <QKeySequence>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPixmap>
 #include <QTest>
 #include <QTextDocument>
@@ -67,12 +68,15 @@ Outcome carryOut(QWidget* panel, const QStringList& words) {
     if (!box) return {false, words[1] + " is not a combo box"};
     return choose(box, rest);
   } else if (verb == "type") {
-    auto* box = qobject_cast<QAbstractSpinBox*>(w);
-    if (!box) return {false, words[1] + " is not a spin box"};
-    box->selectAll();
-    QTest::keyClicks(box, rest);
-    QTest::keyClick(box, Qt::Key_Return);
-    return {true, box->text()};
+    if (auto* box = qobject_cast<QAbstractSpinBox*>(w)) {
+      box->selectAll();
+    } else if (auto* edit = qobject_cast<QLineEdit*>(w)) {
+      edit->selectAll();
+    } else {
+      return {false, words[1] + " is not a spin box or a line edit"};
+    }
+    QTest::keyClicks(w, rest);
+    QTest::keyClick(w, Qt::Key_Return);
   } else if (verb == "text") {
     auto* label = qobject_cast<QLabel*>(w);
     if (!label) return {false, words[1] + " is not a label"};

@@ -10,7 +10,7 @@
 //   key NAME KEY               a key click (Qt key names: PgUp, Up, Left, End...)
 //   keypress NAME KEY          a key held down ... keyrelease NAME KEY   ... and let go
 //   choose NAME TEXT           a combo box stepped with the arrow keys until it shows TEXT
-//   type NAME TEXT             a spin box's text selected and replaced by typing TEXT
+//   type NAME TEXT             a spin box's or line edit's text selected, TEXT typed, Enter
 //   text NAME                  replies with the label's plain text
 //   grab NAME PATH             saves a picture of the widget (the panel: "PodPanel") as PNG
 #pragma once

@@ -24,6 +24,10 @@ QString text(const std::string& s) {
   return QString::fromStdString(s);
 }
 
+QString noAnswer(ros::ServiceClient client) {  // getService() is not const
+  return text("no answer from " + client.getService() + " (is the driver running?)");
+}
+
 // Subscribes `topic` and forwards each message to `signal` of `link` (on the thread that spins
 // the global queue: rviz's GUI thread).
 template <class Msg>
@@ -98,8 +102,7 @@ void PodLink::call(const QString& what, const std::string& relative, Srv srv) {
   ros::ServiceClient client = nh_->serviceClient<Srv>(relative);
   worker_->post([this, what, client, srv]() mutable {
     if (!client.call(srv)) {
-      Q_EMIT callFinished(
-          what, false, text("no answer from " + client.getService() + " (is the driver running?)"));
+      Q_EMIT callFinished(what, false, noAnswer(client));
       return;
     }
     Q_EMIT callFinished(what, srv.response.success, text(srv.response.message));
@@ -151,48 +154,41 @@ void PodLink::measureRange() {
 
 // dynamic_reconfigure has no success/message: the driver reverts a refused change, so the reply's
 // configuration tells whether the pod took it (its log and diagnostics say why not).
-void PodLink::setImageMode(int image_mode) {
-  const QString what = "image_mode";
+void PodLink::setParameter(const QString& name, int value) {
   if (!nh_) {
-    Q_EMIT callFinished(what, false, "no valid driver namespace set");
+    Q_EMIT callFinished(name, false, "no valid driver namespace set");
     return;
   }
   dynamic_reconfigure::Reconfigure srv;
   dynamic_reconfigure::IntParameter param;
-  param.name = "image_mode";
-  param.value = image_mode;
+  param.name = name.toStdString();
+  param.value = value;
   srv.request.config.ints.push_back(param);
   ros::ServiceClient client = nh_->serviceClient<dynamic_reconfigure::Reconfigure>(
       std::string(kDriverNode) + "/set_parameters");
-  worker_->post([this, what, client, srv, image_mode]() mutable {
+  worker_->post([this, name, client, srv, param]() mutable {
     if (!client.call(srv)) {
-      Q_EMIT callFinished(
-          what, false, text("no answer from " + client.getService() + " (is the driver running?)"));
+      Q_EMIT callFinished(name, false, noAnswer(client));
       return;
     }
     for (const auto& p : srv.response.config.ints) {
-      if (p.name != "image_mode") continue;
-      if (p.value == image_mode) {
-        Q_EMIT callFinished(what, true, "ok");
+      if (p.name != param.name) continue;
+      if (p.value == param.value) {
+        Q_EMIT callFinished(name, true, "ok");
       } else {
-        Q_EMIT callFinished(
-            what, false,
-            QString("refused: the pod kept image mode %1 (see the driver's log)").arg(p.value));
+        Q_EMIT callFinished(name, false,
+                            QString("refused: the pod kept %1 (the driver's log and diagnostics "
+                                    "say why)")
+                                .arg(p.value));
       }
       return;
     }
-    Q_EMIT callFinished(what, false, "the driver's reply has no image_mode");
+    Q_EMIT callFinished(name, false, "the driver's reply has no " + name);
   });
 }
 
 void PodLink::onConfig(const dynamic_reconfigure::Config& config) {
-  int palette = -1;
-  int image_mode = -1;
-  for (const auto& p : config.ints) {
-    if (p.name == "palette") palette = p.value;
-    if (p.name == "image_mode") image_mode = p.value;
-  }
-  Q_EMIT settingsChanged(palette, image_mode);
+  for (const auto& p : config.ints) Q_EMIT settingChanged(text(p.name), p.value);
 }
 
 void PodLink::onDiagnostics(const diagnostic_msgs::DiagnosticArray& array) {

@@ -50,7 +50,8 @@ class PodLink : public QObject {
   void setZoom(double ratio);
   void zoom(uint8_t action);  // k40t_driver/Zoom ZOOM_IN, ZOOM_OUT, STOP, ...
   void setPalette(int palette);
-  void setImageMode(int image_mode);  // dynamic_reconfigure parameter of the driver node
+  // An int parameter of the driver node's dynamic_reconfigure ("image_mode", "camera_mode").
+  void setParameter(const QString& name, int value);
   void takePhoto();
   void record(bool start);
   void measureRange();
@@ -63,8 +64,8 @@ class PodLink : public QObject {
   void cameraStatus(const k40t_driver::CameraStatus& msg);
   void photoStatus(const k40t_driver::PhotoStatus& msg);
   void recordStatus(const k40t_driver::RecordStatus& msg);
-  // The driver's current dynamic_reconfigure values of interest (parameter_updates).
-  void settingsChanged(int palette, int image_mode);
+  // Each int parameter of the driver's current configuration (parameter_updates).
+  void settingChanged(const QString& name, int value);
   // From /diagnostics: the worst level (diagnostic_msgs/DiagnosticStatus) of the driver's
   // statuses, the level and message of its link status, and the statuses that are not OK.
   void health(int level, int link_level, const QString& link_message, const QString& others);

@@ -57,7 +57,7 @@ PodPanel::PodPanel(QWidget* parent) : rviz::Panel(parent), link_(new PodLink(thi
   connect(link_, &PodLink::photoStatus, status_, &StatusWidget::showPhoto);
   connect(link_, &PodLink::recordStatus, status_, &StatusWidget::showRecord);
   connect(link_, &PodLink::health, status_, &StatusWidget::showHealth);
-  connect(link_, &PodLink::settingsChanged, camera_, &CameraWidget::showSettings);
+  connect(link_, &PodLink::settingChanged, camera_, &CameraWidget::showSetting);
   connect(link_, &PodLink::callFinished, this, &PodPanel::showCallResult);
   applyNamespace();
   test_hook_ = PanelTestHook::fromEnvironment(this);
