@@ -9,6 +9,7 @@ no driver behind it must leave rviz running with a message saying so.
 
 Every wait is for a condition with a generous timeout (the machine may be loaded); the only
 timed observation is "the pod stopped moving": the same reading twice, a second apart."""
+import math
 import re
 import sys
 import time
@@ -17,8 +18,10 @@ import unittest
 import rospy
 import rostest
 
+from geometry_msgs.msg import Twist
+
 from k40t_driver.srv import SetPalette
-from k40t_test_support import SimControl, service, wait_until
+from k40t_test_support import Recorder, SimControl, name, service, wait_until
 from panel_driver import RvizPanel
 
 PKG = "k40t_driver"
@@ -64,6 +67,7 @@ class PanelTest(unittest.TestCase):
     def setUpClass(cls):
         rospy.init_node("test_panel")
         cls.pod = Pod(rospy.get_param("~control"))
+        cls.rates = Recorder(name("gimbal/cmd_rate"), Twist)
         cls.panel = RvizPanel(rospy.get_param("~rviz_config"))
 
     @classmethod
@@ -72,6 +76,19 @@ class PanelTest(unittest.TestCase):
 
     def near(self, key, value, tolerance):
         return wait_until(lambda: abs(self.pod.number(key) - value) <= tolerance, WAIT, step=0.1)
+
+    def assertRatesThenStop(self, since, axis, expected):
+        """cmd_rate from the panel since `since`: about `expected` rad/s on `axis` ("y" pitch, "z" yaw)
+        repeated while held (the driver's dead-man would stop it otherwise), then an explicit zero
+        on release (not the driver's own dead-man stop)."""
+
+        def seen():
+            msgs = self.rates.messages(since)
+            # 2 %: the press lands on whole pixels, the knob's centre may be half a pixel off.
+            held = [m for m in msgs if abs(getattr(m.angular, axis) - expected) < 0.02 * abs(expected)]
+            return len(held) >= 2 and msgs[-1].angular.y == 0 and msgs[-1].angular.z == 0
+        ok = wait_until(seen, WAIT)
+        self.assertTrue(ok, "cmd_rate: %s" % [(m.angular.y, m.angular.z) for m in self.rates.messages(since)])
 
     def assertPod(self, key, value, tolerance=0.05):
         self.assertTrue(self.near(key, value, tolerance), "%s not %s: %s" % (key, value, self.pod.status()))
@@ -109,19 +126,23 @@ class PanelTest(unittest.TestCase):
 
     def test_06_joystick_turns_while_held_and_stops_on_release(self):
         before = self.pod.settled("yaw")
+        since = time.time()
         self.panel.do("press gimbal_joystick 1 0")  # full right: the pod's yaw grows (right positive)
         turned = wait_until(lambda: self.pod.number("yaw") > before + 10, WAIT, step=0.05)
         self.panel.do("release gimbal_joystick")
         self.assertTrue(turned, "the gimbal did not turn right: %s" % self.pod.status())
+        self.assertRatesThenStop(since, "z", -math.radians(20))  # REP 103: right is negative yaw
         self.assertLess(self.pod.settled("yaw"), 179.0)  # stopped before the mechanical limit
 
     def test_07_held_arrow_key_turns_and_release_stops(self):
         self.panel.do("type gimbal_max_rate 5")  # 5 deg/s: seconds of margin before the +30 limit
         before = self.pod.settled("pitch")
+        since = time.time()
         self.panel.do("keypress gimbal_joystick Up")  # camera up: the pod's pitch grows (up positive)
         turned = wait_until(lambda: self.pod.number("pitch") > before + 3, WAIT, step=0.05)
         self.panel.do("keyrelease gimbal_joystick Up")
         self.assertTrue(turned, "the gimbal did not pitch up: %s" % self.pod.status())
+        self.assertRatesThenStop(since, "y", -math.radians(5))  # REP 103: up is negative pitch
         self.assertLess(self.pod.settled("pitch"), 29.5)  # stopped before the +30 limit
 
     def test_08_move_to_angles_then_centre_and_look_down(self):
