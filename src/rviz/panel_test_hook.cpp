@@ -78,8 +78,9 @@ Outcome carryOut(QWidget* panel, const QStringList& words) {
     QTest::keyClicks(w, rest);
     QTest::keyClick(w, Qt::Key_Return);
   } else if (verb == "text") {
+    if (auto* edit = qobject_cast<QLineEdit*>(w)) return {true, edit->text()};
     auto* label = qobject_cast<QLabel*>(w);
-    if (!label) return {false, words[1] + " is not a label"};
+    if (!label) return {false, words[1] + " is not a label or a line edit"};
     QTextDocument html;
     html.setHtml(label->text());
     return {true, html.toPlainText().simplified()};

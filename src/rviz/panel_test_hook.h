@@ -11,7 +11,7 @@
 //   keypress NAME KEY          a key held down ... keyrelease NAME KEY   ... and let go
 //   choose NAME TEXT           a combo box stepped with the arrow keys until it shows TEXT
 //   type NAME TEXT             a spin box's or line edit's text selected, TEXT typed, Enter
-//   text NAME                  replies with the label's plain text
+//   text NAME                  replies with the label's plain text (or the line edit's text)
 //   grab NAME PATH             saves a picture of the widget (the panel: "PodPanel") as PNG
 #pragma once
 

@@ -2,6 +2,8 @@
 test hook (src/rviz/panel_test_hook.h): each command line becomes real mouse or key events on a
 named widget. Used by test_panel.py; not a test itself."""
 import os
+import re
+import shutil
 import signal
 import subprocess
 import tempfile
@@ -13,8 +15,16 @@ class PanelError(AssertionError):
 
 
 class RvizPanel:
-    def __init__(self, rviz_config, startup_timeout=120.0):
+    def __init__(self, rviz_config, namespace, startup_timeout=120.0):
+        """rviz with a copy of `rviz_config` whose PodPanel has the driver namespace `namespace`."""
         self.dir = tempfile.mkdtemp(prefix="k40t_panel_")
+        config = os.path.join(self.dir, "panel.rviz")
+        with open(rviz_config) as f:
+            text, count = re.subn(r"^(\s+Namespace: ).*$", r"\g<1>" + namespace, f.read(), flags=re.M)
+        if count != 1:
+            raise PanelError("%s: %d PodPanel Namespace lines, expected 1" % (rviz_config, count))
+        with open(config, "w") as f:
+            f.write(text)
         self.commands = os.path.join(self.dir, "commands")
         self.replies = self.commands + ".replies"
         open(self.commands, "w").close()
@@ -22,7 +32,7 @@ class RvizPanel:
         self.xvfb, self.display = self._start_xvfb()
         env = dict(os.environ, DISPLAY=self.display, K40T_PANEL_TEST_COMMANDS=self.commands)
         self.log = open(os.path.join(self.dir, "rviz.log"), "w")
-        self.rviz = subprocess.Popen(["rviz", "-d", rviz_config, "__name:=panel_test_rviz"], env=env,
+        self.rviz = subprocess.Popen(["rviz", "-d", config, "__name:=panel_test_rviz"], env=env,
                                      stdout=self.log, stderr=subprocess.STDOUT)
         self.text("message", timeout=startup_timeout)  # the panel is up and its hook answers
 
@@ -91,4 +101,6 @@ class RvizPanel:
         self.xvfb.terminate()
         self.xvfb.wait(10)
         self.log.close()
+        if code == 0:
+            shutil.rmtree(self.dir, ignore_errors=True)  # kept when rviz failed: its log is there
         return code

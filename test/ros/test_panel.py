@@ -21,7 +21,7 @@ import rostest
 from geometry_msgs.msg import Twist
 
 from k40t_driver.srv import SetPalette
-from k40t_test_support import Recorder, SimControl, name, service, wait_until
+from k40t_test_support import Recorder, SimControl, wait_until
 from panel_driver import RvizPanel
 
 PKG = "k40t_driver"
@@ -67,8 +67,9 @@ class PanelTest(unittest.TestCase):
     def setUpClass(cls):
         rospy.init_node("test_panel")
         cls.pod = Pod(rospy.get_param("~control"))
-        cls.rates = Recorder(name("gimbal/cmd_rate"), Twist)
-        cls.panel = RvizPanel(rospy.get_param("~rviz_config"))
+        cls.ns = rospy.get_param("~ns")  # not the default /k40t: the panel takes it from the .rviz
+        cls.rates = Recorder(cls.ns + "/gimbal/cmd_rate", Twist)
+        cls.panel = RvizPanel(rospy.get_param("~rviz_config"), cls.ns)
 
     @classmethod
     def tearDownClass(cls):
@@ -94,6 +95,7 @@ class PanelTest(unittest.TestCase):
         self.assertTrue(self.near(key, value, tolerance), "%s not %s: %s" % (key, value, self.pod.status()))
 
     def test_01_status_shows_the_pod_and_a_healthy_link(self):
+        self.assertEqual(self.panel.text("namespace"), self.ns)  # loaded from the .rviz file
         self.assertTrue(wait_until(lambda: self.panel.text("status_link").startswith("OK"), WAIT),
                         self.panel.text("status_link"))
         self.assertTrue(wait_until(lambda: "yaw" in self.panel.text("status_joints"), WAIT))
@@ -187,7 +189,8 @@ class PanelTest(unittest.TestCase):
             shown = wait_until(lambda: "set_palette failed" in self.panel.text("message"), WAIT)
             self.assertTrue(shown, self.panel.text("message"))
             # The same refusal asked directly: its message is what the panel shows.
-            reply = service("set_palette", SetPalette)(palette=3)
+            rospy.wait_for_service(self.ns + "/set_palette", timeout=WAIT)
+            reply = rospy.ServiceProxy(self.ns + "/set_palette", SetPalette)(palette=3)
             self.assertFalse(reply.success)
             self.assertIn(reply.message, self.panel.text("message"))
             self.assertEqual(self.pod.number("palette"), 5)  # unchanged: still iron red
@@ -200,7 +203,7 @@ class PanelTest(unittest.TestCase):
         expected = "no answer from /nowhere/take_photo"
         self.assertTrue(wait_until(lambda: expected in self.panel.text("message"), WAIT), self.panel.text("message"))
         self.assertTrue(wait_until(lambda: "no diagnostics" in self.panel.text("status_link"), WAIT))
-        self.panel.do("type namespace /k40t")
+        self.panel.do("type namespace " + self.ns)
         self.assertTrue(wait_until(lambda: self.panel.text("status_link").startswith("OK"), WAIT))
         self.assertTrue(self.panel.alive())
 
