@@ -46,7 +46,7 @@ class FrameParser {
   void feed(const uint8_t* data, size_t size, const FrameCallback& on_frame) {
     // The usual case of small serial reads: a frame is arriving and this read does not complete
     // it, so its bytes are only appended. Inline, because with 1-byte reads the call itself would
-    // cost more than the work (docs/protocol/decisions.md has the frame layout).
+    // cost more than the work.
     const size_t have = end_ - begin_;
     if (have != 0 && size < wanted_ - have && size <= kBufferSize - end_) {
       stats_.bytes_received += size;
