@@ -188,9 +188,11 @@ class TwoPods(unittest.TestCase):
             self.command_one_pod(pod, self.other(pod), *targets[pod.ns])
 
     def command_one_pod(self, pod, other, pitch, yaw, zoom, palette):
-        other_sim = other.sim_state()
+        other_sim = wait_for_values(other.sim_state_at_rest, lambda state: state is not None, 30.0)
+        self.assertIsNotNone(other_sim, "%s never came to rest" % other)
         other_palette = other.palette()
-        other_joints = list(other.joints.latest().position)
+        # joint_states order: yaw, roll, pitch (REP 103 signs, the opposite of the pod's).
+        other_joints = [-math.radians(other_sim[0]), 0.0, -math.radians(other_sim[1])]
         self.assertNotEqual(other_palette, palette, "pick a palette %s does not hold" % other)
         since = time.time()
         pod.call("gimbal/set_angle", SetAngle, pitch=pitch, yaw=yaw)
