@@ -10,6 +10,7 @@ joint_prefix. --mount-parent FRAME adds a fixed joint FRAME -> <prefix>base_link
 --mount-rpy: its origin), which puts several pods in one TF tree under a vehicle frame.
 Exit status 2, with the reason on stderr, on a bad prefix, frame or number."""
 import argparse
+import math
 import os
 import re
 import sys
@@ -23,10 +24,13 @@ NAME = re.compile(r"^[A-Za-z0-9_.-]*$")
 
 def three_numbers(text):
     """'x y z' -> the same three numbers as text (for an origin attribute), or ValueError."""
-    parts = text.split()
-    if len(parts) != 3:
+    try:
+        numbers = [float(p) for p in text.split()]
+    except ValueError:
+        numbers = []
+    if len(numbers) != 3 or not all(math.isfinite(n) for n in numbers):
         raise ValueError("expected three numbers, got '%s'" % text)
-    return " ".join(repr(float(p)) for p in parts)
+    return " ".join(repr(n) for n in numbers)
 
 
 def renamed(name, prefix):

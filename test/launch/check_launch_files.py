@@ -28,7 +28,7 @@ VARIANTS = {
     "demo.launch": [["video:=false"], ["frame_prefix:=pod_a_", "mount_frame:=base_link", "manager:=manager"]],
     "two_pods.launch": [["video:=false", "aggregate:=false", "respawn:=false"]],
     "record.launch": [["raw_only:=true", "duration:=5"]],
-    "replay.launch": [["sim_time:=true", "rate:=2.0"]],
+    "replay.launch": [["sim_time:=true", "rate:=2.0"], ["ns:=pod_b", "frame_prefix:=pod_b_"]],
     "latency.launch": [["in_manager:=true"]],
 }
 

@@ -7,10 +7,13 @@ vehicle frame at their mounts; each pod's telemetry and video arrive, named afte
 command to one pod moves, zooms and recolours that pod only (its simulator, its telemetry), and
 the other pod's driver sends nothing for it."""
 import math
+import os
+import subprocess
 import sys
 import threading
 import time
 import unittest
+import xml.etree.ElementTree as ET
 
 import rospy
 import rostest
@@ -24,6 +27,8 @@ from k40t_test_support import Recorder, wait_until
 from two_pods_support import SHARED_TOPICS, Pod, wait_for_graph, wait_for_values
 
 PKG = "k40t_driver"
+URDF_SCRIPT = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
+                           "scripts", "k40t_urdf.py")
 # The node's own, roslaunch's and the master's parameters.
 GLOBAL_PARAMS = {"/rosdistro", "/rosversion", "/run_id"}
 # Commands of test_command_to_one_pod_leaves_the_other_alone, by message id.
@@ -179,6 +184,23 @@ class TwoPods(unittest.TestCase):
         a, b = self.pods
         self.assertTrue(self.tf_buffer.can_transform(a.prefix + "tele_optical_frame", b.prefix + "laser_frame",
                                                      rospy.Time(0), rospy.Duration(10.0)))
+
+    def test_each_pods_robot_description_carries_its_prefix(self):
+        for pod in self.pods:
+            root = ET.fromstring(rospy.get_param(pod.name("robot_description")))
+            self.assertEqual({link.get("name") for link in root.findall("link")}, set(pod.frames()) | {self.vehicle})
+            joints = [joint.get("name") for joint in root.findall("joint")]
+            self.assertEqual([j for j in joints if not j.startswith(pod.prefix)], [], "%s's URDF" % pod)
+
+    def test_urdf_generator_refuses_bad_names_and_numbers(self):
+        for args, reason in ((["--prefix", "pod a/"], "may hold only"),
+                             (["--mount-parent", "base_link", "--mount-xyz", "1 2"], "three numbers"),
+                             (["--mount-parent", "base_link", "--mount-rpy", "0 0 x"], "three numbers"),
+                             (["--prefix", "pod_a_", "--mount-parent", "pod_a_plate"], "own prefix")):
+            run = subprocess.run([URDF_SCRIPT] + args, capture_output=True, text=True, timeout=30)
+            self.assertEqual(run.returncode, 2, "k40t_urdf.py %s exited %d" % (args, run.returncode))
+            self.assertIn(reason, run.stderr, "k40t_urdf.py %s" % args)
+            self.assertEqual(run.stdout, "", "k40t_urdf.py %s printed a URDF" % args)
 
     # --- commands ----------------------------------------------------------------------------
     def test_command_to_one_pod_leaves_the_other_alone(self):
