@@ -18,6 +18,7 @@ import xml.etree.ElementTree as ET
 import rospy
 import rostest
 import tf2_ros
+from dynamic_reconfigure.client import Client as ReconfigureClient
 from diagnostic_msgs.msg import DiagnosticArray
 from sensor_msgs.msg import CameraInfo, Image
 from tf2_msgs.msg import TFMessage
@@ -29,7 +30,7 @@ from two_pods_support import SHARED_TOPICS, Pod, wait_for_graph, wait_for_values
 PKG = "k40t_driver"
 URDF_SCRIPT = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
                            "scripts", "k40t_urdf.py")
-# The node's own, roslaunch's and the master's parameters.
+# The master's own parameters (roslaunch's are under /roslaunch/).
 GLOBAL_PARAMS = {"/rosdistro", "/rosversion", "/run_id"}
 # Commands of test_command_to_one_pod_leaves_the_other_alone, by message id.
 SET_ANGLE, SET_ZOOM, SET_PALETTE = 0x000012, 0x000304, 0x000106
@@ -106,7 +107,7 @@ class TwoPods(unittest.TestCase):
                 got = images[pod.ns].wait_for(3, timeout=60.0)
                 self.assertGreaterEqual(len(got), 3, "%s: %d images" % (pod, len(got)))
                 image = got[-1]
-                self.assertGreater(image.width * image.height, 0)
+                self.assertEqual((image.width, image.height), (1920, 1080), "%s's visible stream" % pod)
                 self.assertTrue(image.header.frame_id.startswith(pod.prefix),
                                 "%s image in %s" % (pod, image.header.frame_id))
                 info = infos[pod.ns].wait_for(1, timeout=10.0)
@@ -114,6 +115,17 @@ class TwoPods(unittest.TestCase):
                 self.assertEqual(info[-1].header.frame_id, image.header.frame_id)
                 url = rospy.get_param(pod.name("video/url"))
                 self.assertIn(":%d/" % pod.rtsp_port, url, "%s reads %s" % (pod, url))
+            # The first pod's camera to thermal: its own stream turns 640x512, the other's does not
+            # (a video node reading the other pod's stream, or both one, would show it).
+            switched, other = self.pods
+            since = time.time()
+            ReconfigureClient(switched.name("driver"), timeout=30.0).update_configuration({"image_mode": 0})
+            thermal = images[switched.ns].wait_for_match(lambda m: (m.width, m.height) == (640, 512), 30.0, since)
+            self.assertIsNotNone(thermal, "%s's stream never turned thermal" % switched)
+            self.assertEqual(thermal.header.frame_id, switched.prefix + "thermal_optical_frame")
+            after = images[other.ns].wait_for(3, timeout=30.0, since=time.time())
+            self.assertTrue(after, "no images from %s" % other)
+            self.assertEqual({(m.width, m.height) for m in after}, {(1920, 1080)}, "%s's stream changed" % other)
         finally:
             for recorder in list(images.values()) + list(infos.values()):
                 recorder.close()  # the nodelets stop converting frames nobody takes
