@@ -58,10 +58,18 @@ class RvizPanel:
 
     def do(self, line, timeout=30.0):
         """Sends one command, returns the reply's text; raises on an error reply or no reply."""
-        self.sent += 1
-        n = self.sent
+        return self.do_together([line], timeout)[0]
+
+    def do_together(self, lines, timeout=30.0):
+        """Sends the commands in one write: the hook carries them out one after the other in the
+        same pass, with no event processed in between. Returns their replies' texts."""
+        first = self.sent + 1
+        self.sent += len(lines)
         with open(self.commands, "a") as f:
-            f.write(line + "\n")
+            f.write("".join(line + "\n" for line in lines))
+        return [self._reply(first + i, line, timeout) for i, line in enumerate(lines)]
+
+    def _reply(self, n, line, timeout):
         deadline = time.time() + timeout
         while time.time() < deadline:
             if not self.alive():

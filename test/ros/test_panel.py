@@ -197,6 +197,20 @@ class PanelTest(unittest.TestCase):
         finally:
             self.pod.sim.ok("refuse 0")
 
+    def test_10a_a_slow_call_does_not_hold_the_gui(self):
+        """With the pod's ACKs late, laser/measure takes the driver's retries (about a second). The
+        click and the reading of the message line are carried out in the same pass of the GUI
+        thread: had the click waited for the call, the line would already show its outcome."""
+        self.pod.sim.ok("delay-acks 5000")
+        try:
+            _, during = self.panel.do_together(["click laser_measure", "text message"])
+            self.assertNotIn("laser/measure", during)
+            # The outcome arrives later, the driver's reason with it.
+            self.assertTrue(wait_until(lambda: "laser/measure failed" in self.panel.text("message"), WAIT),
+                            self.panel.text("message"))
+        finally:
+            self.pod.sim.ok("delay-acks 0")
+
     def test_11_no_driver_in_the_namespace(self):
         self.panel.do("type namespace /nowhere")
         self.panel.do("click take_photo")
