@@ -94,6 +94,12 @@ std::string fault(AdapterSimulator& adapter, const std::string& name, std::istri
     }
     return "ok " + name;
   }
+  if (name == "utc_late") {
+    const auto ms = number(in, "utc_late milliseconds", 1, 5000);
+    if (!ms) return "error " + ms.error();
+    adapter.delay_next_utc_push(std::chrono::milliseconds(static_cast<int64_t>(*ms)));
+    return "ok utc_late";
+  }
   if (name == "seq_jump") {
     const auto n = number(in, "seq_jump count", 1, 65535);
     if (!n) return "error " + n.error();
@@ -121,7 +127,7 @@ std::string control_help() {
          "zoom FACTOR (digital) | focal MM (optical) | gimbal PITCH ROLL YAW (deg) | "
          "gimbal_state | gimbal_return | power_off | unknown | send SET ID [HEX..] | "
          "transparent TEXT | floating | corrupt P | garbage P | drop_ack P | silence S | "
-         "disconnect S | seq_jump N | clear";
+         "disconnect S | seq_jump N | utc_late MS | clear";
 }
 
 std::string handle_control(AdapterSimulator& adapter, const std::string& line) {
@@ -235,7 +241,7 @@ std::string handle_control(AdapterSimulator& adapter, const std::string& line) {
   }
   if (command == "corrupt" || command == "garbage" || command == "drop_ack" ||
       command == "silence" || command == "disconnect" || command == "seq_jump" ||
-      command == "clear") {
+      command == "utc_late" || command == "clear") {
     return fault(adapter, command, in);
   }
   return "error unknown command '" + command + "' (try help)";

@@ -149,7 +149,37 @@ void AdapterSimulator::run() {
   }
 }
 
+void AdapterSimulator::delay_next_utc_push(std::chrono::milliseconds delay) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  utc_delay_ = delay;
+}
+
+void AdapterSimulator::push_or_delay_utc(const UtcTimePush& message) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (utc_delay_) {
+      late_utc_ = LateUtcPush{std::chrono::steady_clock::now() + *utc_delay_, message};
+      utc_delay_.reset();
+      return;
+    }
+  }
+  push(message);
+}
+
+void AdapterSimulator::send_late_utc_push() {
+  std::optional<UtcTimePush> due;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (late_utc_ && std::chrono::steady_clock::now() >= late_utc_->due) {
+      due = late_utc_->push;
+      late_utc_.reset();
+    }
+  }
+  if (due) push(*due);
+}
+
 void AdapterSimulator::send_due_pushes(double t_s) {
+  send_late_utc_push();
   const AirframeState s = airframe_now();
   for (Schedule& item : schedule_) {
     if (item.hz <= 0 || t_s < item.next_s) continue;
@@ -172,7 +202,7 @@ void AdapterSimulator::send_due_pushes(double t_s) {
     else if (name == AppDateTimePush::kName)
       push(app_date_time_push(s));
     else if (name == UtcTimePush::kName)
-      push(utc_time_push(s));
+      push_or_delay_utc(utc_time_push(s));
     else if (name == OtherPayloadTypePush::kName)
       push(OtherPayloadTypePush{});
     else if (name == RawGpsPush::kName) {
