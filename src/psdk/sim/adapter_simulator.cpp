@@ -1,8 +1,10 @@
 #include "k40t_driver/psdk/sim/adapter_simulator.h"
 
 #include <cmath>
+#include <cstring>
 
 #include "k40t_driver/psdk/identity.h"
+#include "k40t_driver/psdk/sim/adapter_table.h"
 
 namespace k40t::psdk::sim {
 namespace {
@@ -63,9 +65,12 @@ AdapterSimulator::AdapterSimulator(std::unique_ptr<transport::Transport> transpo
                        [this](const IncomingCommand& in) { return answer_get_position(in); });
   session_->on_command(FloatingWindowMessage::key(),
                        [this](const IncomingCommand& in) -> std::optional<Data> {
-                         auto m = decode_data<FloatingWindowMessage>(in.data);
+                         // 3.2.3: UTF-8 text ending with a NUL (read up to it, as the
+                         // adapter's own reading: adapter_table.h).
+                         const char* text = reinterpret_cast<const char*>(in.data.data());
                          std::lock_guard<std::mutex> lock(mutex_);
-                         if (m) floating_window_.push_back(m->text);
+                         if (in.data.size > 0)
+                           floating_window_.emplace_back(text, strnlen(text, in.data.size));
                          return std::nullopt;
                        });
   session_->on_command(TransparentToMobile::key(),
@@ -240,10 +245,10 @@ void AdapterSimulator::push(const Push& message) {
     if (!data) return;
     session_->request_async(Push::key(), data.value(), [this](const AckResult& r) {
       if (!r.received) return;
-      const Result<BatteryInfoAck> ack = decode_data<BatteryInfoAck>(r.data);
+      const Result<table::Reading> ack = table::read(Push::key(), r.data);  // the adapter's table
       std::lock_guard<std::mutex> lock(mutex_);
       ++stats_.battery_acks;
-      if (ack) stats_.last_power_off_ready = ack->power_off_ready;
+      if (ack) stats_.last_power_off_ready = ack->number("power_off_ready") == 1;
     });
   } else {
     sent = session_->send(message);
