@@ -202,6 +202,18 @@ Request& Request::i16(int16_t value) {
   return u16(static_cast<uint16_t>(value));
 }
 
+Request& Request::u32(uint32_t value) {
+  for (int i = 0; i < 4; ++i) bytes_.push_back(static_cast<uint8_t>(value >> (8 * i)));
+  return *this;
+}
+
+Request& Request::f64(double value) {
+  uint64_t bits = 0;
+  std::memcpy(&bits, &value, sizeof bits);
+  for (int i = 0; i < 8; ++i) bytes_.push_back(static_cast<uint8_t>(bits >> (8 * i)));
+  return *this;
+}
+
 Request& Request::f32(float value) {
   uint32_t bits = 0;
   std::memcpy(&bits, &value, sizeof bits);

@@ -58,7 +58,9 @@ class Request {
   Request& u8(uint8_t value);
   Request& u16(uint16_t value);
   Request& i16(int16_t value);
+  Request& u32(uint32_t value);
   Request& f32(float value);
+  Request& f64(double value);
   Request& text(const std::string& value);  // the bytes as they are, no NUL
   const std::vector<uint8_t>& bytes() const { return bytes_; }
 
