@@ -18,6 +18,7 @@ add_dependencies(k40t_ros ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_
 add_library(k40t_ros_skyport SHARED ${K40T_ROS_SKYPORT_SOURCES})
 target_link_libraries(k40t_ros_skyport PUBLIC k40t_ros k40t_psdk)
 include(cmake/video_ros.cmake)  # k40t_ros_video
+include(cmake/bag.cmake)        # k40t_ros_bag, k40t_bag (`k40t bag`)
 
 # One executable per src/ros/nodes/*.cpp, each a thin main() over the library it names.
 set(K40T_NODE_LIBRARY_k40t_node k40t_ros)
