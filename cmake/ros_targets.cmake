@@ -54,7 +54,7 @@ if(CATKIN_ENABLE_TESTING)
   file(GLOB K40T_ROS_UNIT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/test/ros/unit/*.cpp)
   if(K40T_ROS_UNIT_SOURCES)
     add_executable(k40t_ros_unit_tests ${K40T_ROS_UNIT_SOURCES})
-    target_link_libraries(k40t_ros_unit_tests PRIVATE k40t_ros k40t_ros_skyport GTest::gtest
+    target_link_libraries(k40t_ros_unit_tests PRIVATE k40t_ros k40t_ros_skyport k40t_ros_bag GTest::gtest
                                                       GTest::gtest_main)
   endif()
   file(GLOB K40T_ROSTEST_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/test/ros/*.cpp)
