@@ -74,7 +74,8 @@ uint64_t write_traffic(const std::string& path, double seconds) {
     }
     if (t >= next_target) {  // the answer to the driver's 1 Hz laser target request
       protocol::TargetGpsAck ack;
-      ack.utc_time_ms = static_cast<uint64_t>(start_ns / 1'000'000) + static_cast<uint64_t>(t * 1000);
+      ack.utc_time_ms =
+          static_cast<uint64_t>(start_ns / 1'000'000) + static_cast<uint64_t>(t * 1000);
       ack.longitude_deg = 8.5456;
       ack.latitude_deg = 47.3977;
       ack.altitude_m = 420.0;
@@ -115,9 +116,10 @@ int main(int argc, char** argv) {
 
   const Clock::time_point start = Clock::now();
   const uint64_t frames = write_traffic(input, seconds);
-  std::printf("synthetic traffic: %.0f s of pod time, %llu frames (%.1f frames/s), written in %.2f s\n",
-              seconds, static_cast<unsigned long long>(frames), static_cast<double>(frames) / seconds,
-              seconds_since(start));
+  std::printf(
+      "synthetic traffic: %.0f s of pod time, %llu frames (%.1f frames/s), written in %.2f s\n",
+      seconds, static_cast<unsigned long long>(frames), static_cast<double>(frames) / seconds,
+      seconds_since(start));
 
   decode(input, stem + ".decoded.bag", "decode", {}, seconds);
   Result<std::unique_ptr<driver::FrameExport>> jsonl = driver::open_jsonl_export(stem + ".jsonl");

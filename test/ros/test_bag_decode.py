@@ -27,11 +27,9 @@ import rosgraph
 import rospkg
 import rospy
 import rostest
-from dynamic_reconfigure.client import Client as ReconfigureClient
-from sensor_msgs.msg import Imu, NavSatFix
 
 from k40t_driver.msg import Frame
-from k40t_test_support import Recorder, wait_until
+from k40t_test_support import Recorder, make_every_topic_flow, wait_until
 
 PKG = "k40t_driver"
 NS = "/k40t"
@@ -91,17 +89,7 @@ class BagDecode(unittest.TestCase):
         """raw/rx and raw/tx of the live driver into cls.raw; returns the rx frames."""
         if not Recorder(NS + "/joint_states", rospy.AnyMsg).wait_for(3, timeout=20.0):
             raise AssertionError("no live driver")
-        # Every topic flowing: periodic laser ranging, and a fix for the laser-target requests.
-        ReconfigureClient(NS + "/driver", timeout=15.0).update_configuration({"periodic_ranging": True})
-        fix_pub = rospy.Publisher(NS + "/fix", NavSatFix, queue_size=1, latch=True)
-        imu_pub = rospy.Publisher(NS + "/attitude", Imu, queue_size=1, latch=True)
-        fix = NavSatFix()
-        fix.latitude, fix.longitude, fix.altitude = 47.3977, 8.5456, 500.0
-        imu = Imu()
-        imu.orientation.w = 1.0
-        fix_pub.publish(fix)
-        imu_pub.publish(imu)
-        time.sleep(1.5)
+        cls.publishers = make_every_topic_flow(NS)
         rx = Recorder(NS + "/raw/rx", Frame)
         tx = Recorder(NS + "/raw/tx", Frame)
         time.sleep(seconds)

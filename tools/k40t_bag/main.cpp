@@ -23,7 +23,8 @@ std::string output_path(const std::string& input, const std::string& out_dir) {
   const size_t slash = input.rfind('/');
   const std::string dir = slash == std::string::npos ? "." : input.substr(0, slash);
   std::string name = slash == std::string::npos ? input : input.substr(slash + 1);
-  if (name.size() > 4 && name.compare(name.size() - 4, 4, ".bag") == 0) name.resize(name.size() - 4);
+  if (name.size() > 4 && name.compare(name.size() - 4, 4, ".bag") == 0)
+    name.resize(name.size() - 4);
   return (out_dir.empty() ? dir : out_dir) + "/" + name + ".decoded.bag";
 }
 
@@ -61,7 +62,8 @@ bool decode_one(const std::string& input, const std::string& output, BagDecodeOp
     return false;
   }
   std::string namespaces;
-  for (const std::string& ns : summary->namespaces) namespaces += (namespaces.empty() ? "" : " ") + ns;
+  for (const std::string& ns : summary->namespaces)
+    namespaces += (namespaces.empty() ? "" : " ") + ns;
   std::fprintf(stderr, "k40t bag: %s -> %s: %llu frames (%llu rejected) -> %llu messages [%s]\n",
                input.c_str(), output.c_str(), static_cast<unsigned long long>(summary->rx_frames),
                static_cast<unsigned long long>(summary->bad_frames),

@@ -52,21 +52,22 @@ void advertise_decoded_topics(Sink& sink, PodDriver& driver, const RosPodConfig&
   // The attitude report: joint states, the stabilised attitude, and TF.
   {
     auto joints = sink.template advertise<sensor_msgs::JointState>("joint_states", 10, false);
-    auto attitude = sink.template advertise<geometry_msgs::QuaternionStamped>("gimbal/attitude",
-                                                                             10, false);
+    auto attitude =
+        sink.template advertise<geometry_msgs::QuaternionStamped>("gimbal/attitude", 10, false);
     std::function<void(const tf2_msgs::TFMessage&)> tf;
-    if (config.publish_tf) tf = sink.template advertise<tf2_msgs::TFMessage>(kTfTopic, kTfQueue, false);
-    driver.on<p::GimbalAttitude>([=, geometry = config.geometry](const p::GimbalAttitude& m,
-                                                                 StampNs s) {
-      const ros::Time t = to_ros_time(s);
-      joints(to_joint_state(m, t, ids));
-      attitude(to_attitude(m, t, ids));
-      if (tf) {
-        tf2_msgs::TFMessage transforms;  // what TransformBroadcaster::sendTransform publishes
-        transforms.transforms = gimbal_transforms(m, t, ids, geometry);
-        tf(transforms);
-      }
-    });
+    if (config.publish_tf)
+      tf = sink.template advertise<tf2_msgs::TFMessage>(kTfTopic, kTfQueue, false);
+    driver.on<p::GimbalAttitude>(
+        [=, geometry = config.geometry](const p::GimbalAttitude& m, StampNs s) {
+          const ros::Time t = to_ros_time(s);
+          joints(to_joint_state(m, t, ids));
+          attitude(to_attitude(m, t, ids));
+          if (tf) {
+            tf2_msgs::TFMessage transforms;  // what TransformBroadcaster::sendTransform publishes
+            transforms.transforms = gimbal_transforms(m, t, ids, geometry);
+            tf(transforms);
+          }
+        });
   }
 
   // One line per status topic: advertise, then convert and publish each report as it comes.
@@ -74,7 +75,8 @@ void advertise_decoded_topics(Sink& sink, PodDriver& driver, const RosPodConfig&
     using Msg = typename decltype(tag)::type;
     using RosMsg = decltype(convert(std::declval<Msg>(), ros::Time()));
     auto publish = sink.template advertise<RosMsg>(topic, 10, false);
-    driver.on<Msg>([publish, convert](const Msg& m, StampNs s) { publish(convert(m, to_ros_time(s))); });
+    driver.on<Msg>(
+        [publish, convert](const Msg& m, StampNs s) { publish(convert(m, to_ros_time(s))); });
   };
   auto plain = [](const auto& m, const ros::Time& t) { return to_msg(m, t); };
   forward(Tag<p::GimbalStatus>{}, "gimbal/status", plain);
@@ -99,8 +101,9 @@ void advertise_decoded_topics(Sink& sink, PodDriver& driver, const RosPodConfig&
   };
   driver.on<p::LaserRangeAck>(publish_range);
   driver.on<p::LaserPeriodicRangeStatus>(publish_range);
-  forward(Tag<p::TargetGpsAck>{}, "laser/target",
-          [ids](const p::TargetGpsAck& m, const ros::Time& t) { return to_nav_sat_fix(m, t, ids); });
+  forward(
+      Tag<p::TargetGpsAck>{}, "laser/target",
+      [ids](const p::TargetGpsAck& m, const ros::Time& t) { return to_nav_sat_fix(m, t, ids); });
 }
 
 }  // namespace k40t::driver

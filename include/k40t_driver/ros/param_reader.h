@@ -36,10 +36,9 @@ class ParamReader {
   template <class T>
   T get(const std::string& name, const T& fallback) {
     T value = fallback;
-    const bool wrong_type =
-        nh_ ? nh_->hasParam(name) && !nh_->getParam(name, value)
-            : params_.getType() == XmlRpc::XmlRpcValue::TypeStruct && params_.hasMember(name) &&
-                  !from_xmlrpc(params_[name], value);
+    const bool wrong_type = nh_ ? nh_->hasParam(name) && !nh_->getParam(name, value)
+                                : params_.getType() == XmlRpc::XmlRpcValue::TypeStruct &&
+                                      params_.hasMember(name) && !from_xmlrpc(params_[name], value);
     if (wrong_type) fail(name, "has the wrong type");
     return value;
   }

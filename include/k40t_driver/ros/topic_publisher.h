@@ -24,7 +24,7 @@ class RosTopicSink {
   explicit RosTopicSink(ros::NodeHandle nh) : nh_(nh) {}
   template <class RosMsg>
   std::function<void(const RosMsg&)> advertise(const std::string& topic, uint32_t queue,
-                                                bool latch) {
+                                               bool latch) {
     ros::Publisher publisher = nh_.advertise<RosMsg>(topic, queue, latch);
     return [publisher](const RosMsg& message) { publisher.publish(message); };
   }

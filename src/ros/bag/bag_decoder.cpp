@@ -81,7 +81,8 @@ class PodDecoder {
   void export_frame(const std::string& topic, uint64_t index, const protocol::FrameView& frame,
                     StampNs stamp) {
     const ExportedFrame exported{bag_, topic, stamp, index, frame};
-    for (FrameExport* e : options_.exports) e->write(exported, options_.config.driver.session.codec);
+    for (FrameExport* e : options_.exports)
+      e->write(exported, options_.config.driver.session.codec);
   }
 
   BagTopicSink sink_;
@@ -113,7 +114,7 @@ Result<BagDecodeSummary> decode_bag(const std::string& input, rosbag::Bag& outpu
     rosbag::Bag bag(input, rosbag::bagmode::Read);
     rosbag::View everything(bag);
     // Which topics are whose: <ns>/raw/rx and <ns>/raw/tx of type k40t_driver/Frame.
-    std::map<std::string, std::unique_ptr<PodDecoder>> pods;  // by namespace
+    std::map<std::string, std::unique_ptr<PodDecoder>> pods;     // by namespace
     std::map<std::string, std::pair<PodDecoder*, bool>> routes;  // topic -> pod, is rx
     const std::string frame_type = ros::message_traits::datatype<k40t_driver::Frame>();
     std::vector<std::string> raw_topics;
@@ -164,8 +165,8 @@ Result<BagDecodeSummary> decode_bag(const std::string& input, rosbag::Bag& outpu
   } catch (const std::exception& e) {
     // rosbag's BagException family: unreadable, unindexed or truncated files, bad chunks.
     return Fail::fail(input + ": cannot read the bag" +
-                      (read ? " after " + std::to_string(read) + " frames" : std::string()) +
-                      ": " + e.what() + " (a truncated bag may be repaired with `rosbag reindex`)");
+                      (read ? " after " + std::to_string(read) + " frames" : std::string()) + ": " +
+                      e.what() + " (a truncated bag may be repaired with `rosbag reindex`)");
   }
   return summary;
 }

@@ -33,7 +33,8 @@ Status finish_file(std::FILE* file, const std::string& path) {
 
 class JsonLinesExport : public FrameExport {
  public:
-  JsonLinesExport(FilePtr file, std::string path) : file_(std::move(file)), path_(std::move(path)) {}
+  JsonLinesExport(FilePtr file, std::string path)
+      : file_(std::move(file)), path_(std::move(path)) {}
   void write(const ExportedFrame& f, const protocol::CodecOptions& codec) override {
     tool::JsonWriter out;
     out.begin_object();
@@ -61,19 +62,11 @@ std::string csv_quoted(const std::string& text) {
   return quoted + "\"";
 }
 
-// A message's fields as CSV columns (names) and cells (values), in declaration order.
-class CsvRowSink : public protocol::FieldSink {
+// A message's fields as CSV columns (names) and cells (values), in declaration order; reals with
+// every digit.
+class CsvRowSink : public tool::FieldTextSink {
  public:
-  void integer(const char* name, int64_t value) override { add(name, std::to_string(value)); }
-  void unsigned_integer(const char* name, uint64_t value) override {
-    add(name, std::to_string(value));
-  }
-  void real(const char* name, double value) override {
-    char buffer[32];
-    std::snprintf(buffer, sizeof(buffer), "%.17g", value);
-    add(name, buffer);
-  }
-  void boolean(const char* name, bool value) override { add(name, value ? "1" : "0"); }
+  CsvRowSink() : FieldTextSink("%.17g") {}
   void text(const char* name, const std::string& value) override { add(name, csv_quoted(value)); }
   void enumeration(const char* name, int64_t code, const char* label) override {
     add(name, std::to_string(code));
@@ -85,7 +78,7 @@ class CsvRowSink : public protocol::FieldSink {
   std::string names, values;
 
  private:
-  void add(const std::string& name, const std::string& value) {
+  void add(const std::string& name, const std::string& value) override {
     names += "," + name;
     values += "," + value;
   }
@@ -96,8 +89,10 @@ std::string file_stem(const protocol::MessageInfo& info) {
   std::string stem = tool::id_text(info.id) + "_";
   for (const char* c = info.name; *c; ++c) {
     const bool keep = std::isalnum(static_cast<unsigned char>(*c));
-    if (keep) stem += static_cast<char>(std::tolower(static_cast<unsigned char>(*c)));
-    else if (stem.back() != '_') stem += '_';
+    if (keep)
+      stem += static_cast<char>(std::tolower(static_cast<unsigned char>(*c)));
+    else if (stem.back() != '_')
+      stem += '_';
   }
   while (stem.back() == '_') stem.pop_back();
   return stem;

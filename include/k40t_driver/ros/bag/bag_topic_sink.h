@@ -35,7 +35,7 @@ class BagTopicSink {
 
   template <class RosMsg>
   std::function<void(const RosMsg&)> advertise(const std::string& topic, uint32_t /*queue*/,
-                                                bool /*latch*/) {
+                                               bool /*latch*/) {
     const std::string resolved = resolve(topic);
     // One counter per topic, like one roscpp Publication per topic and node.
     std::shared_ptr<uint32_t>& seq = seq_[resolved];
