@@ -1,8 +1,11 @@
 // k40t_bag, run as `k40t bag`: decodes recorded flights offline (bag_decoder.h). Needs the ROS
 // build (rosbag's storage library), hence its own program, which the ROS-free `k40t` runs.
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
@@ -97,6 +100,10 @@ int run_bag(const Command& self, const ParsedArgs& args) {
     return kExitFailed;
 
   const std::string out_dir = args.has("--out-dir") ? args.options.at("--out-dir") : "";
+  if (!out_dir.empty() && ::mkdir(out_dir.c_str(), 0777) != 0 && errno != EEXIST) {
+    std::fprintf(stderr, "k40t bag: cannot create %s: %s\n", out_dir.c_str(), std::strerror(errno));
+    return kExitFailed;
+  }
   size_t failed = 0;
   for (const std::string& input : args.positional) {
     const std::string output =

@@ -1,5 +1,9 @@
 #include "k40t_driver/ros/bag/bag_decoder.h"
 
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <map>
 #include <memory>
 
@@ -109,6 +113,8 @@ Result<BagDecodeSummary> decode_bag(const std::string& input, rosbag::Bag& outpu
                                     const BagDecodeOptions& options) {
   using Fail = Result<BagDecodeSummary>;
   BagDecodeSummary summary;
+  if (::access(input.c_str(), R_OK) != 0)
+    return Fail::fail(input + ": cannot open: " + std::strerror(errno));
   uint64_t read = 0;
   try {
     rosbag::Bag bag(input, rosbag::bagmode::Read);
