@@ -43,6 +43,8 @@ install(DIRECTORY include/k40t_driver/ DESTINATION ${CATKIN_PACKAGE_INCLUDE_DEST
 install(FILES nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 install(FILES bench/bench_nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/bench)
 install(DIRECTORY launch config urdf rviz DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
+# The launch files' URDF generator ($(find k40t_driver)/scripts/k40t_urdf.py: prefixed frames).
+install(PROGRAMS scripts/k40t_urdf.py DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/scripts)
 
 # rostest programs, run by scripts/run_tests.sh through test/ros/*.test:
 #   test/ros/unit/*.cpp  gtest of the ROS layer's own logic (conversions, rate dead-man...), one

@@ -272,6 +272,10 @@ std::string PodServer::status() {
     } else {
       out << "centre";
     }
+    // What the pod is busy with: tests wait on these instead of on a 1 Hz status topic.
+    out << " shooting " << (pod.camera().shooting() ? "yes" : "no") << " zooming "
+        << (pod.zoom().zooming() ? "yes" : "no") << " upgrading "
+        << (pod.camera().upgrading() ? "yes" : "no");
   });
   out << " | faults " << faults_.describe();
   return out.str();

@@ -58,6 +58,16 @@ class SimControl:
             raise AssertionError("simulator refused '%s': %s" % (line, reply))
         return reply
 
+    def busy_with(self, activity):
+        """True while the simulated pod is `activity` ("shooting", "zooming" or "upgrading"), from
+        its `status` line: the pod's own state, not a status topic that may be a second old."""
+        words = self.ok("status").split()
+        return words[words.index(activity) + 1] == "yes"
+
+    def wait_idle(self, timeout):
+        """Waits until the pod neither shoots, zooms nor upgrades; False on timeout."""
+        return wait_until(lambda: not any(self.busy_with(a) for a in ("shooting", "zooming", "upgrading")), timeout)
+
 
 class Recorder:
     """Keeps every message of a topic with its arrival time (wall clock)."""
