@@ -239,6 +239,33 @@ class BagDecode(unittest.TestCase):
         self.assertEqual(len(rows), len(attitude))
         self.assertEqual([int(r["stamp_ns"]) for r in rows], [l["stamp_ns"] for l in attitude])
 
+    def test_two_pods_in_one_bag_with_their_frame_prefixes(self):
+        two = os.path.join(self.dir, "two_pods.bag")
+        with rosbag.Bag(self.raw) as raw, rosbag.Bag(two, "w") as bag:
+            for topic, msg, t in raw.read_messages(raw_output=True):
+                for ns in ("/pod_a", "/pod_b"):
+                    bag.write(topic.replace(NS, ns, 1), msg, t, raw=True)
+        run = k40t_bag(two, "--output", os.path.join(self.dir, "two.decoded.bag"), "--config", CONFIG,
+                       "--frame-prefix", "pod_a=pod_a_,/pod_b/=pod_b_")
+        self.assertEqual(run.returncode, 0, run.stderr)
+        decoded = read_bag(os.path.join(self.dir, "two.decoded.bag"))
+        alone = os.path.join(self.dir, "one.decoded.bag")
+        self.assertEqual(k40t_bag(self.raw, "--output", alone, "--config", CONFIG).returncode, 0)
+        one = read_bag(alone)
+        for ns in ("/pod_a", "/pod_b"):
+            joints = decoded[ns + "/joint_states"]
+            # Each pod is a driver of its own: its own seq from 0, its own frame ids, the same stamps.
+            self.assertEqual([m.header.seq for m in joints], list(range(len(one[NS + "/joint_states"]))))
+            self.assertEqual([m.header.stamp for m in joints], [m.header.stamp for m in one[NS + "/joint_states"]])
+            self.assertTrue(all(n.startswith(ns[1:] + "_") for m in joints for n in m.name), joints[0].name)
+            self.assertEqual(decoded[ns + "/thermal/stats"][0].header.frame_id, ns[1:] + "_thermal_optical_frame")
+        children = {t.child_frame_id for m in decoded["/tf"] for t in m.transforms}
+        self.assertEqual(children, {"pod_a_yaw_link", "pod_a_roll_link", "pod_a_pitch_link",
+                                    "pod_b_yaw_link", "pod_b_roll_link", "pod_b_pitch_link"})
+        twice = k40t_bag(two, "--frame-prefix", "a=x_,/a=y_")
+        self.assertEqual(twice.returncode, 2)
+        self.assertIn("--frame-prefix names /a twice", twice.stderr)
+
 
 if __name__ == "__main__":
     rostest.rosrun(PKG, "bag_decode", BagDecode, sys.argv)

@@ -3,9 +3,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -41,6 +43,27 @@ Result<driver::RosPodConfig> read_config(const ParsedArgs& args) {
   }
   driver::ParamReader reader(params, "~");
   return driver::read_params(reader);
+}
+
+// "pod_a_" (every pod) or "/pod_a=pod_a_,/pod_b=pod_b_" (by namespace).
+Result<std::map<std::string, std::string>> parse_frame_prefixes(const std::string& text) {
+  std::map<std::string, std::string> prefixes;
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t comma = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, comma - start);
+    const size_t equals = item.find('=');
+    std::string ns = equals == std::string::npos ? "" : item.substr(0, equals);
+    const std::string prefix = equals == std::string::npos ? item : item.substr(equals + 1);
+    if (!ns.empty() && ns[0] != '/') ns = "/" + ns;
+    while (ns.size() > 1 && ns.back() == '/') ns.pop_back();
+    if (prefixes.count(ns))
+      return Result<std::map<std::string, std::string>>::fail(
+          "--frame-prefix names " + (ns.empty() ? std::string("every pod") : ns) + " twice");
+    prefixes[ns] = prefix;
+    start = comma + 1;
+  }
+  return prefixes;
 }
 
 // Decodes one bag into `output`; on failure the partial output is removed.
@@ -83,6 +106,11 @@ int run_bag(const Command& self, const ParsedArgs& args) {
 
   BagDecodeOptions options;
   options.config = config.value();
+  if (args.has("--frame-prefix")) {
+    auto prefixes = parse_frame_prefixes(args.options.at("--frame-prefix"));
+    if (!prefixes) return usage_error(self, prefixes.error());
+    options.frame_prefixes = prefixes.value();
+  }
   std::vector<std::unique_ptr<driver::FrameExport>> exports;
   auto open_export = [&](const char* option, auto open) {
     if (!args.has(option)) return true;
@@ -142,6 +170,9 @@ const Command& bag_command() {
        {"--config", "FILE",
         "the driver's parameters as a YAML file (e.g. config/k40t.yaml, as the flight's "
         "driver had them: frame ids, offsets, byte orders); default: the built-in defaults"},
+       {"--frame-prefix", "[NS=]PREFIX,...",
+        "frame and joint prefix the pods were recorded with, as replay.launch's frame_prefix: "
+        "one for every pod, or per namespace (/pod_a=pod_a_,/pod_b=pod_b_)"},
        {"--jsonl", "FILE", "also write every raw frame (rx and tx), decoded, as JSON lines"},
        {"--csv", "DIR", "also write every raw frame's fields to DIR/<id>_<name>.csv"}},
       &run_bag};

@@ -32,18 +32,32 @@ std::string namespace_of(const std::string& topic, const std::string& suffix) {
   return ns.empty() ? "/" : ns;
 }
 
+// The parameters of the pod in `ns`: the common ones, with its frame prefix if it has one.
+RosPodConfig config_for(const std::string& ns, const BagDecodeOptions& options) {
+  RosPodConfig config = options.config;
+  auto prefix = options.frame_prefixes.find(ns);
+  if (prefix == options.frame_prefixes.end()) prefix = options.frame_prefixes.find("");
+  if (prefix != options.frame_prefixes.end()) config.ids = FrameIds(prefix->second, prefix->second);
+  return config;
+}
+
 // One pod of the bag: a replay-mode driver writing its decoded topics, and the raw frames'
 // exports.
 class PodDecoder {
  public:
   PodDecoder(std::string ns, rosbag::Bag& output, const BagDecodeOptions& options,
              const std::string& bag, const std::string& rx_topic, const std::string& tx_topic)
-      : sink_(output, ns), options_(options), bag_(bag), rx_topic_(rx_topic), tx_topic_(tx_topic) {
-    DriverOptions driver_options = options.config.driver;
+      : sink_(output, ns),
+        options_(options),
+        config_(config_for(ns, options)),
+        bag_(bag),
+        rx_topic_(rx_topic),
+        tx_topic_(tx_topic) {
+    DriverOptions driver_options = config_.driver;
     driver_options.replay = true;
     driver_ = PodDriver::create(driver_options, [] { return StampNs{0}; }).value();
-    advertise_decoded_topics(sink_, *driver_, options.config);
-    if (options.config.publish_tf)
+    advertise_decoded_topics(sink_, *driver_, config_);
+    if (config_.publish_tf)
       static_tf_ = sink_.advertise<tf2_msgs::TFMessage>("/tf_static", 100, true);
     if (!options.exports.empty()) {
       driver_->on_rx_frame([this](const protocol::FrameView& frame, StampNs stamp) {
@@ -64,8 +78,7 @@ class PodDecoder {
     const StampNs stamp = static_cast<StampNs>(frame.stamp.toNSec());
     if (static_tf_) {
       tf2_msgs::TFMessage transforms;
-      transforms.transforms =
-          sensor_transforms(frame.stamp, options_.config.ids, options_.config.geometry);
+      transforms.transforms = sensor_transforms(frame.stamp, config_.ids, config_.geometry);
       static_tf_(transforms);
       static_tf_ = nullptr;
     }
@@ -85,12 +98,12 @@ class PodDecoder {
   void export_frame(const std::string& topic, uint64_t index, const protocol::FrameView& frame,
                     StampNs stamp) {
     const ExportedFrame exported{bag_, topic, stamp, index, frame};
-    for (FrameExport* e : options_.exports)
-      e->write(exported, options_.config.driver.session.codec);
+    for (FrameExport* e : options_.exports) e->write(exported, config_.driver.session.codec);
   }
 
   BagTopicSink sink_;
   const BagDecodeOptions& options_;
+  const RosPodConfig config_;
   const std::string& bag_;
   std::string rx_topic_, tx_topic_;
   std::unique_ptr<PodDriver> driver_;

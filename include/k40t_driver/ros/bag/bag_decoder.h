@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,10 @@
 namespace k40t::driver {
 
 struct BagDecodeOptions {
-  RosPodConfig config;                   // the driver's parameters (replay is forced)
+  RosPodConfig config;  // the driver's parameters (replay is forced)
+  // Frame and joint prefix by namespace ("/pod_a" -> "pod_a_"; the key "" for every namespace),
+  // as replay.launch's frame_prefix sets both; a namespace without one keeps config.ids.
+  std::map<std::string, std::string> frame_prefixes;
   std::vector<FrameExport*> exports;     // optional
   std::function<void(double)> progress;  // fraction 0..1 of the input's raw frames, may be empty
 };
