@@ -242,7 +242,7 @@ class BagDecode(unittest.TestCase):
     def test_two_pods_in_one_bag_with_their_frame_prefixes(self):
         two = os.path.join(self.dir, "two_pods.bag")
         with rosbag.Bag(self.raw) as raw, rosbag.Bag(two, "w") as bag:
-            for topic, msg, t in raw.read_messages(raw_output=True):
+            for topic, msg, t in raw.read_messages(raw=True):
                 for ns in ("/pod_a", "/pod_b"):
                     bag.write(topic.replace(NS, ns, 1), msg, t, raw=True)
         run = k40t_bag(two, "--output", os.path.join(self.dir, "two.decoded.bag"), "--config", CONFIG,
