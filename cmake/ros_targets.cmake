@@ -3,7 +3,8 @@
 #                     others share (parameters, conversions); no OpenCV, GStreamer or OpenSSL;
 #   k40t_ros_video    src/ros/video/: VideoNodelet, k40t_video_node (OpenCV, GStreamer,
 #                     image_transport, camera_info_manager; cmake/video_ros.cmake);
-#   k40t_ros_skyport  src/ros/skyport/: SkyportNodelet, k40t_skyport_node (the PSDK layer, OpenSSL).
+#   k40t_ros_skyport  src/ros/skyport/: SkyportNodelet, k40t_skyport_node (the PSDK layer, OpenSSL);
+#   k40t_rviz_panel   src/rviz/: the rviz panel PodPanel (Qt; cmake/rviz_panel.cmake).
 # The standalone nodes, k40t_manager and the rostest programs under test/ros/ link them.
 file(GLOB K40T_ROS_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/*.cpp)
 file(GLOB K40T_ROS_SKYPORT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/skyport/*.cpp)
@@ -19,6 +20,7 @@ add_library(k40t_ros_skyport SHARED ${K40T_ROS_SKYPORT_SOURCES})
 target_link_libraries(k40t_ros_skyport PUBLIC k40t_ros k40t_psdk)
 include(cmake/video_ros.cmake)  # k40t_ros_video
 include(cmake/bag.cmake)        # k40t_ros_bag, k40t_bag (`k40t bag`)
+include(cmake/rviz_panel.cmake)  # k40t_rviz_panel (Qt)
 
 # One executable per src/ros/nodes/*.cpp, each a thin main() over the library it names.
 set(K40T_NODE_LIBRARY_k40t_node k40t_ros)

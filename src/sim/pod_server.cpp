@@ -266,7 +266,9 @@ std::string PodServer::status() {
         << pose.joint_pitch_deg << " zoom " << pod.zoom().zoom() << "x sd "
         << to_string(pod.camera().sd().state()) << " camera "
         << (pod.camera_available() ? "up" : "down") << " recording "
-        << (pod.camera().recording() ? "yes" : "no") << " focus ";
+        << (pod.camera().recording() ? "yes" : "no") << " palette "
+        << static_cast<int>(pod.thermal().settings().palette) << " image-mode "
+        << static_cast<int>(pod.camera().settings().image_mode) << " focus ";
     if (const auto& area = pod.zoom().focus_area()) {
       out << "area " << area->left << "," << area->top << "-" << area->right << "," << area->bottom;
     } else {
