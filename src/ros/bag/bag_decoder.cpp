@@ -17,8 +17,9 @@ namespace k40t::driver {
 
 namespace {
 
-constexpr const char* kRxSuffix = "raw/rx";
-constexpr const char* kTxSuffix = "raw/tx";
+// Whole name components: "/k40t/raw/rx", "/raw/rx", never "/k40traw/rx".
+constexpr const char* kRxSuffix = "/raw/rx";
+constexpr const char* kTxSuffix = "/raw/tx";
 
 bool ends_with(const std::string& text, const std::string& suffix) {
   return text.size() >= suffix.size() &&
@@ -27,8 +28,7 @@ bool ends_with(const std::string& text, const std::string& suffix) {
 
 // "/k40t/raw/rx" -> "/k40t"; "/raw/rx" -> "/".
 std::string namespace_of(const std::string& topic, const std::string& suffix) {
-  std::string ns = topic.substr(0, topic.size() - suffix.size());
-  while (ns.size() > 1 && ns.back() == '/') ns.pop_back();
+  const std::string ns = topic.substr(0, topic.size() - suffix.size());
   return ns.empty() ? "/" : ns;
 }
 
@@ -136,7 +136,6 @@ Result<BagDecodeSummary> decode_bag(const std::string& input, rosbag::Bag& outpu
     std::map<std::string, std::unique_ptr<PodDecoder>> pods;     // by namespace
     std::map<std::string, std::pair<PodDecoder*, bool>> routes;  // topic -> pod, is rx
     const std::string frame_type = ros::message_traits::datatype<k40t_driver::Frame>();
-    std::vector<std::string> raw_topics;
     for (const rosbag::ConnectionInfo* c : everything.getConnections()) {
       if (c->datatype == frame_type && ends_with(c->topic, kRxSuffix)) {
         const std::string ns = namespace_of(c->topic, kRxSuffix);
