@@ -19,6 +19,7 @@ add_dependencies(k40t_ros ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_
 add_library(k40t_ros_skyport SHARED ${K40T_ROS_SKYPORT_SOURCES})
 target_link_libraries(k40t_ros_skyport PUBLIC k40t_ros k40t_psdk)
 include(cmake/video_ros.cmake)  # k40t_ros_video
+include(cmake/bag.cmake)        # k40t_ros_bag, k40t_bag (`k40t bag`)
 include(cmake/rviz_panel.cmake)  # k40t_rviz_panel (Qt)
 
 # One executable per src/ros/nodes/*.cpp, each a thin main() over the library it names.
@@ -57,7 +58,7 @@ if(CATKIN_ENABLE_TESTING)
   file(GLOB K40T_ROS_UNIT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/test/ros/unit/*.cpp)
   if(K40T_ROS_UNIT_SOURCES)
     add_executable(k40t_ros_unit_tests ${K40T_ROS_UNIT_SOURCES})
-    target_link_libraries(k40t_ros_unit_tests PRIVATE k40t_ros k40t_ros_skyport GTest::gtest
+    target_link_libraries(k40t_ros_unit_tests PRIVATE k40t_ros k40t_ros_skyport k40t_ros_bag GTest::gtest
                                                       GTest::gtest_main)
     # test_skyport_golden_coverage.cpp reads test/data/psdk_golden.
     target_compile_definitions(k40t_ros_unit_tests PRIVATE
