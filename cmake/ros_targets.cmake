@@ -57,6 +57,8 @@ if(CATKIN_ENABLE_TESTING)
     add_executable(k40t_ros_unit_tests ${K40T_ROS_UNIT_SOURCES})
     target_link_libraries(k40t_ros_unit_tests PRIVATE k40t_ros k40t_ros_skyport GTest::gtest
                                                       GTest::gtest_main)
+    # The settings table's test checks docs/ros_interface.md and cfg/ against it.
+    target_compile_definitions(k40t_ros_unit_tests PRIVATE K40T_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   endif()
   file(GLOB K40T_ROSTEST_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/test/ros/*.cpp)
   foreach(source ${K40T_ROSTEST_SOURCES})
