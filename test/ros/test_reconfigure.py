@@ -33,8 +33,9 @@ VALUES = {
     "photo_mode": 2, "timelapse_interval": 30, "burst_count": 5, "stabilisation": True,
     "pitch_dial_speed": 100, "yaw_dial_speed": 25, "periodic_ranging": True, "thermal_overlay": True,
 }
-# The strong-light suppression is not set: it excludes the backlight compensation set above.
-NOT_SET = {"strong_light_suppression", "strong_light_level"}
+# Not set: the strong-light suppression excludes the backlight compensation set above; the only
+# other stream resolution, 720p, is one the document marks unsupported (refused before sending).
+NOT_SET = {"strong_light_suppression", "strong_light_level", "stream_resolution"}
 
 
 def write_only_parameters():
