@@ -40,7 +40,8 @@ struct Traffic {
   int per_second;
   Address source;
 };
-// Payload sizes from NOTES.md's catalogue; ACKs from section 3.3 and 3.2.5.1.
+// Payload sizes from docs/protocol/decisions.md#periodic-reports; ACKs from section 3.3
+// and 3.2.5.1.
 constexpr Traffic kTraffic[] = {
     {0x000002, 20, 10, k40t::protocol::kGimbalAddress},  // gimbal attitude
     {0x000004, 34, 5, k40t::protocol::kCameraAddress},   // thermal status

@@ -4,7 +4,8 @@
 //    request in its transport's receive callback and writes the ACK back. p50/p99/max in µs as
 //    counters; each iteration is timed by hand (UseManualTime).
 //  - BM_RequestAckConcurrentIds: the same with N threads each on its own message id (they
-//    proceed concurrently, NOTES A5), to show that one id's wait does not hold up another's.
+//    proceed concurrently, docs/protocol/decisions.md#a5), to show that one id's wait does not hold
+//    up another's.
 //  - BM_DispatcherFeed: a stream of 0x000002 attitude reports through Dispatcher::feed() with a
 //    typed handler; bytes/s and heap allocations per frame (counted by replacing operator new in
 //    this program only) to back the "no allocation on the steady-state receive path" claim.

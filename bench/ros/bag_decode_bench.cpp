@@ -32,7 +32,8 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Gimbal reports come from the gimbal's address, the rest from the camera's (NOTES A3).
+// Gimbal reports come from the gimbal's address, the rest from the camera's
+// (docs/protocol/decisions.md#a3).
 protocol::Address source_of(protocol::MessageId id, const protocol::CodecOptions& codec) {
   return id == 0x000001 || id == 0x000002 ? codec.gimbal_address : codec.camera_address;
 }

@@ -1,5 +1,6 @@
 // Writes frames to the link: one sequence counter per source address (8-bit wrap, section 2.1),
-// the checksum coverage the parser locked onto (NOTES A1), and the raw/tx handlers in wire order.
+// the checksum coverage the parser locked onto (docs/protocol/decisions.md#a1), and the raw/tx
+// handlers in wire order.
 #pragma once
 
 #include <atomic>

@@ -1,7 +1,8 @@
-// The request side of a session (NOTES A5): one outstanding request per message id, the others
-// for that id queued behind it; ACKs matched by id; timeouts and retries; AckResult messages.
-// It owns the thread that writes attempts, watches deadlines and runs completion callbacks, so
-// neither the transport's I/O thread nor a caller's thread ever waits on the link.
+// The request side of a session (docs/protocol/decisions.md#a5): one outstanding request per
+// message id, the others for that id queued behind it; ACKs matched by id; timeouts and retries;
+// AckResult messages. It owns the thread that writes attempts, watches deadlines and runs
+// completion callbacks, so neither the transport's I/O thread nor a caller's thread ever waits on
+// the link.
 #pragma once
 
 #include <atomic>

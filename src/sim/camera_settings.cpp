@@ -6,7 +6,8 @@
 namespace k40t::sim {
 
 double shutter_code_us(uint8_t code) {
-  // 1/4 .. 1/8000 s; NOTES A7 reads the document's second 0x0C as 0x0D = 1/6000.
+  // 1/4 .. 1/8000 s; docs/protocol/decisions.md#a7 reads the document's second 0x0C as 0x0D =
+  // 1/6000.
   static constexpr std::array<double, 15> kDenominators = {
       0, 4, 8, 15, 30, 60, 125, 250, 500, 1000, 2000, 4000, 5000, 6000, 8000};
   if (code == 0 || code >= kDenominators.size()) return 0;

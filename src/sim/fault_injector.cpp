@@ -7,7 +7,8 @@
 namespace k40t::sim {
 
 namespace {
-constexpr size_t kSequenceOffset = 4;  // SEQ byte of the frame header (NOTES §1)
+constexpr size_t kSequenceOffset =
+    4;  // SEQ byte of the frame header (docs/protocol/decisions.md#frame)
 }
 
 FaultInjector::FaultInjector(uint32_t seed, protocol::CrcCoverage coverage)

@@ -1,4 +1,4 @@
-// Gimbal requests (section 3.1.2, system 0x03 per NOTES A3).
+// Gimbal requests (section 3.1.2, system 0x03 per docs/protocol/decisions.md#a3).
 #include "code_mapping.h"
 #include "handler_support.h"
 #include "k40t_driver/protocol/messages/gimbal.h"

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Hand-computation aid for golden DJI PSDK v1 frames (psdk_crc.md, NOTES §2).
+"""Hand-computation aid for golden DJI PSDK v1 frames (psdk_crc.md, docs/psdk.md).
 
 An independent transcription of the CRC16 and CRC32 that ../shared/spec/psdk_crc.md describes,
 computed bit by bit (no table), kept apart from the C++ code under test. Write the 12-byte header

@@ -55,7 +55,7 @@ class Telemetry(unittest.TestCase):
         assert cls.topics["joint_states"].wait_for(5, timeout=20.0), "no joint_states from the driver"
 
     def test_every_report_topic_at_the_documents_rate(self):
-        expected = {  # NOTES periodic reports
+        expected = {  # docs/protocol/decisions.md#periodic-reports
             "joint_states": 10.0, "gimbal/attitude": 10.0, "gimbal/status": 2.0,
             "camera/status": 1.0, "visible/status": 5.0, "thermal/stats": 5.0,
         }

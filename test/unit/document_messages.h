@@ -32,7 +32,7 @@ inline constexpr MessageId kRequests[] = {
     0x000400, 0x000406, 0x000500, 0x000501, 0x000502,
     // crossing: the pod asks the flight controller; the flight controller asks the pod
     0x000310, 0x000320};
-// ACKs that carry data beyond the response code (NOTES "ACK" column).
+// ACKs that carry data beyond the response code (the document's ACK tables).
 inline constexpr MessageId kDataAcks[] = {0x010018, 0x010100, 0x010200, 0x010310, 0x010312,
                                           0x010317, 0x010320, 0x010400, 0x010502};
 

@@ -28,8 +28,9 @@ inline std::vector<GoldenFrame> load_golden(const std::string& file) {
   return read ? read.value() : std::vector<GoldenFrame>{};
 }
 
-// ok: the bytes are exactly one frame with the document's header_excluded checksum (NOTES A1)
-// and nothing before or after it; otherwise `problem` says what the parser saw.
+// ok: the bytes are exactly one frame with the document's header_excluded checksum
+// (docs/protocol/decisions.md#a1) and nothing before or after it; otherwise `problem` says what the
+// parser saw.
 struct SplitFrame {
   bool ok = false;
   std::string problem;

@@ -82,7 +82,8 @@ class Collector {
   std::vector<T> items_;
 };
 
-// The bytes of one ACK payload: response code big-endian (NOTES A2), then `extra`.
+// The bytes of one ACK payload: response code big-endian (docs/protocol/decisions.md#a2), then
+// `extra`.
 inline protocol::Payload ack_payload(uint16_t code, std::vector<uint8_t> extra = {}) {
   protocol::Payload p;
   p.bytes[0] = static_cast<uint8_t>(code >> 8);

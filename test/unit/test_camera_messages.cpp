@@ -537,7 +537,8 @@ TEST(CameraMessages, DataAcksMayCarryTheCodeOnly) {
   EXPECT_EQ(decode_payload<TargetGpsAck>(refusal, 2)->code, ResponseCode::kNoSdCard);
 }
 
-// ---- byte order (NOTES A2, section 2.1) ---------------------------------------------------------
+// ---- byte order (docs/protocol/decisions.md#a2, section 2.1)
+// ---------------------------------------------------------
 CodecOptions little_acks() {
   CodecOptions o;
   o.ack_byte_order = ByteOrder::kLittle;

@@ -1,5 +1,5 @@
-// The catalogue holds every message of NOTES.md §1 "Message catalogue", with the ACK of every
-// request, and its entries are consistent.
+// The catalogue holds every message of the document's message list (test/unit/document_messages.h,
+// docs/protocol/), with the ACK of every request, and its entries are consistent.
 #include <gtest/gtest.h>
 
 #include <set>

@@ -11,12 +11,14 @@ namespace k40t::protocol {
 namespace {
 
 TEST(Crc, CheckValueOfTheCatalogue) {
-  // The standard check input of CRC-16/MCRF4XX; NOTES §1 quotes 0x6F91.
+  // The standard check input of CRC-16/MCRF4XX; docs/protocol/decisions.md#checksum quotes 0x6F91.
   const std::string check = "123456789";
   EXPECT_EQ(crc16(reinterpret_cast<const uint8_t*>(check.data()), check.size()), 0x6F91);
 }
 
-TEST(Crc, EmptyInputIsTheInitValue) { EXPECT_EQ(crc16(nullptr, 0), 0xFFFF); }
+TEST(Crc, EmptyInputIsTheInitValue) {
+  EXPECT_EQ(crc16(nullptr, 0), 0xFFFF);
+}
 
 TEST(Crc, TableMatchesTheDocumentsRoutineOnRandomData) {
   std::mt19937 rng(7);

@@ -1,7 +1,7 @@
 // Checks of test/data/golden/gimbal_laser_sbus.txt beyond the generic ones of
 // test_golden_files.cpp: the file has a frame for every message of its families, each '=' line
 // names every field of its message (so the file documents whole messages), and the addresses
-// follow the message's direction (section 2.1, NOTES A3).
+// follow the message's direction (section 2.1, docs/protocol/decisions.md#a3).
 #include <gtest/gtest.h>
 
 #include <set>

@@ -155,7 +155,7 @@ TEST(GimbalGolden, AngleNackIsBigEndianBusy) {
 
 TEST(GimbalAngle, ScaleComesFromTheCodecOptions) {
   CodecOptions tenths;
-  tenths.angle_command_scale = 10;  // NOTES A4 alternative: degrees x10
+  tenths.angle_command_scale = 10;  // docs/protocol/decisions.md#a4 alternative: degrees x10
   GimbalAngleRequest m;
   m.pitch_deg = -45.5;
   m.yaw_deg = 90;

@@ -43,7 +43,8 @@ TEST(LaserGolden, SingleRangingRequestAndAck) {
 
   const auto ack = decode_golden<LaserRangeAck>(golden(kGolden, "laser_range_ack"));
   EXPECT_EQ(ack.code, ResponseCode::kOk);
-  EXPECT_DOUBLE_EQ(ack.distance_m, 1234.5);  // 30 39 read high byte first (NOTES A2)
+  EXPECT_DOUBLE_EQ(ack.distance_m,
+                   1234.5);  // 30 39 read high byte first (docs/protocol/decisions.md#a2)
   expect_encodes_to(ack, golden(kGolden, "laser_range_ack"));
 }
 
@@ -75,7 +76,7 @@ TEST(LaserGolden, PeriodicRangeIsLowByteFirstLikeEveryStatusFrame) {
 }
 
 TEST(LaserStatus, StatusFrameOrderIsItsOwnOptionAndTheAckKeepsAckByteOrder) {
-  // Default: the status frame little-endian, the ACK big-endian (NOTES A2).
+  // Default: the status frame little-endian, the ACK big-endian (docs/protocol/decisions.md#a2).
   auto s = decode_bytes<LaserPeriodicRangeStatus>({0x00, 0x00, 0x6C, 0x03});
   ASSERT_TRUE(s);
   EXPECT_DOUBLE_EQ(s->distance_m, 87.6);
@@ -144,7 +145,7 @@ TEST(SbusGolden, ConfigRequestAndAck) {
   expect_encodes_to(SbusConfigRequest{}, golden(kGolden, "sbus_config"));
   const auto ack = decode_golden<SbusConfigAck>(golden(kGolden, "sbus_config_ack"));
   EXPECT_EQ(ack.code, ResponseCode::kOk);
-  EXPECT_EQ(ack.range.max_value, 2000);  // 07 D0, big-endian (NOTES A2)
+  EXPECT_EQ(ack.range.max_value, 2000);  // 07 D0, big-endian (docs/protocol/decisions.md#a2)
   EXPECT_EQ(ack.range.min_value, 100);
   EXPECT_EQ(ack.channels.stream_channel, 1);
   EXPECT_EQ(ack.channels.zoom_channel, 2);

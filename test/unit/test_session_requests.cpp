@@ -1,5 +1,5 @@
-// Session request/ACK behaviour (NOTES A3, A5) over an in-memory link: the host session against
-// a pod-role session whose handlers play the pod.
+// Session request/ACK behaviour (docs/protocol/decisions.md#a3, A5) over an in-memory link: the
+// host session against a pod-role session whose handlers play the pod.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -92,8 +92,8 @@ TEST(SessionRequests, RequestBytesFollowTheDocument) {
   // payload {01 single ranging, 00 reserved}; checksum by test/data/frame_crc.py (header_excluded).
   EXPECT_EQ(received.items()[0], (std::vector<uint8_t>{0xFD, 0x02, 0x04, 0x01, 0x00, 0x01, 0x01,
                                                        0x00, 0x04, 0x00, 0x01, 0x00, 0xA2, 0x56}));
-  // Section 3.1.2.5 with NOTES A3: gimbal ids go to system 0x03; SEQ 1 (the host's second frame);
-  // payload {01 get version, 00 reserved}; checksum by frame_crc.py.
+  // Section 3.1.2.5 with docs/protocol/decisions.md#a3: gimbal ids go to system 0x03; SEQ 1 (the
+  // host's second frame); payload {01 get version, 00 reserved}; checksum by frame_crc.py.
   EXPECT_EQ(received.items()[1], (std::vector<uint8_t>{0xFD, 0x02, 0x03, 0x01, 0x01, 0x01, 0x01,
                                                        0x18, 0x00, 0x00, 0x01, 0x00, 0x64, 0x8F}));
 }

@@ -22,7 +22,9 @@ TEST(SessionRouting, PeriodicReportReachesItsTypedHandler) {
   SessionLink link;
   Collector<std::pair<protocol::GimbalAttitude, protocol::Address>> received;
   link.host->dispatcher().on<protocol::GimbalAttitude>(
-      [&](const protocol::GimbalAttitude& a, const FrameView& f) { received.add({a, f.header.source}); });
+      [&](const protocol::GimbalAttitude& a, const FrameView& f) {
+        received.add({a, f.header.source});
+      });
   link.start();
 
   protocol::GimbalAttitude sent;
@@ -110,7 +112,8 @@ TEST(SessionRouting, PodRoleAnswersFromTheAddressTheRequestWentTo) {
   const uint8_t version[] = {0x01, 0x00};
   ASSERT_TRUE(link.host->request_raw(0x000018, version, 2).ok());
   ASSERT_TRUE(acks.wait_for_count(1));
-  EXPECT_EQ(acks.items()[0].source, protocol::kGimbalAddress);  // the gimbal's 0x03 (NOTES A3)
+  EXPECT_EQ(acks.items()[0].source,
+            protocol::kGimbalAddress);  // the gimbal's 0x03 (docs/protocol/decisions.md#a3)
   EXPECT_EQ(acks.items()[0].destination, protocol::kHostAddress);
 }
 

@@ -67,7 +67,8 @@ TEST(SessionShortAcks, AnAckWithoutAResponseCodeIsTheDriversErrorNotThePods) {
 TEST(SessionShortAcks, ResponseCodeReaderMarksAShortPayloadAsUnreadable) {
   const uint8_t one[1] = {0x00};
   EXPECT_EQ(protocol::ack_response_code(one, 1, {}), protocol::ResponseCode::kAckUnreadable);
-  const uint8_t pods_length_mismatch[2] = {0x00, 0x07};  // section 3.3, big-endian (NOTES A2)
+  const uint8_t pods_length_mismatch[2] = {
+      0x00, 0x07};  // section 3.3, big-endian (docs/protocol/decisions.md#a2)
   EXPECT_EQ(protocol::ack_response_code(pods_length_mismatch, 2, {}),
             protocol::ResponseCode::kLengthMismatch);
   EXPECT_EQ(protocol::response_text(protocol::ResponseCode::kAckUnreadable).find("length mismatch"),

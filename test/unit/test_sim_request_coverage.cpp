@@ -1,6 +1,7 @@
-// Every request of NOTES.md's catalogue has a handler in the simulated pod, and every handler
+// Every request of the catalogue has a handler in the simulated pod, and every handler
 // checks the payload length first. The requests are the catalogue's host-to-pod requests (the
-// catalogue itself is checked against NOTES.md by test_catalogue_completeness.cpp).
+// catalogue itself is checked against the document's message list by
+// test_catalogue_completeness.cpp).
 #include <gtest/gtest.h>
 
 #include <iterator>

@@ -171,7 +171,7 @@ TEST(SimVisibleRequests, ExposureAndZoomShowInTheStatus) {
   ae.ae_lock_on = true;
   EXPECT_EQ(h.send(ae), ResponseCode::kOk);
   status = h.report<p::VisibleStatus>();
-  EXPECT_EQ(status.shutter_us, 167);  // NOTES A7: 0x0D = 1/6000
+  EXPECT_EQ(status.shutter_us, 167);  // docs/protocol/decisions.md#a7: 0x0D = 1/6000
   EXPECT_NEAR(status.iso_db, 36.1, 0.05);
   EXPECT_TRUE(status.ae_lock_on);
 

@@ -149,7 +149,8 @@ TEST(ThermalGolden, SettingRequests) {  // 3.2.2.2 .. 3.2.2.15
 
 // ---- wire details -------------------------------------------------------------------------
 
-TEST(ThermalSettingsAck, LittleEndianOptionReadsTheSameBytesSwapped) {  // NOTES A2
+TEST(ThermalSettingsAck,
+     LittleEndianOptionReadsTheSameBytesSwapped) {  // docs/protocol/decisions.md#a2
   CodecOptions little;
   little.ack_byte_order = ByteOrder::kLittle;
   auto payload = encode_payload(golden_settings(), little);
@@ -194,7 +195,7 @@ TEST(ThermalSettingsAck, UnpacksEveryBitOfByte4) {  // 3.2.2.1 byte 4
   EXPECT_DOUBLE_EQ(decoded->high_alarm_degC, 0.0);
 }
 
-TEST(ThermalAlarmsRequest, AcceptsSevenBytesOnReceive) {  // NOTES A9
+TEST(ThermalAlarmsRequest, AcceptsSevenBytesOnReceive) {  // docs/protocol/decisions.md#a9
   const std::vector<uint8_t> seven = {0x54, 0xF5, 0x54, 0xF5, 0x64, 0x00, 0x00};
   auto decoded = decode_payload<ThermalAlarmsRequest>(seven.data(), seven.size());
   ASSERT_TRUE(decoded) << decoded.error();

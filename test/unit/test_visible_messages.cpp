@@ -144,7 +144,7 @@ TEST(VisibleSettingsAck, BareRefusalAndTruncatedSettings) {
   expect_decode_error<VisibleSettingsAck>({0x00, 0x00, 0x14, 0x26}, "need 15 bytes, got 2");
 }
 
-TEST(VisibleSettingsAck, ResponseCodeFollowsTheAckByteOrder) {  // NOTES A2
+TEST(VisibleSettingsAck, ResponseCodeFollowsTheAckByteOrder) {  // docs/protocol/decisions.md#a2
   CodecOptions little;
   little.ack_byte_order = ByteOrder::kLittle;
   VisibleSettingsAck ack = golden_settings();
@@ -274,7 +274,7 @@ TEST(VisibleEnums, DefineExactlyTheDocumentsCodes) {
 }
 
 TEST(VisibleEnums, NamesOfTheDocument) {
-  EXPECT_STREQ(to_string(Shutter::k1_5000), "1/5000");  // NOTES A7
+  EXPECT_STREQ(to_string(Shutter::k1_5000), "1/5000");  // docs/protocol/decisions.md#a7
   EXPECT_STREQ(to_string(Shutter::k1_6000), "1/6000");
   EXPECT_STREQ(to_string(Shutter::k1_8000), "1/8000");
   EXPECT_STREQ(to_string(Shutter::kAuto), "auto");

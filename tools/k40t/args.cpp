@@ -74,10 +74,12 @@ int usage_error(const Command& command, const std::string& message) {
   return kExitUsage;
 }
 
-const OptionSpec kCrcCoverageOption = {"--crc-coverage", "auto|header_excluded|whole_frame",
-                                       "bytes the checksum covers (NOTES A1; default auto)"};
-const OptionSpec kAckByteOrderOption = {"--ack-byte-order", "big|little",
-                                        "byte order of ACK fields (NOTES A2; default big)"};
+const OptionSpec kCrcCoverageOption = {
+    "--crc-coverage", "auto|header_excluded|whole_frame",
+    "bytes the checksum covers (docs/protocol/decisions.md#a1; default auto)"};
+const OptionSpec kAckByteOrderOption = {
+    "--ack-byte-order", "big|little",
+    "byte order of ACK fields (docs/protocol/decisions.md#a2; default big)"};
 
 Result<WireOptions> wire_options(const ParsedArgs& args) {
   WireOptions wire;

@@ -52,7 +52,7 @@ void print_command_help(const Command& command);
 // Prints "k40t <cmd>: <message>" and the --help hint on stderr; returns kExitUsage.
 int usage_error(const Command& command, const std::string& message);
 
-// The wire options every link-facing command takes (NOTES A1, A2).
+// The wire options every link-facing command takes (docs/protocol/decisions.md#a1, A2).
 struct WireOptions {
   protocol::CrcCoverage crc_coverage = protocol::CrcCoverage::kAuto;
   protocol::CodecOptions codec;

@@ -25,9 +25,13 @@ class ByteReader {
 
   uint8_t u8() { return need(1) ? data_[pos_++] : 0; }
   int8_t i8() { return static_cast<int8_t>(u8()); }
-  uint16_t u16(ByteOrder order = ByteOrder::kLittle) { return static_cast<uint16_t>(uint_n(2, order)); }
+  uint16_t u16(ByteOrder order = ByteOrder::kLittle) {
+    return static_cast<uint16_t>(uint_n(2, order));
+  }
   int16_t i16(ByteOrder order = ByteOrder::kLittle) { return static_cast<int16_t>(u16(order)); }
-  uint32_t u32(ByteOrder order = ByteOrder::kLittle) { return static_cast<uint32_t>(uint_n(4, order)); }
+  uint32_t u32(ByteOrder order = ByteOrder::kLittle) {
+    return static_cast<uint32_t>(uint_n(4, order));
+  }
   int32_t i32(ByteOrder order = ByteOrder::kLittle) { return static_cast<int32_t>(u32(order)); }
   uint64_t u64(ByteOrder order = ByteOrder::kLittle) { return uint_n(8, order); }
   int64_t i64(ByteOrder order = ByteOrder::kLittle) { return static_cast<int64_t>(u64(order)); }
@@ -83,11 +87,17 @@ class ByteWriter {
   }
   void i8(int8_t v) { u8(static_cast<uint8_t>(v)); }
   void u16(uint16_t v, ByteOrder order = ByteOrder::kLittle) { uint_n(v, 2, order); }
-  void i16(int16_t v, ByteOrder order = ByteOrder::kLittle) { u16(static_cast<uint16_t>(v), order); }
+  void i16(int16_t v, ByteOrder order = ByteOrder::kLittle) {
+    u16(static_cast<uint16_t>(v), order);
+  }
   void u32(uint32_t v, ByteOrder order = ByteOrder::kLittle) { uint_n(v, 4, order); }
-  void i32(int32_t v, ByteOrder order = ByteOrder::kLittle) { u32(static_cast<uint32_t>(v), order); }
+  void i32(int32_t v, ByteOrder order = ByteOrder::kLittle) {
+    u32(static_cast<uint32_t>(v), order);
+  }
   void u64(uint64_t v, ByteOrder order = ByteOrder::kLittle) { uint_n(v, 8, order); }
-  void i64(int64_t v, ByteOrder order = ByteOrder::kLittle) { u64(static_cast<uint64_t>(v), order); }
+  void i64(int64_t v, ByteOrder order = ByteOrder::kLittle) {
+    u64(static_cast<uint64_t>(v), order);
+  }
 
   // Fixed-width text: the string's bytes, then zeros up to `width` (no terminator when full).
   // A longer string is a failure (validation should have caught it first).
@@ -99,7 +109,7 @@ class ByteWriter {
     for (size_t i = 0; i < width; ++i) u8(i < s.size() ? static_cast<uint8_t>(s[i]) : 0);
   }
 
-  // `n` zero bytes: the reserved bytes every request carries (NOTES A11).
+  // `n` zero bytes: the reserved bytes every request carries (docs/protocol/decisions.md#a11).
   void zeros(size_t n) {
     for (size_t i = 0; i < n; ++i) u8(0);
   }

@@ -1,5 +1,6 @@
-// The message catalogue: every message id of NOTES.md with its name, section, direction and a
-// type-erased decoder, so tools can decode any frame without knowing its type at compile time.
+// The message catalogue: every message id of the document (docs/protocol/) with its name, section,
+// direction and a type-erased decoder, so tools can decode any frame without knowing its type at
+// compile time.
 #pragma once
 
 #include <map>

@@ -1,6 +1,6 @@
-// The decisions of ../shared/spec/NOTES.md that change bytes on the wire, as options with NOTES'
-// defaults. Every encoder and decoder takes them, so a pod that disagrees with a decision is a
-// parameter away.
+// The decisions of docs/protocol/decisions.md that change bytes on the wire, as options with
+// the defaults recorded there. Every encoder and decoder takes them, so a pod that disagrees with a
+// decision is a parameter away.
 #pragma once
 
 #include <string>
@@ -11,7 +11,7 @@
 
 namespace k40t::protocol {
 
-// NOTES A1: which bytes the checksum covers.
+// docs/protocol/decisions.md#a1: which bytes the checksum covers.
 enum class CrcCoverage {
   kHeaderExcluded,  // bytes 1 .. end of payload (MAVLink convention; default)
   kWholeFrame,      // bytes 0 .. end of payload (STX included)
@@ -25,17 +25,18 @@ Result<ByteOrder> parse_byte_order(const std::string& text);  // "big" | "little
 const char* to_string(ByteOrder order);
 
 struct CodecOptions {
-  // NOTES A2: multi-byte fields of ACK payloads (response code included). Sections that say
-  // "low byte first" for their ACK (0x010320) ignore this.
+  // docs/protocol/decisions.md#a2: multi-byte fields of ACK payloads (response code included).
+  // Sections that say "low byte first" for their ACK (0x010320) ignore this.
   ByteOrder ack_byte_order = ByteOrder::kBig;
   // Status frame 0x020406 (periodic laser range). Section 2.1 makes every non-ACK payload low
   // byte first, and 0x020406 is a status frame; its payload merely looks like ACK 0x010400's.
   // Decision (docs/protocol/gimbal_laser_sbus.md): little, a parameter in case a pod builds the
   // frame with its ACK routine.
   ByteOrder laser_status_byte_order = ByteOrder::kLittle;
-  // NOTES A4: the 16-bit angle magnitudes of 0x000012 are degrees x angle_command_scale.
+  // docs/protocol/decisions.md#a4: the 16-bit angle magnitudes of 0x000012 are degrees x
+  // angle_command_scale.
   int angle_command_scale = 100;
-  // NOTES A3: where requests are addressed.
+  // docs/protocol/decisions.md#a3: where requests are addressed.
   Address gimbal_address = kGimbalAddress;
   Address camera_address = kCameraAddress;
 };

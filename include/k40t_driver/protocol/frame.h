@@ -1,4 +1,4 @@
-// The K40T V1 frame (document section 2.1, NOTES §1):
+// The K40T V1 frame (document section 2.1, docs/protocol/decisions.md#frame):
 //   STX(0xFD) LEN DST_SYS DST_COMP SEQ SRC_SYS SRC_COMP MSGID[3, LE] PAYLOAD[LEN] CRC[2, LE]
 #pragma once
 
@@ -16,7 +16,8 @@ constexpr uint8_t kStx = 0xFD;
 constexpr size_t kHeaderSize = 10;  // STX .. MSGID
 constexpr size_t kChecksumSize = 2;
 constexpr size_t kFrameOverhead = kHeaderSize + kChecksumSize;  // 12
-constexpr size_t kMaxPayloadSize = 243;                          // NOTES §1: a frame is 12..255 bytes
+// A frame is 12..255 bytes (docs/protocol/decisions.md#frame).
+constexpr size_t kMaxPayloadSize = 243;
 constexpr size_t kMaxFrameSize = kFrameOverhead + kMaxPayloadSize;
 
 struct FrameHeader {
@@ -49,9 +50,9 @@ class EncodedFrame {
   size_t size_ = 0;
 };
 
-// Builds a frame around `payload`. kAuto is treated as kHeaderExcluded (NOTES A1: send
-// header_excluded until the parser has locked). Fails for a payload over 243 bytes or an id over
-// 24 bits.
+// Builds a frame around `payload`. kAuto is treated as kHeaderExcluded
+// (docs/protocol/decisions.md#a1: send header_excluded until the parser has locked). Fails for a
+// payload over 243 bytes or an id over 24 bits.
 Result<EncodedFrame> encode_frame(const FrameHeader& header, const uint8_t* payload,
                                   size_t payload_size, CrcCoverage coverage);
 

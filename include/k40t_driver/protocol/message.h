@@ -1,6 +1,6 @@
 // The contract every typed message struct follows, and the helpers they share.
 //
-// A message struct T (one per message id of NOTES.md's catalogue, including every ACK that
+// A message struct T (one per message id of the document's message list, including every ACK that
 // carries data) is a plain aggregate whose fields are in physical units (names end in _deg,
 // _deg_s, _degC, _m, _mm, _s, _ms, _x for ratios...) or enums for coded values, and has:
 //
@@ -41,7 +41,8 @@
 namespace k40t::protocol {
 
 enum class Direction {
-  kPodToHost,  // periodic reports, status frames, ACKs of host requests, pod's own requests (0x000310)
+  kPodToHost,  // periodic reports, status frames, ACKs of host requests, pod's own requests
+               // (0x000310)
   kHostToPod,  // requests, and the host's ACKs of the pod's requests (0x010310)
 };
 const char* to_string(Direction direction);
@@ -77,8 +78,10 @@ Status first_failure(const S&... statuses) {
 template <class Int>
 Int to_wire(double value, double scale) {
   const double scaled = std::round(value * scale);
-  if (scaled <= static_cast<double>(std::numeric_limits<Int>::min())) return std::numeric_limits<Int>::min();
-  if (scaled >= static_cast<double>(std::numeric_limits<Int>::max())) return std::numeric_limits<Int>::max();
+  if (scaled <= static_cast<double>(std::numeric_limits<Int>::min()))
+    return std::numeric_limits<Int>::min();
+  if (scaled >= static_cast<double>(std::numeric_limits<Int>::max()))
+    return std::numeric_limits<Int>::max();
   return static_cast<Int>(scaled);
 }
 
@@ -128,7 +131,8 @@ Status check_enum(const char* field, E value) {
     if (!allowed.empty()) allowed += ", ";
     allowed += std::to_string(code) + " (" + name + ")";
   }
-  return Status::fail(describe_allowed_codes(field, static_cast<int64_t>(static_cast<U>(value)), allowed));
+  return Status::fail(
+      describe_allowed_codes(field, static_cast<int64_t>(static_cast<U>(value)), allowed));
 }
 
 }  // namespace k40t::protocol

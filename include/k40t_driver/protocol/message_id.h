@@ -15,21 +15,33 @@ constexpr MessageId kMaxMessageId = 0xFFFFFF;
 
 constexpr MessageKind kind_of(MessageId id) {
   switch ((id >> 16) & 0xFF) {
-    case 0x00: return MessageKind::kRequestOrReport;
-    case 0x01: return MessageKind::kAck;
-    case 0x02: return MessageKind::kStatus;
-    default: return MessageKind::kOther;
+    case 0x00:
+      return MessageKind::kRequestOrReport;
+    case 0x01:
+      return MessageKind::kAck;
+    case 0x02:
+      return MessageKind::kStatus;
+    default:
+      return MessageKind::kOther;
   }
 }
 // The request id an ACK or status frame belongs to.
-constexpr MessageId request_id_of(MessageId id) { return id & 0xFFFF; }
-constexpr MessageId ack_id_of(MessageId request) { return (request & 0xFFFF) | 0x010000; }
-constexpr MessageId status_id_of(MessageId request) { return (request & 0xFFFF) | 0x020000; }
+constexpr MessageId request_id_of(MessageId id) {
+  return id & 0xFFFF;
+}
+constexpr MessageId ack_id_of(MessageId request) {
+  return (request & 0xFFFF) | 0x010000;
+}
+constexpr MessageId status_id_of(MessageId request) {
+  return (request & 0xFFFF) | 0x020000;
+}
 
 // Periodic reports occupy 0x000001..0x00000F (sections 3.1.1 and 3.2.1).
-constexpr bool is_periodic_report(MessageId id) { return id >= 0x000001 && id <= 0x00000F; }
+constexpr bool is_periodic_report(MessageId id) {
+  return id >= 0x000001 && id <= 0x00000F;
+}
 
-// Addresses of section 2.1 (see NOTES A3 for the gimbal's 0x03).
+// Addresses of section 2.1 (see docs/protocol/decisions.md#a3 for the gimbal's 0x03).
 struct Address {
   uint8_t system = 0;
   uint8_t component = 0;

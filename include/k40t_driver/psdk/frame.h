@@ -1,4 +1,4 @@
-// The DJI PSDK v1 frame (protocol document section 2.1, psdk_crc.md, NOTES §2):
+// The DJI PSDK v1 frame (protocol document section 2.1, psdk_crc.md, docs/psdk.md):
 //
 //   offset size
 //   0      1    SOF 0xAA

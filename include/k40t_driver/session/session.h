@@ -1,9 +1,10 @@
-// One request/ACK session per link (NOTES A3, A5): frames requests with sequence numbers and the
-// right destination, matches ACKs by id (one outstanding request per id; a second request for
-// the same id waits its turn), retries on timeout, maps response codes to text, routes periodic
-// reports and status frames to typed handlers (through its Dispatcher), and answers requests that
-// come from the other side (the pod's 0x000310) through handlers. The same class serves the pod
-// role in the simulator: there, handlers answer every request and send_frame() emits reports.
+// One request/ACK session per link (docs/protocol/decisions.md#a3, A5): frames requests with
+// sequence numbers and the right destination, matches ACKs by id (one outstanding request per id; a
+// second request for the same id waits its turn), retries on timeout, maps response codes to text,
+// routes periodic reports and status frames to typed handlers (through its Dispatcher), and answers
+// requests that come from the other side (the pod's 0x000310) through handlers. The same class
+// serves the pod role in the simulator: there, handlers answer every request and send_frame() emits
+// reports.
 //
 // Thread-safe: request() may be called from any thread (it blocks that thread only); handlers run
 // on the transport's I/O thread and must not block on request() themselves (use request_async()).

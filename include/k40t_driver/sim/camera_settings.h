@@ -32,7 +32,7 @@ struct VisibleSettings {
   uint8_t white_balance = 1;        // 1..8, auto
   uint8_t ev = 0x00;                // 0x00 auto, 0x0A +2, 0x10 +1, 0x16 0, 0x1C -1, 0x23 -2
   uint8_t iso = 0;                  // 0 auto, 1..7 ISO100..6400
-  uint8_t shutter = 0;              // 0 auto, 1..0x0E 1/4 .. 1/8000 (NOTES A7)
+  uint8_t shutter = 0;              // 0 auto, 1..0x0E 1/4 .. 1/8000 (docs/protocol/decisions.md#a7)
   uint8_t zoom_fine_tune = 50;      // 0..100
   bool backlight_on = false;
   uint8_t backlight = 0;  // 0..100

@@ -1,7 +1,7 @@
 // The pod's wall clock. It starts at a fixed instant (deterministic runs), is set by the host's
-// time sync (0x00030E, NOTES A8: ms since the epoch plus tz_minuteswest), and advances with the
-// model's steps. Photo and video file names use its local time; the GPS request before a photo
-// (0x000310) carries its UTC time of day.
+// time sync (0x00030E, docs/protocol/decisions.md#a8: ms since the epoch plus tz_minuteswest), and
+// advances with the model's steps. Photo and video file names use its local time; the GPS request
+// before a photo (0x000310) carries its UTC time of day.
 #pragma once
 
 #include <cstdint>

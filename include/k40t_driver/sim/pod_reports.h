@@ -8,7 +8,8 @@
 //   0x020406 periodic laser     1 Hz   while periodic ranging is on (0x000406)
 //   0x000008 upgrade/repair     1 Hz   while upgrading or calibrating (from MaintenanceEvent)
 // The gimbal's messages (0x000001, 0x000002 and 0x000010-0x0000FF, section 3.1) come from the
-// gimbal's address (NOTES A3), the rest, 0x000003-0x000008 included, from the camera's.
+// gimbal's address (docs/protocol/decisions.md#a3), the rest, 0x000003-0x000008 included, from the
+// camera's.
 #pragma once
 
 #include <optional>

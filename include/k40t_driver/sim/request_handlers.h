@@ -1,4 +1,4 @@
-// The pod's answers to the host's requests: each request id of NOTES.md has a handler that
+// The pod's answers to the host's requests: each request id of the document has a handler that
 // decodes the payload (decode_payload + validate()), lets the model act, and returns the ACK
 // payload with the right response code (section 3.3):
 //   payload shorter than the message's minimum          -> 0x0007 length mismatch

@@ -76,7 +76,7 @@ class Transport {
   virtual LinkStats stats() const = 0;
   virtual std::string url() const = 0;
   // Seconds one byte takes on the wire (10 bits / baud on serial, 0 on networks); used to stamp
-  // frames with their start time (NOTES A10).
+  // frames with their start time (docs/protocol/decisions.md#a10).
   virtual double seconds_per_byte() const { return 0.0; }
 
  protected:

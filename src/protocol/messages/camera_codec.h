@@ -10,7 +10,8 @@
 
 namespace k40t::protocol::camera_codec {
 
-// A one-byte code table value on the wire, then `reserved` zero bytes (NOTES A11).
+// A one-byte code table value on the wire, then `reserved` zero bytes
+// (docs/protocol/decisions.md#a11).
 template <class E>
 void put_code(ByteWriter& w, E code, size_t reserved = 0) {
   static_assert(std::is_enum_v<E> && sizeof(E) == 1, "one-byte enum expected");

@@ -1,6 +1,7 @@
 // The ACK every request gets (document sections 2.1 and 3.3): id 0x01xxxx, payload starting with
-// the 2-byte response code (big-endian by default, NOTES A2). Requests whose ACK carries nothing
-// else use PlainAck; the others have their own struct whose first field is the code.
+// the 2-byte response code (big-endian by default, docs/protocol/decisions.md#a2). Requests whose
+// ACK carries nothing else use PlainAck; the others have their own struct whose first field is the
+// code.
 #pragma once
 
 #include "k40t_driver/protocol/message.h"

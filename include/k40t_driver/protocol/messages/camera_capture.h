@@ -1,8 +1,8 @@
 // Capture requests of the common camera family (document section 3.2.4.1-3.2.4.7): photo/video
 // mode, photo settings, take photo, record, zoom and precise re-shoot. Host 0x01/0x01 -> camera
-// 0x04/0x01; multi-byte fields low byte first (section 2.1); reserved bytes sent as zero (NOTES
-// A11) and optional on receive. Every ACK is the bare response code (PlainAck). Their status
-// frames are in camera_status.h.
+// 0x04/0x01; multi-byte fields low byte first (section 2.1); reserved bytes sent as zero
+// (docs/protocol/decisions.md#a11) and optional on receive. Every ACK is the bare response code
+// (PlainAck). Their status frames are in camera_status.h.
 #pragma once
 
 #include <string>

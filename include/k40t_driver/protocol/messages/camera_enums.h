@@ -12,8 +12,9 @@ namespace k40t::protocol {
 enum class CaptureMode : uint8_t { kPhoto = 0, kVideo = 1 };
 const char* to_string(CaptureMode v);
 
-// 0x000003 byte 2 as reported (NOTES A6: the English calls it "encoding format"; it is the
-// resolution). Note the request 0x00030A numbers the same resolutions from 1: StreamResolution.
+// 0x000003 byte 2 as reported (docs/protocol/decisions.md#a6: the English calls it "encoding
+// format"; it is the resolution). Note the request 0x00030A numbers the same resolutions from 1:
+// StreamResolution.
 enum class ReportedStreamResolution : uint8_t { k1080p30 = 0, k720p30 = 1 };
 const char* to_string(ReportedStreamResolution v);
 

@@ -1,8 +1,9 @@
 // Stream and image requests of the common camera family (document sections 3.2.4.8-3.2.4.10,
 // 3.2.4.18, 3.2.4.19, 3.2.4.22, 3.2.4.23 and 3.2.4.25): output bitrate, resolution and encoding,
 // image mode, focus, OSD watermark, AI recognition and box tracking. Host 0x01/0x01 -> camera
-// 0x04/0x01; multi-byte fields low byte first (section 2.1); reserved bytes sent as zero (NOTES
-// A11) and optional on receive. Every ACK is the bare response code (PlainAck).
+// 0x04/0x01; multi-byte fields low byte first (section 2.1); reserved bytes sent as zero
+// (docs/protocol/decisions.md#a11) and optional on receive. Every ACK is the bare response code
+// (PlainAck).
 #pragma once
 
 #include <array>

@@ -24,7 +24,8 @@ struct CameraSystemStatus {
   static constexpr size_t kMinSize = 15;
 
   CaptureMode capture_mode = CaptureMode::kPhoto;
-  ReportedStreamResolution stream_resolution = ReportedStreamResolution::k1080p30;  // NOTES A6
+  // docs/protocol/decisions.md#a6: the "encoding format" byte is the resolution.
+  ReportedStreamResolution stream_resolution = ReportedStreamResolution::k1080p30;
   VideoEncoding encoding = VideoEncoding::kH264;
   ImageMode image_mode = ImageMode::kVisible;  // "stream mode": what the stream shows
   StreamBitrate bitrate = StreamBitrate::k4Mbps;

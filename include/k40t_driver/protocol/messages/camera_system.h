@@ -1,8 +1,8 @@
 // System requests of the common camera family (document sections 3.2.4.11-3.2.4.14, 3.2.4.16,
 // 3.2.4.17, 3.2.4.20, 3.2.4.21): TF-card upgrade, SD format, time sync, factory reset, IP
 // address, shutdown and version. Host 0x01/0x01 -> camera 0x04/0x01; request fields low byte
-// first (section 2.1), ACK fields in CodecOptions::ack_byte_order (NOTES A2); reserved bytes sent
-// as zero (NOTES A11) and optional on receive.
+// first (section 2.1), ACK fields in CodecOptions::ack_byte_order (docs/protocol/decisions.md#a2);
+// reserved bytes sent as zero (docs/protocol/decisions.md#a11) and optional on receive.
 #pragma once
 
 #include <string>
@@ -59,8 +59,8 @@ struct ShutdownRequest : FixedCommandRequest {
   static constexpr const char* kSection = "3.2.4.20";
 };
 
-// ACK 0x010312: response code, then address, netmask and gateway (NOTES A2: with the default big
-// ack_byte_order the first octet comes first, as in the document's example).
+// ACK 0x010312: response code, then address, netmask and gateway (docs/protocol/decisions.md#a2:
+// with the default big ack_byte_order the first octet comes first, as in the document's example).
 struct GetIpAck {
   static constexpr MessageId kId = 0x010312;
   static constexpr const char* kName = "get_ip_ack";
@@ -130,9 +130,9 @@ struct CameraVersionRequest : FixedCommandRequest {
   using Ack = CameraVersionAck;
 };
 
-// 0x00030E, section 3.2.4.13, NOTES A8: int64 milliseconds since 1970-01-01 00:00:00 UTC, int32
-// tz_minuteswest and int32 tz_dsttime as in struct timezone, all low byte first. Sent every 10 s
-// right after a pulse on the RTC_IO pin when that pin is wired.
+// 0x00030E, section 3.2.4.13, docs/protocol/decisions.md#a8: int64 milliseconds since 1970-01-01
+// 00:00:00 UTC, int32 tz_minuteswest and int32 tz_dsttime as in struct timezone, all low byte
+// first. Sent every 10 s right after a pulse on the RTC_IO pin when that pin is wired.
 struct TimeSyncRequest {
   static constexpr MessageId kId = 0x00030E;
   static constexpr const char* kName = "time_sync";

@@ -8,10 +8,11 @@
 //             -> host) carries the position of the target the laser is aimed at.
 //
 // Byte order: requests low byte first (section 2.1). ACK 0x010310 is an ACK like any other, so
-// all its multi-byte fields follow CodecOptions::ack_byte_order (NOTES A2). ACK 0x010320 says "low
-// byte first" for each of its data fields, which therefore ignore ack_byte_order; its response
-// code, which the section names "ACK response code" without a byte order, stays in
-// ack_byte_order like every ACK's code, so one reader (ack_response_code) serves every ACK.
+// all its multi-byte fields follow CodecOptions::ack_byte_order (docs/protocol/decisions.md#a2).
+// ACK 0x010320 says "low byte first" for each of its data fields, which therefore ignore
+// ack_byte_order; its response code, which the section names "ACK response code" without a byte
+// order, stays in ack_byte_order like every ACK's code, so one reader (ack_response_code) serves
+// every ACK.
 #pragma once
 
 #include "k40t_driver/protocol/message.h"

@@ -1,6 +1,6 @@
-// Gimbal messages (document section 3.1, system 0x03 per NOTES A3): the periodic reports
-// 0x000001 and 0x000002, the requests 0x000010..0x000033 and the data-carrying ACK 0x010018.
-// The other requests are acknowledged with the bare response code (PlainAck).
+// Gimbal messages (document section 3.1, system 0x03 per docs/protocol/decisions.md#a3): the
+// periodic reports 0x000001 and 0x000002, the requests 0x000010..0x000033 and the data-carrying ACK
+// 0x010018. The other requests are acknowledged with the bare response code (PlainAck).
 //
 // Sign conventions of the host-side structs (the wire uses direction bytes instead of signs):
 //   pitch: positive = up (the document's 0 "up"), negative = down;
@@ -152,9 +152,9 @@ struct GimbalControlRequest {
 
 // Absolute angles. On the wire each axis is a direction byte (pitch 0 up / 1 down, yaw 0 left /
 // 1 right, 2 = no movement) and a uint16 magnitude in degrees x CodecOptions::angle_command_scale
-// (NOTES A4, default 100). Here: signed degrees (see the sign conventions at the top of this file)
-// and, per axis, `*_move = false` for the document's "no movement" (the angle is then ignored and
-// sent as 0).
+// (docs/protocol/decisions.md#a4, default 100). Here: signed degrees (see the sign conventions at
+// the top of this file) and, per axis, `*_move = false` for the document's "no movement" (the angle
+// is then ignored and sent as 0).
 struct GimbalAngleRequest {
   static constexpr MessageId kId = 0x000012;
   static constexpr const char* kName = "gimbal_angle";
@@ -224,8 +224,8 @@ struct GimbalDialSpeedRequest {
 
 // ---- 0x000018 version, section 3.1.2.5 ------------------------------------------------------
 
-// ACK 0x010018: response code (NOTES A2 byte order), hardware major.minor.patch, software
-// major.minor.patch, 1 reserved byte.
+// ACK 0x010018: response code (docs/protocol/decisions.md#a2 byte order), hardware
+// major.minor.patch, software major.minor.patch, 1 reserved byte.
 struct GimbalVersionAck {
   static constexpr MessageId kId = 0x010018;
   static constexpr const char* kName = "gimbal_version_ack";

@@ -1,11 +1,11 @@
 // Laser rangefinder messages (document section 3.2.5, system 0x04): single ranging 0x000400 with
 // its distance-carrying ACK, periodic ranging 0x000406 and its 1 Hz status frame 0x020406.
 //
-// Byte order. The ACK 0x010400 follows CodecOptions::ack_byte_order (NOTES A2, big by default).
-// The status frame 0x020406 is not an ACK: section 2.1 makes every non-ACK payload low byte
-// first, and the project reads every 0x02xxxx frame that way (camera_status.h). Its payload looks
-// like the ACK's (it starts with a response code), which is no reason to read it as one: it
-// follows CodecOptions::laser_status_byte_order, little by default (decision L1 in
+// Byte order. The ACK 0x010400 follows CodecOptions::ack_byte_order (docs/protocol/decisions.md#a2,
+// big by default). The status frame 0x020406 is not an ACK: section 2.1 makes every non-ACK payload
+// low byte first, and the project reads every 0x02xxxx frame that way (camera_status.h). Its
+// payload looks like the ACK's (it starts with a response code), which is no reason to read it as
+// one: it follows CodecOptions::laser_status_byte_order, little by default (decision L1 in
 // docs/protocol/gimbal_laser_sbus.md), so 87.6 m (876 = 0x036C) arrives as 6C 03.
 #pragma once
 

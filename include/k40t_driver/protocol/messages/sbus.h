@@ -39,7 +39,7 @@ struct SbusRangeRequest {
   }
 
   // The two values alone, in the given byte order (the request is little-endian, the ACK of
-  // 0x000502 follows NOTES A2).
+  // 0x000502 follows docs/protocol/decisions.md#a2).
   void write_values(ByteWriter& w, ByteOrder order) const;
   void read_values(ByteReader& r, ByteOrder order);
 };
@@ -85,8 +85,9 @@ struct SbusChannelsRequest {
   void read_channels(ByteReader& r);
 };
 
-// ACK 0x010502, section 3.2.6.3: response code, uint16 maximum, uint16 minimum (NOTES A2 byte
-// order, like the code), the seven channel bytes of 0x000501, 1 reserved byte.
+// ACK 0x010502, section 3.2.6.3: response code, uint16 maximum, uint16 minimum
+// (docs/protocol/decisions.md#a2 byte order, like the code), the seven channel bytes of 0x000501, 1
+// reserved byte.
 struct SbusConfigAck {
   static constexpr MessageId kId = 0x010502;
   static constexpr const char* kName = "sbus_config_ack";

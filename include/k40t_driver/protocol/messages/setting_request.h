@@ -1,6 +1,6 @@
 // The shape most camera setting requests share (sections 3.2.2 and 3.2.3): one value byte, after
-// the 0x00 "start setting" byte in the visible-camera family, then reserved zeros (NOTES A11;
-// optional on receive). ACK: the response code only.
+// the 0x00 "start setting" byte in the visible-camera family, then reserved zeros
+// (docs/protocol/decisions.md#a11; optional on receive). ACK: the response code only.
 //
 // A request of that shape derives from ByteSettingRequest<Self, prefix, reserved bytes> and
 // declares, besides kId, kName and kSection, its one field and

@@ -129,8 +129,8 @@ struct ThermalStatus {
 };
 
 // ---- 0x010100, section 3.2.2.1: every thermal setting ----------------------------------------
-// Response code, then 21 bytes; multi-byte fields in the ACK byte order (NOTES A2). A refusal may
-// carry the response code only.
+// Response code, then 21 bytes; multi-byte fields in the ACK byte order
+// (docs/protocol/decisions.md#a2). A refusal may carry the response code only.
 struct ThermalSettingsAck {
   static constexpr MessageId kId = 0x010100;
   static constexpr const char* kName = "thermal_read_settings_ack";
@@ -392,7 +392,8 @@ struct ThermalAlarmsRequest {
   static constexpr const char* kSection = "3.2.2.13";
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 8;
-  static constexpr size_t kMinSize = 7;  // NOTES A9: the table says 7 bytes, the text 8
+  // docs/protocol/decisions.md#a9: the table says 7 bytes, the text 8.
+  static constexpr size_t kMinSize = 7;
   using Ack = PlainAck;
 
   bool high_alarm_on = false;

@@ -33,7 +33,8 @@ enum class Iso : uint8_t {
 };
 const char* to_string(Iso iso);
 
-// Section 3.2.3.5; the document gives 0x0C twice, NOTES A7 makes 0x0D = 1/6000.
+// Section 3.2.3.5; the document gives 0x0C twice, docs/protocol/decisions.md#a7 makes 0x0D =
+// 1/6000.
 enum class Shutter : uint8_t {
   kAuto = 0x00,
   k1_4 = 0x01,
@@ -130,7 +131,8 @@ struct VisibleStatus {
 };
 
 // ---- 0x010200, section 3.2.3.1: every visible-camera setting ---------------------------------
-// Response code (byte order NOTES A2), then 15 bytes. A refusal may carry the response code only.
+// Response code (byte order docs/protocol/decisions.md#a2), then 15 bytes. A refusal may carry the
+// response code only.
 struct VisibleSettingsAck {
   static constexpr MessageId kId = 0x010200;
   static constexpr const char* kName = "visible_read_settings_ack";

@@ -18,8 +18,8 @@ bool is_image_mode(int code);
 // frame of sim/geometry.h: x north, y east, z up) meets first — World::trace() for the pod model.
 using TemperatureSampler = std::function<double(const Vec3& direction)>;
 
-// Stream resolution of the visible and split-screen images (0x000003 byte 2, NOTES A6). The
-// thermal image is always streamed at the core's 640x512.
+// Stream resolution of the visible and split-screen images (0x000003 byte 2,
+// docs/protocol/decisions.md#a6). The thermal image is always streamed at the core's 640x512.
 enum class StreamResolution : uint8_t { k1080p = 0, k720p = 1 };
 
 struct VideoSnapshot {
