@@ -229,6 +229,11 @@ TEST(SkyportBridgeAnswers, AnUnpluggedPodLeavesGettersAnsweredAndTheQueueBounded
   size_t most_queued = 0;
   for (int poll = 0; poll < 50; ++poll) {
     commands.push_back(ask_async(rig, kReturnHead));  // DJI Pilot keeps commanding...
+    // The first command is the one held in the pod: on a loaded machine the worker may take it
+    // from the queue only after the others have filled it, so the test waits until it has.
+    if (poll == 0) {
+      ASSERT_TRUE(eventually([&] { return rig.pod.held() == 1; }));
+    }
     const Result<GimbalStateAck> state = rig.ask(GetGimbalState{});  // ...and polling
     ASSERT_TRUE(state) << state.error();
     EXPECT_EQ(state->code, AckCode::kOk);
