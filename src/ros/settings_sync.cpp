@@ -66,6 +66,7 @@ session::AckResult SettingsSync::apply(const SettingBinding& binding, Config& ne
     state_.last_refusal.clear();
     binding.copy(current_, next);
     set_by_user_.insert(binding.name);
+    written_during_read_.insert(binding.name);
   } else {
     ++state_.changes_refused;
     state_.last_refusal = binding.name + ": " + result.message;
@@ -94,6 +95,10 @@ SettingsState SettingsSync::read_from_pod() {
     camera_report_.reset();  // wait for reports sent after the pod came online
     gimbal_report_.reset();
   }
+  {
+    boost::recursive_mutex::scoped_lock server_lock(server_mutex_);
+    written_during_read_.clear();
+  }
   const PodSettings settings = read_settings(driver_);
   std::optional<protocol::CameraSystemStatus> camera;
   std::optional<protocol::GimbalStatus> gimbal;
@@ -113,6 +118,9 @@ SettingsState SettingsSync::read_from_pod() {
     absorb(config, SettingReports{settings.thermal ? &*settings.thermal : nullptr,
                                   settings.visible ? &*settings.visible : nullptr,
                                   camera ? &*camera : nullptr, gimbal ? &*gimbal : nullptr});
+    // A setting written meanwhile (a service called as soon as it exists) was accepted by the
+    // pod after, or while, its value was read: the written value is the pod's now.
+    for (const std::string& name : written_during_read_) find_binding(name)->copy(config, current_);
     current_ = config;
     server_->updateConfig(config);
     for (const SettingBinding& binding : setting_bindings()) {

@@ -7,6 +7,7 @@ exactly what took effect; one reconfigure can swap backlight compensation for st
 suppression."""
 import statistics
 import sys
+import threading
 import time
 import unittest
 
@@ -179,6 +180,26 @@ class PodJobs(unittest.TestCase):
         response = self.call_ok("read_settings", Trigger)
         self.assertIn("0x000100", response.message)
         self.assertTrue(self.config_becomes(palette=17), "read_settings did not republish")
+
+    def test_a_setting_written_during_a_read_keeps_the_written_value(self):
+        # read_settings reads 0x000100 (palette) and 0x000200, then waits for the 1 Hz camera
+        # report: a set_palette in that wait is accepted by the pod after its palette was read,
+        # so the read's palette is stale and must not replace the written one.
+        self.call_ok("set_palette", SetPalette, palette=3)
+        self.assertTrue(self.config_becomes(palette=3))
+        since = time.time()
+        read = {}
+        reading = threading.Thread(target=lambda: read.update(response=service("read_settings", Trigger)()))
+        reading.start()
+        sent = lambda: [frame_id(f.data) for f in self.raw_tx.messages(since)]
+        self.assertTrue(wait_until(lambda: 0x000200 in sent(), 5.0), "read_settings sent no 0x000200")
+        self.call_ok("set_palette", SetPalette, palette=9)
+        reading.join(10.0)
+        self.assertTrue(read["response"].success, read["response"].message)
+        self.assertIn("palette 9 ", self.sim.ok("status") + " ")
+        self.assertTrue(self.config_becomes(palette=9), "the read replaced the written palette: %s" % self.config())
+        time.sleep(0.5)
+        self.assertEqual(self.config()["palette"], 9)
 
     def test_a_value_outside_the_cfg_range_is_not_sent_back_clamped(self):
         # 0x010200 byte 3 may report 0x16 (5160x3870), which the cfg (0x14..0x15) does not hold.

@@ -67,7 +67,10 @@ class SettingsSync {
   Config current_;
   bool initialised_ = false;
   std::set<std::string> set_by_user_;  // bindings applied through reconfigure (server mutex)
-  std::mutex read_mutex_;              // one read_from_pod() at a time
+  // Bindings applied while read_from_pod() was reading: what it read of them may predate the
+  // write, so the written value wins (server mutex).
+  std::set<std::string> written_during_read_;
+  std::mutex read_mutex_;  // one read_from_pod() at a time
 
   mutable std::mutex mutex_;  // guards what follows; never held while waiting for the pod
   std::condition_variable reports_arrived_;
