@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <ctime>
 
+#include "k40t_driver/geo/geodesy.h"
 #include "k40t_driver/protocol/messages/camera_system.h"
 #include "k40t_driver/protocol/messages/flight_controller.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
@@ -25,6 +26,16 @@ int64_t unix_time_ms_now() {
   return std::chrono::duration_cast<std::chrono::milliseconds>(
              std::chrono::system_clock::now().time_since_epoch())
       .count();
+}
+
+int64_t unix_time_ns_now() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(
+             std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+int64_t floor_div(int64_t a, int64_t b) {
+  return a / b - ((a % b != 0) && ((a < 0) != (b < 0)));
 }
 
 }  // namespace
@@ -60,7 +71,9 @@ Result<std::unique_ptr<PodDriver>> PodDriver::create(DriverOptions options, Cloc
 }
 
 PodDriver::PodDriver(DriverOptions options, Clock clock)
-    : options_(std::move(options)), clock_(std::move(clock)) {
+    : options_(std::move(options)),
+      clock_(std::move(clock)),
+      history_(geo::HistoryLimits{options_.state_history_s, 5000}) {
   rate_.set_timeout(std::chrono::duration<double>(options_.cmd_rate_timeout_s));
 }
 
@@ -187,8 +200,21 @@ std::optional<protocol::Payload> PodDriver::answer_gps_request(const FrameView& 
   Result<protocol::CameraGpsRequest> request =
       protocol::decode_payload<protocol::CameraGpsRequest>(frame, codec());
   if (!request) return std::nullopt;  // counted as a decode error by the dispatcher too
-  const VehicleState vehicle = vehicle_state();
-  protocol::CameraGpsAck ack = protocol::CameraGpsAck::answering(request.value());
+  const protocol::CameraGpsRequest& asked = request.value();
+  bool in_history = true;
+  double gap_s = -1;  // stays -1 when the history holds no position (the latest state answers)
+  VehicleState vehicle;
+  if (options_.geotag_time_match) {
+    // The time of day is the pod clock's (UTC), on the day nearest to the pod's now.
+    const int64_t time_of_day_ms =
+        ((asked.hour * 60 + asked.minute) * 60 + asked.second) * 1000 + asked.millisecond;
+    const int64_t pod_now_ms = pod_time_of_stamp(clock_());
+    const StampNs at = stamp_of_pod_time(geo::unix_ms_of_time_of_day(time_of_day_ms, pod_now_ms));
+    vehicle = vehicle_state_at(at, &in_history, &gap_s);
+  } else {
+    vehicle = vehicle_state();
+  }
+  protocol::CameraGpsAck ack = protocol::CameraGpsAck::answering(asked);
   bool positioned = false;
   if (vehicle.has_fix) {
     fill_position(ack, vehicle);
@@ -203,6 +229,11 @@ std::optional<protocol::Payload> PodDriver::answer_gps_request(const FrameView& 
   if (!payload) return std::nullopt;  // the failure form always encodes; kept for safety
   std::lock_guard<std::mutex> lock(mutex_);
   ++(positioned ? counters_.gps_requests_answered : counters_.gps_requests_unanswerable);
+  if (positioned && gap_s >= 0) {
+    ++counters_.gps_requests_time_matched;
+    if (!in_history) ++counters_.gps_requests_out_of_history;
+    counters_.last_geotag_gap_s = gap_s;
+  }
   return payload.value();
 }
 
@@ -245,6 +276,85 @@ VehicleState PodDriver::vehicle_state() const {
   return vehicle_;
 }
 
+void PodDriver::record_position(StampNs stamp, const geo::PositionSample& sample) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  history_.add_position(stamp, sample);
+}
+void PodDriver::record_attitude(StampNs stamp, const geo::AttitudeSample& sample) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  history_.add_attitude(stamp, sample);
+}
+void PodDriver::record_velocity(StampNs stamp, const geo::VelocitySample& sample) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  history_.add_velocity(stamp, sample);
+}
+
+VehicleState PodDriver::vehicle_state_at(StampNs stamp, bool* in_history, double* gap_s) const {
+  VehicleState out;
+  std::optional<geo::Lookup<geo::PositionSample>> position;
+  std::optional<geo::Lookup<geo::AttitudeSample>> attitude;
+  std::optional<geo::Lookup<geo::VelocitySample>> velocity;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    out = vehicle_;
+    position = history_.position_at(stamp);
+    attitude = history_.attitude_at(stamp);
+    velocity = history_.velocity_at(stamp);
+  }
+  if (in_history) *in_history = true;
+  if (gap_s) *gap_s = -1;
+  if (!position || !out.has_fix) return out;  // no history: the latest state as it is
+  const geo::PositionSample& p = position->value;
+  // The take-off reference of the relative height, as the latest state holds it.
+  const double reference_m = out.altitude_m - out.relative_altitude_m;
+  const Result<double> msl =
+      geo::Geoid::egm96().msl_from_ellipsoid(p.latitude_deg, p.longitude_deg, p.height_ellipsoid_m);
+  out.has_fix = msl.is_ok();
+  out.utc_ms = floor_div(stamp, 1000000);
+  out.latitude_deg = p.latitude_deg;
+  out.longitude_deg = p.longitude_deg;
+  out.altitude_m = p.height_ellipsoid_m;
+  out.altitude_msl_m = msl ? msl.value() : 0.0;
+  out.relative_altitude_m = p.height_ellipsoid_m - reference_m;
+  bool inside = position->in_history;
+  if (attitude) {
+    out.has_attitude = true;
+    out.heading_deg = attitude->value.heading_deg;
+    out.pitch_deg = attitude->value.pitch_deg;
+    out.roll_deg = attitude->value.roll_deg;
+    inside = inside && attitude->in_history;
+  }
+  if (velocity) {
+    out.has_velocity = true;
+    out.ground_speed_m_s = std::hypot(velocity->value.east, velocity->value.north);
+    out.climb_rate_m_s = velocity->value.up;
+  }
+  if (in_history) *in_history = inside;
+  if (gap_s) *gap_s = position->gap_s;
+  return out;
+}
+
+StampNs PodDriver::stamp_of_pod_time(int64_t pod_unix_ms) const {
+  int64_t offset_ms = 0;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    offset_ms = clock_offset_ms_;
+  }
+  // The Clock (ROS time, possibly simulated) minus the system clock, read now.
+  const StampNs clock_minus_system = clock_() - unix_time_ns_now();
+  return (pod_unix_ms - offset_ms) * 1000000 + clock_minus_system;
+}
+
+int64_t PodDriver::pod_time_of_stamp(StampNs stamp) const {
+  int64_t offset_ms = 0;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    offset_ms = clock_offset_ms_;
+  }
+  const StampNs clock_minus_system = clock_() - unix_time_ns_now();
+  return floor_div(stamp - clock_minus_system, 1000000) + offset_ms;
+}
+
 void PodDriver::send_time_sync() {
   protocol::TimeSyncRequest sync;
   {
@@ -258,11 +368,13 @@ void PodDriver::send_time_sync() {
 }
 
 void PodDriver::send_laser_target_request() {
-  const VehicleState vehicle = vehicle_state();
+  // The latest fix and attitude, with the velocity from the input or the last two fixes.
+  const VehicleState vehicle = vehicle_state_at(clock_());
   if (!vehicle.has_fix) return;
   protocol::TargetGpsRequest request;
   request.fix = static_cast<protocol::GpsFixStatus>(vehicle.gps_status);
-  request.utc_time_ms = static_cast<uint64_t>(vehicle.utc_ms);
+  // The fix's time in UTC: its stamp through the clock offset (time_reference).
+  request.utc_time_ms = static_cast<uint64_t>(pod_time_of_stamp(vehicle.utc_ms * 1000000));
   fill_position(request, vehicle);
   if (vehicle.has_attitude)
     request.heading_deg = std::fmod(std::fmod(vehicle.heading_deg, 360.0) + 360.0, 360.0);
