@@ -17,6 +17,10 @@
 //   ground-height METRES    the flat ground below the pod
 //   photos                  the photos on the card, with their GPS answers
 //   photo-resolution CODE   the visible photo resolution held and reported (0x14..0x16)
+//   truth                   true positions now (sim/ground_truth.h): Unix time, pod, velocity,
+//                           heading, hot object, laser spot (lat lon h_ellipsoid h_msl), range
+//   geotags                 per photo: geotag error against the truth, distance moved by the
+//                           time the answer arrived
 #pragma once
 
 #include <chrono>
