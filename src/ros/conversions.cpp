@@ -307,6 +307,9 @@ void update_from_fix(VehicleState& state, const sensor_msgs::NavSatFix& fix,
   state.longitude_deg = fix.longitude;
   state.altitude_m = altitude;
   state.altitude_msl_m = msl.value();
+  if (fix.position_covariance_type != sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN) {
+    for (size_t i = 0; i < 9; ++i) state.position_covariance[i] = fix.position_covariance[i];
+  }
   state.relative_altitude_m = reference_altitude_m ? altitude - *reference_altitude_m : 0.0;
 }
 

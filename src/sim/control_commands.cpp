@@ -158,6 +158,15 @@ std::string run_ground_height(const Args& args, ControlTarget& target) {
   return "ok ground " + args[0] + " m below the pod";
 }
 
+std::string run_hot_object(const Args& args, ControlTarget& target) {
+  const auto north = number(args[0], "NORTH", -100000, 100000);
+  if (!north) return error(north.error());
+  const auto east = number(args[1], "EAST", -100000, 100000);
+  if (!east) return error(east.error());
+  target.with_model([&](PodModel& pod) { pod.world().set_hot_object(*north, *east); });
+  return "ok hot object " + args[0] + " m north, " + args[1] + " m east of the take-off point";
+}
+
 std::string run_photos(const Args&, ControlTarget& target) {
   std::ostringstream out;
   out << "ok";
@@ -201,6 +210,7 @@ std::string run_truth(const Args&, ControlTarget& target) {
     const Vec3 v = truth.velocity();
     out << " unix " << pod.unix_time_s();
     put_point(out, "pod", pod.pod_position(), truth);
+    out << " pod_ne " << pod.pod_position().x << " " << pod.pod_position().y;
     out << " velocity_ne " << v.x << " " << v.y << " heading " << pod.vehicle_attitude().yaw_deg;
     put_point(out, "hot", pod.hot_object_position(), truth);
     put_point(out, "laser", pod.laser_spot(), truth);
@@ -235,6 +245,7 @@ const std::vector<Command>& commands() {
       {"ground-height", "ground-height METRES", 1, 1, run_ground_height},
       {"photos", "photos", 0, 0, run_photos},
       {"truth", "truth", 0, 0, run_truth},
+      {"hot-object", "hot-object NORTH EAST", 2, 2, run_hot_object},
       {"geotags", "geotags", 0, 0, run_geotags},
   };
   return kCommands;

@@ -3,6 +3,7 @@
 // the glue fills it from the fix (NavSatFix) and attitude (Imu) topics.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -17,6 +18,8 @@ struct VehicleState {
   double altitude_m = 0;           // above the WGS 84 ellipsoid, as NavSatFix gives it
   double altitude_msl_m = 0;       // above mean sea level (EGM96 geoid): what the pod is sent
   double relative_altitude_m = 0;  // above the first fix (the take-off point)
+  // ENU, m^2 (NavSatFix's); when the fix gives none: 2 m horizontal, 4 m vertical (1 sigma).
+  std::array<double, 9> position_covariance{4, 0, 0, 0, 4, 0, 0, 0, 16};
 
   bool has_attitude = false;
   // Aviation convention (the pod's): heading clockwise from north 0..360, nose-up pitch positive,

@@ -53,6 +53,11 @@ class World {
 
   const WorldConfig& config() const { return config_; }
   void set_ground_height(double metres) { config_.ground_height_m = metres; }
+  // Where the hot object stands, metres north and east of the take-off point.
+  void set_hot_object(double north_m, double east_m) {
+    config_.hot.north_m = north_m;
+    config_.hot.east_m = east_m;
+  }
   // Where the pod is over the ground, relative to where it started (a moving vehicle): the
   // objects and the ground's pattern stay put while the pod moves (sim/ground_truth.h).
   void set_pod_offset(double north_m, double east_m) {

@@ -1,0 +1,32 @@
+// What laser/target_local and locate_pixel share: the vehicle pose of geo/ray_locator.h from
+// the driver's time-matched VehicleState, a ray of a sensor frame in the vehicle frame from TF,
+// a NavSatFix of a located point, and the uncertainty parameters.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <sensor_msgs/NavSatFix.h>
+#include <tf2_ros/buffer.h>
+
+#include "k40t_driver/geo/ray_locator.h"
+#include "k40t_driver/ros/vehicle_state.h"
+
+namespace k40t::driver {
+
+// The pose, or a reason: no fix, no attitude.
+Result<geo::VehiclePose> vehicle_pose(const VehicleState& state);
+
+// The ray from `sensor_frame`'s origin along `direction` (in that frame) expressed in
+// `vehicle_frame`, at `stamp` or, when TF has nothing that old or new, the latest transform.
+Result<geo::BodyRay> ray_in_vehicle(const tf2_ros::Buffer& tf, const std::string& vehicle_frame,
+                                    const std::string& sensor_frame, const ros::Time& stamp,
+                                    const geo::Vector3& direction);
+
+sensor_msgs::NavSatFix to_nav_sat_fix(const geo::Located& located, const ros::Time& stamp,
+                                      const std::string& frame_id);
+
+// ~attitude_sigma (deg), ~pointing_sigma (deg), ~range_sigma (m).
+geo::RayUncertainty read_uncertainty(const ros::NodeHandle& private_nh);
+
+}  // namespace k40t::driver
