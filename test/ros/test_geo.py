@@ -20,6 +20,7 @@ import rostest
 from geometry_msgs.msg import TwistStamped
 from sensor_msgs.msg import CameraInfo, Imu, JointState, NavSatFix
 
+from k40t_driver.msg import LaserTarget
 from k40t_driver.srv import LocatePixel, LocatePixelRequest, MeasureRange, SetAngle, TakePhoto
 from k40t_test_support import Recorder, SimControl, name, service, wait_until
 
@@ -118,6 +119,7 @@ class GeoTest(unittest.TestCase):
         cls.local = Recorder(name("laser/target_local"), NavSatFix)
         cls.pod_target = Recorder(name("laser/target"), NavSatFix)
         cls.joints = Recorder(name("joint_states"), JointState, keep=100)
+        cls.report = Recorder(name("laser/target_report"), LaserTarget)
         cls.set_angle = service("gimbal/set_angle", SetAngle)
         cls.measure = service("laser/measure", MeasureRange)
         cls.locate = service("locate_pixel", LocatePixel)
@@ -241,6 +243,17 @@ class GeoTest(unittest.TestCase):
     def test_hot_object_at_100_and_500_m(self):
         for slant in (100.0, 500.0):
             self.check_hot_object_at(slant)
+
+    def test_laser_target_report_keeps_every_field(self):
+        report = self.report.wait_for_match(lambda m: m.code == 0, timeout=10.0)
+        self.assertTrue(report, "no laser/target_report with code 0")
+        self.assertEqual(report.mount_mask, 0x1F)
+        self.assertLess(abs(report.pod_utc.to_sec() - time.time()), 10.0)  # the pod's UTC
+        pod = self.feeder.latest["pod"]
+        undulation = pod[2] - pod[3]  # the truth's ellipsoid minus sea-level height
+        self.assertAlmostEqual(report.altitude - report.altitude_msl, undulation, delta=0.5)
+        self.assertTrue(math.isfinite(report.relative_height))
+        self.assertEqual(len(report.position_covariance), 9)
 
     def test_locate_pixel_errors_are_clear(self):
         up = LocatePixelRequest(u=960.0, v=0.0, plane_reference=LocatePixelRequest.ABOVE_TAKEOFF,
