@@ -86,8 +86,6 @@ Status PodServer::start() {
   }
   pending_faults_ = options_.scheduled;
   started_at_ = SteadyClock::now();
-  pod_.set_unix_epoch_s(
-      std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count());
   running_ = true;
   thread_ = std::thread([this] { run(); });
   return Status::ok();
@@ -227,6 +225,14 @@ void PodServer::run() {
   const auto tick = std::chrono::duration_cast<SteadyClock::duration>(
       std::chrono::duration<double>(options_.tick_s));
   SteadyClock::time_point simulated_until = SteadyClock::now();
+  {
+    // Model time follows the wall clock from here: the truth's Unix times (control command
+    // "truth") count from this instant.
+    std::lock_guard<std::mutex> lock(model_mutex_);
+    pod_.set_unix_epoch_s(
+        std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count() -
+        pod_.now_s());
+  }
   while (running_) {
     const SteadyClock::time_point now = SteadyClock::now();
     std::vector<Outgoing> out;

@@ -227,12 +227,14 @@ class GeoTest(unittest.TestCase):
         # On the plane through the centre: the ray passes the centre within the aim's error.
         plane_error = distance_m((plane.fix.latitude, plane.fix.longitude, plane.fix.altitude),
                                  hot[0:3])
-        pod_answer = self.pod_target.latest()
+        # The pod's own answer to the next 0x000320 (laser_target_period 1 s), for comparison.
+        pod_answer = self.pod_target.wait_for_match(lambda m: True, timeout=3.0,
+                                                    since=time.time() + 0.1)
         pod_error = (abs(distance_m((pod_answer.latitude, pod_answer.longitude,
                                      pod_answer.altitude), hot[0:3]) - HOT_RADIUS)
                      if pod_answer else float("nan"))
         print("GEO moving=%s slant %.1f m: laser/target_local %.3f m, locate_pixel on the laser "
-              "axis %.3f m, on the plane %.3f m, pod's latest laser/target %.3f m; sigma_e %.3f m"
+              "axis %.3f m, on the plane %.3f m, pod's next laser/target %.3f m; sigma_e %.3f m"
               % (self.moving, range_now, local_error, axis_error, plane_error, pod_error,
                  math.sqrt(local.position_covariance[0])))
         for label, error in (("laser/target_local", local_error), ("locate_pixel laser", axis_error),
