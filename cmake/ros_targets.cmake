@@ -3,7 +3,8 @@
 #                     others share (parameters, conversions); no OpenCV, GStreamer or OpenSSL;
 #   k40t_ros_video    src/ros/video/: VideoNodelet, k40t_video_node (OpenCV, GStreamer,
 #                     image_transport, camera_info_manager; cmake/video_ros.cmake);
-#   k40t_ros_skyport  src/ros/skyport/: SkyportNodelet, k40t_skyport_node (the PSDK layer, OpenSSL).
+#   k40t_ros_skyport  src/ros/skyport/: SkyportNodelet, k40t_skyport_node (the PSDK layer, OpenSSL);
+#   k40t_rviz_panel   src/rviz/: the rviz panel PodPanel (Qt; cmake/rviz_panel.cmake).
 # The standalone nodes, k40t_manager and the rostest programs under test/ros/ link them.
 file(GLOB K40T_ROS_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/*.cpp)
 file(GLOB K40T_ROS_SKYPORT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/skyport/*.cpp)
@@ -18,6 +19,8 @@ add_dependencies(k40t_ros ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_
 add_library(k40t_ros_skyport SHARED ${K40T_ROS_SKYPORT_SOURCES})
 target_link_libraries(k40t_ros_skyport PUBLIC k40t_ros k40t_psdk)
 include(cmake/video_ros.cmake)  # k40t_ros_video
+include(cmake/bag.cmake)        # k40t_ros_bag, k40t_bag (`k40t bag`)
+include(cmake/rviz_panel.cmake)  # k40t_rviz_panel (Qt)
 
 # One executable per src/ros/nodes/*.cpp, each a thin main() over the library it names.
 set(K40T_NODE_LIBRARY_k40t_node k40t_ros)
@@ -42,6 +45,8 @@ install(DIRECTORY include/k40t_driver/ DESTINATION ${CATKIN_PACKAGE_INCLUDE_DEST
 install(FILES nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 install(FILES bench/bench_nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/bench)
 install(DIRECTORY launch config urdf rviz DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
+# The launch files' URDF generator ($(find k40t_driver)/scripts/k40t_urdf.py: prefixed frames).
+install(PROGRAMS scripts/k40t_urdf.py DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/scripts)
 
 # rostest programs, run by scripts/run_tests.sh through test/ros/*.test:
 #   test/ros/unit/*.cpp  gtest of the ROS layer's own logic (conversions, rate dead-man...), one
@@ -53,8 +58,11 @@ if(CATKIN_ENABLE_TESTING)
   file(GLOB K40T_ROS_UNIT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/test/ros/unit/*.cpp)
   if(K40T_ROS_UNIT_SOURCES)
     add_executable(k40t_ros_unit_tests ${K40T_ROS_UNIT_SOURCES})
-    target_link_libraries(k40t_ros_unit_tests PRIVATE k40t_ros k40t_ros_skyport GTest::gtest
+    target_link_libraries(k40t_ros_unit_tests PRIVATE k40t_ros k40t_ros_skyport k40t_ros_bag GTest::gtest
                                                       GTest::gtest_main)
+    # test_skyport_golden_coverage.cpp reads test/data/psdk_golden.
+    target_compile_definitions(k40t_ros_unit_tests PRIVATE
+                               K40T_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/test/data")
   endif()
   file(GLOB K40T_ROSTEST_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/test/ros/*.cpp)
   foreach(source ${K40T_ROSTEST_SOURCES})

@@ -15,11 +15,13 @@ packages=(
   python3-sensor-msgs python3-diagnostic-msgs python3-std-srvs python3-nodelet
   python3-tf2-ros python3-tf2-msgs libdiagnostic-aggregator-dev libdiagnostic-aggregator-tools
   socat libssl-dev ccache rviz xvfb
+  librviz-dev qtbase5-dev
   libactionlib-dev python3-actionlib libactionlib-msgs-dev python3-actionlib-msgs ros-actionlib-msgs
   libgstrtspserver-1.0-dev libgstreamer1.0-dev libgstreamer-plugins-base1.0-dev
   gstreamer1.0-plugins-good gstreamer1.0-plugins-bad gstreamer1.0-plugins-ugly gstreamer1.0-libav
   gstreamer1.0-rtsp gstreamer1.0-tools
   libgeographiclib-dev libproj-dev proj-data
+  librosbag-storage-dev libyaml-cpp-dev
 )
 
 missing=()

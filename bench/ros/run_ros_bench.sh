@@ -7,6 +7,7 @@
 #   3. CPU and RSS of the driver at full telemetry over BENCH_SECONDS (default 60; target <= 1 %
 #      of a core and <= 30 MB)
 #   4. SKYPORT bridge: getter ACK latency while a pod call is blocked 2 s (target p99 <= 20 ms)
+#   5. `k40t bag`: offline decoding of a synthetic hour of full-rate pod traffic (target < 10 s)
 # Runs on its own ROS master port. Expects a build (scripts/build.sh ros).
 set -o pipefail
 source "$(dirname "$0")/../../scripts/ros_env.sh"
@@ -43,3 +44,6 @@ stop
 
 echo "== SKYPORT getter ACK latency while a pod call is blocked"
 rosrun k40t_driver k40t_skyport_getter_latency 10
+
+echo "== k40t bag: decoding a synthetic hour of full-rate pod traffic"
+rosrun k40t_driver k40t_bag_decode_bench 3600 "$out"

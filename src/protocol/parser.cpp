@@ -87,7 +87,7 @@ inline void FrameParser::track_sequence(Address source_address, uint8_t sequence
 // Bytes are parsed where the caller has them; only the start of a frame that is still arriving is
 // copied, into buffer_, and then topped up with just the bytes it needs to be decided. So the
 // steady state copies nothing but frame tails cut by the chunking.
-void FrameParser::feed(const uint8_t* data, size_t size, const FrameCallback& on_frame) {
+void FrameParser::feed_chunk(const uint8_t* data, size_t size, const FrameCallback& on_frame) {
   stats_.bytes_received += size;
   while (size > 0) {
     if (begin_ == end_) {

@@ -19,6 +19,7 @@ CommandInfo info_of(CommandKey key, const std::string& name, const char* section
   info.max_size = max_data_size<T>();
   info.encrypted = payload_encrypts(key);
   info.describe = &describe_data<T>;
+  info.reencode = &reencode_data<T>;
   return info;
 }
 

@@ -1,5 +1,6 @@
 #include "k40t_driver/psdk/session.h"
 
+#include <algorithm>
 #include <cstring>
 #include <future>
 
@@ -24,6 +25,14 @@ Session::~Session() {
 
 void Session::on_command(CommandKey key, CommandHandler handler) {
   handlers_[key.packed()] = std::move(handler);
+}
+std::vector<CommandKey> Session::handled_commands() const {
+  std::vector<CommandKey> keys;
+  keys.reserve(handlers_.size());
+  for (const auto& entry : handlers_)
+    keys.push_back({static_cast<uint8_t>(entry.first >> 8), static_cast<uint8_t>(entry.first)});
+  std::sort(keys.begin(), keys.end());
+  return keys;
 }
 void Session::on_frame(FrameHandler handler) {
   frame_handler_ = std::move(handler);

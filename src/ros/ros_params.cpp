@@ -7,7 +7,11 @@
 namespace k40t::driver {
 
 Result<RosPodConfig> read_params(const ros::NodeHandle& private_nh) {
-  ParamReader p(private_nh);
+  ParamReader reader(private_nh);
+  return read_params(reader);
+}
+
+Result<RosPodConfig> read_params(ParamReader& p) {
   RosPodConfig c;
   DriverOptions& d = c.driver;
   d.device = p.get<std::string>("device", "serial:///dev/ttyUSB0");

@@ -286,12 +286,18 @@ std::string PodServer::status() {
         << pose.joint_pitch_deg << " zoom " << pod.zoom().zoom() << "x sd "
         << to_string(pod.camera().sd().state()) << " camera "
         << (pod.camera_available() ? "up" : "down") << " recording "
-        << (pod.camera().recording() ? "yes" : "no") << " focus ";
+        << (pod.camera().recording() ? "yes" : "no") << " palette "
+        << static_cast<int>(pod.thermal().settings().palette) << " image-mode "
+        << static_cast<int>(pod.camera().settings().image_mode) << " focus ";
     if (const auto& area = pod.zoom().focus_area()) {
       out << "area " << area->left << "," << area->top << "-" << area->right << "," << area->bottom;
     } else {
       out << "centre";
     }
+    // What the pod is busy with: tests wait on these instead of on a 1 Hz status topic.
+    out << " shooting " << (pod.camera().shooting() ? "yes" : "no") << " zooming "
+        << (pod.zoom().zooming() ? "yes" : "no") << " upgrading "
+        << (pod.camera().upgrading() ? "yes" : "no");
   });
   out << " | faults " << faults_.describe();
   return out.str();

@@ -10,8 +10,21 @@ with the two CRC16 bytes left as "?? ??" and the DATA bytes by hand, then run:
 
 It prints the CRC16 bytes (low byte first) and the whole frame with CRC16 and CRC32 filled in.
 The length field is not computed: write it by hand too, the script checks it.
+
+    test/data/psdk_frame_crc.py --fill test/data/psdk_golden/camera.txt
+
+completes a golden file in place (test/data/psdk_golden/README.md): in each frame written by hand,
+the CRC16 bytes and the four CRC32 bytes are "??"; a frame whose header says AES (byte 4 bits
+5-7 = 1) has its DATA written in plain, already zero-padded, on a line "P: ..." that becomes a
+"# plain DATA: ..." comment and the ciphertext (`openssl enc -aes-128-ecb -nopad`, key MD5(app
+name + app id + app key + developer account) of the test credentials, hashlib).
 """
+import hashlib
+import subprocess
 import sys
+
+# The credentials of the bridge tests (test/ros/unit/skyport_bridge_rig.h; a demo key).
+TEST_CREDENTIALS = ("k40t_test", "123456", "0123456789abcdef0123456789abcdef", "dev@example.com")
 
 
 def table_msb_first(poly, width):
@@ -48,6 +61,61 @@ def crc32(data):
     return crc ^ 0xFFFFFFFF
 
 
+def aes_key():
+    return hashlib.md5("".join(TEST_CREDENTIALS).encode()).digest()
+
+
+def encrypt(plain):
+    if len(plain) % 16:
+        sys.exit("plain DATA of %d bytes: pad it to a multiple of 16 by hand" % len(plain))
+    return subprocess.run(["openssl", "enc", "-aes-128-ecb", "-nopad", "-K", aes_key().hex()],
+                          input=bytes(plain), stdout=subprocess.PIPE, check=True).stdout
+
+
+def complete(frame):
+    """Fills CRC16 (bytes 10-11) and CRC32 (last 4) of a frame whose placeholders are zero."""
+    h16 = crc16(frame[0:10])
+    frame[10] = h16 & 0xFF
+    frame[11] = h16 >> 8
+    c32 = crc32(frame[:-4])
+    frame[-4:] = bytes([c32 & 0xFF, (c32 >> 8) & 0xFF, (c32 >> 16) & 0xFF, (c32 >> 24) & 0xFF])
+    length = frame[1] | ((frame[2] & 0x03) << 8)
+    if length != len(frame):
+        sys.exit("length field says %d, the frame has %d bytes: %s" % (length, len(frame), frame.hex(" ")))
+    return frame
+
+
+def fill(path):
+    out, block, plain = [], [], None
+
+    def flush():
+        nonlocal block, plain
+        if not block:
+            return
+        frame = bytearray.fromhex(" ".join(block).replace("??", "00"))
+        if plain is not None:
+            if frame[4] >> 5 != 1:
+                sys.exit("P: line in a frame whose header does not say AES")
+            out.append("# plain DATA: " + " ".join("%02X" % b for b in plain))
+            frame = frame[:12] + encrypt(plain) + frame[12:]
+        frame = complete(frame)
+        for i in range(0, len(frame), 24):
+            out.append(" ".join("%02X" % b for b in frame[i:i + 24]))
+        block, plain = [], None
+
+    for line in open(path).read().splitlines():
+        text = line.strip()
+        if text.startswith("P:"):
+            plain = bytearray.fromhex(text[2:])
+        elif text and not text.startswith("#") and not text.startswith("="):
+            block.append(text)
+        else:
+            flush()
+            out.append(line)
+    flush()
+    open(path, "w").write("\n".join(out) + "\n")
+
+
 def main():
     text = " ".join(sys.argv[1:]).replace("??", "00")
     frame = bytearray.fromhex(text)
@@ -65,7 +133,9 @@ def main():
 
 
 if __name__ == "__main__":
-    if len(sys.argv) == 2 and sys.argv[1] == "--self-test":
+    if len(sys.argv) == 3 and sys.argv[1] == "--fill":
+        fill(sys.argv[2])
+    elif len(sys.argv) == 2 and sys.argv[1] == "--self-test":
         assert crc16(b"123456789") == 0xEBEC, hex(crc16(b"123456789"))
         assert crc32(b"123456789") == 0x7EAD5C77, hex(crc32(b"123456789"))
         print("ok")

@@ -25,9 +25,10 @@ VARIANTS = {
                        ["sim:=true", "app_name:=a", "app_id:=1", "developer_account:=d"]],
     "sim.launch": [["manager:=/pod_manager"], ["video:=true"]],
     "video.launch": [["manager:=/pod_manager", "backend:=ffmpeg"]],
-    "demo.launch": [["video:=false"]],
+    "demo.launch": [["video:=false"], ["frame_prefix:=pod_a_", "mount_frame:=base_link", "manager:=manager"]],
+    "two_pods.launch": [["video:=false", "aggregate:=false", "respawn:=false"]],
     "record.launch": [["raw_only:=true", "duration:=5"]],
-    "replay.launch": [["sim_time:=true", "rate:=2.0"]],
+    "replay.launch": [["sim_time:=true", "rate:=2.0"], ["ns:=pod_b", "frame_prefix:=pod_b_"]],
     "latency.launch": [["in_manager:=true"]],
 }
 

@@ -58,6 +58,16 @@ class SimControl:
             raise AssertionError("simulator refused '%s': %s" % (line, reply))
         return reply
 
+    def busy_with(self, activity):
+        """True while the simulated pod is `activity` ("shooting", "zooming" or "upgrading"), from
+        its `status` line: the pod's own state, not a status topic that may be a second old."""
+        words = self.ok("status").split()
+        return words[words.index(activity) + 1] == "yes"
+
+    def wait_idle(self, timeout):
+        """Waits until the pod neither shoots, zooms nor upgrades; False on timeout."""
+        return wait_until(lambda: not any(self.busy_with(a) for a in ("shooting", "zooming", "upgrading")), timeout)
+
 
 class Recorder:
     """Keeps every message of a topic with its arrival time (wall clock)."""
@@ -218,3 +228,22 @@ def assert_rejected_without_sending(test, raw_tx, srv, srv_type, field, **args):
     unexpected = [i for i in sent if i not in BACKGROUND_IDS]
     test.assertEqual(unexpected, [], "%s(%s) sent frames %s: %s" % (
         srv, args, ["0x%06X" % i for i in unexpected], response.message))
+
+
+def make_every_topic_flow(ns=DRIVER_NS):
+    """Periodic laser ranging on, and a latched fix and attitude for the laser-target requests, so
+    that every decoded topic of the live driver in `ns` flows. Returns the publishers: keep them."""
+    from dynamic_reconfigure.client import Client as ReconfigureClient
+    from sensor_msgs.msg import Imu, NavSatFix
+
+    ReconfigureClient(ns + "/driver", timeout=15.0).update_configuration({"periodic_ranging": True})
+    fix_pub = rospy.Publisher(ns + "/fix", NavSatFix, queue_size=1, latch=True)
+    imu_pub = rospy.Publisher(ns + "/attitude", Imu, queue_size=1, latch=True)
+    fix = NavSatFix()
+    fix.latitude, fix.longitude, fix.altitude = 47.3977, 8.5456, 500.0
+    imu = Imu()
+    imu.orientation.w = 1.0
+    fix_pub.publish(fix)
+    imu_pub.publish(imu)
+    time.sleep(1.5)
+    return fix_pub, imu_pub

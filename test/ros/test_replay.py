@@ -14,12 +14,11 @@ import unittest
 import rosbag
 import rospy
 import rostest
-from dynamic_reconfigure.client import Client as ReconfigureClient
 from geometry_msgs.msg import QuaternionStamped
-from sensor_msgs.msg import Imu, JointState, NavSatFix, Range
+from sensor_msgs.msg import JointState, NavSatFix, Range
 
 from k40t_driver.msg import CameraStatus, Frame, GimbalStatus, ThermalStats, VisibleStatus
-from k40t_test_support import Recorder, wait_until
+from k40t_test_support import Recorder, make_every_topic_flow, wait_until
 
 PKG = "k40t_driver"
 LIVE = "/k40t"
@@ -64,17 +63,7 @@ class Replay(unittest.TestCase):
 
     def test_replay_regenerates_every_decoded_topic(self):
         self.assertTrue(Recorder(LIVE + "/joint_states", JointState).wait_for(3, timeout=20.0), "no live driver")
-        # Make every topic flow: periodic laser ranging, and a fix for the laser-target requests.
-        ReconfigureClient(LIVE + "/driver", timeout=15.0).update_configuration({"periodic_ranging": True})
-        fix_pub = rospy.Publisher(LIVE + "/fix", NavSatFix, queue_size=1, latch=True)
-        imu_pub = rospy.Publisher(LIVE + "/attitude", Imu, queue_size=1, latch=True)
-        fix = NavSatFix()
-        fix.latitude, fix.longitude, fix.altitude = 47.3977, 8.5456, 500.0
-        imu = Imu()
-        imu.orientation.w = 1.0
-        fix_pub.publish(fix)
-        imu_pub.publish(imu)
-        time.sleep(1.5)
+        publishers = make_every_topic_flow(LIVE)  # noqa: F841 (latched: kept alive)
 
         frames, recorded = self.record_live(8.0)
         self.assertGreater(len(frames), 150, "too few raw frames recorded")

@@ -3,12 +3,16 @@
 with the right values and units, and its camera and gimbal commands act on k40t_sim (the pod)
 through the driver; replies are checked on the adapter's side (return code + data) and the pod's
 state through k40t_sim's control socket."""
+import glob
 import math
+import os
 import struct
 import sys
 import time
 import unittest
+import xmlrpc.client
 
+import rosgraph
 import rospy
 import rostest
 from diagnostic_msgs.msg import DiagnosticStatus
@@ -36,6 +40,41 @@ def ack(reply):
     code = int(reply.split()[1][len("code="):], 16)
     data = reply.split("data=", 1)[1].split()
     return code, bytes(int(b, 16) for b in data)
+
+
+GOLDEN_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "psdk_golden")
+
+
+def golden_keys():
+    """(set, id, packet type) of every hand-written frame in test/data/psdk_golden: bytes 6, 7 and
+    bit 5 of byte 3 of each frame's first hex line (its README)."""
+    keys = set()
+    for path in glob.glob(os.path.join(GOLDEN_DIR, "*.txt")):
+        in_frame = False
+        with open(path) as text:
+            for line in text:
+                line = line.strip()
+                if not line or line.startswith("#"):
+                    continue
+                if line.startswith("="):
+                    in_frame = False
+                    continue
+                if not in_frame:
+                    in_frame = True
+                    b = [int(x, 16) for x in line.split()[:8]]
+                    keys.add((b[6], b[7], b[3] >> 5 & 1))
+    return keys
+
+
+def manager_rss_kb():
+    """Resident memory of the nodelet manager that runs the bridge (its pid from its XML-RPC API)."""
+    uri = rosgraph.Master("/test_skyport").lookupNode(name("manager"))
+    _, _, pid = xmlrpc.client.ServerProxy(uri).getPid("/test_skyport")
+    with open("/proc/%d/status" % pid) as status:
+        for line in status:
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1])
+    raise AssertionError("no VmRSS for pid %d" % pid)
 
 
 def pod_status_number(status, key):
@@ -104,6 +143,22 @@ class Skyport(unittest.TestCase):
 
     def test_bridge_learns_the_pods_state(self):
         self.assertTrue(self.pod_known, "the bridge never answered GetCameraWorkMode with 0x00")
+
+    def test_every_handled_command_has_a_golden_frame(self):
+        # The nodelet's whole dispatch table (bridge, pushes, transparent data), as it registered it;
+        # ACKed commands need their ACK's frame too, pushes without ACK only theirs.
+        handled = rospy.get_param(name("skyport/handled_commands"))
+        self.assertGreater(len(handled), 50, handled)
+        golden = golden_keys()
+        no_ack = {(0x02, 0x01), (0x06, 0x01)} | {(0x03, i) for i in range(0x01, 0x0D) if i != 0x03}
+        missing = []
+        for text in handled:
+            cmd_set, cmd_id = (int(x, 16) for x in text.split("/"))
+            if (cmd_set, cmd_id, 0) not in golden:
+                missing.append(text)
+            if (cmd_set, cmd_id) not in no_ack and (cmd_set, cmd_id, 1) not in golden:
+                missing.append(text + " ACK")
+        self.assertEqual(missing, [], "handled without a golden frame in test/data/psdk_golden")
 
     def test_identity_verification_passes(self):
         self.assertTrue(self.identity, "the bridge never answered identity verification")
@@ -230,6 +285,26 @@ class Skyport(unittest.TestCase):
         # Read back from the pod's camera status (1 Hz): wait for it to show the change.
         self.assertTrue(wait_until(lambda: self.command("send 4 2") == (0x00, b"\x01"), 10.0),
                         "work mode: %s" % self.skyport("send 4 2"))
+
+    def test_utc_push_over_500_ms_late_is_dropped_without_pps(self):
+        # 3.3.10's rule in the default configuration (no pps_topic): skyport_sim sends one UTC push
+        # 800 ms after its turn; the bridge drops it (later than the punctual pushes by more than
+        # 500 ms), counts it, and uses the following ones again.
+        late_key = "UTC pushes dropped (over 500 ms after their edge)"
+        self.assertTrue(self.utc.wait_for(3, 15.0), "no skyport/utc_time")
+        self.assertTrue(wait_until(lambda: self.diagnostics.value("SKYPORT link", late_key) is not None, 10.0))
+        dropped_before = int(self.diagnostics.value("SKYPORT link", late_key))
+        since = time.time()
+        self.skyport.ok("utc_late 800")
+        self.assertTrue(wait_until(lambda: int(self.diagnostics.value("SKYPORT link", late_key)) > dropped_before,
+                                   10.0), self.diagnostics.status("SKYPORT link"))
+        # Pushes go on: the next punctual ones are published, each UTC second once, none of them
+        # the dropped one (its second is missing from the topic).
+        self.assertTrue(len(self.utc.wait_for(4, 10.0, since=since)) >= 4)
+        # From the push before the command on (1 Hz): the dropped second is the gap.
+        seconds = [m.time_ref.secs for m in self.utc.messages(since - 1.5)]
+        self.assertEqual(len(seconds), len(set(seconds)), seconds)
+        self.assertTrue(any(b - a == 2 for a, b in zip(seconds, seconds[1:])), seconds)
 
     def test_pod_clock_is_set_from_the_skyport_utc(self):
         # The simulated flight's UTC is 2024-07-01: once the driver set the pod's clock from it, the
@@ -380,15 +455,25 @@ class Skyport(unittest.TestCase):
         self.assertTrue(self.diagnostics.wait_level("SKYPORT link", DiagnosticStatus.OK, 20.0))
         before, _ = self.command("gimbal_state")
         self.assertEqual(before, 0x00)
-        self.pod.ok("disconnect 8")
+        self.pod.ok("disconnect 15")
         self.assertTrue(wait_until(lambda: self.diagnostics.value("SKYPORT link", "pod state stale") == "True",
                                    10.0), self.diagnostics.status("SKYPORT link"))
         codes = []
-        for _ in range(5):
-            for getter in ("gimbal_state", "record_state"):
-                codes.append(self.command(getter)[0])
-            self.command("gimbal_return")  # a pod call: refused or busy, never waited for by getters
+
+        def poll(rounds):
+            for _ in range(rounds):
+                for getter in ("gimbal_state", "record_state"):
+                    codes.append(self.command(getter)[0])
+                self.command("gimbal_return")  # a pod call: refused or busy, never waited for
+        poll(5)
+        rss_before = manager_rss_kb()
+        poll(15)  # three times as many: memory must not grow with them (a bounded queue)
+        rss_after = manager_rss_kb()
+        print("manager resident memory while the pod is unplugged: %d kB after 5 polling rounds, %d kB after 15 more"
+              % (rss_before, rss_after))
         self.assertEqual(codes, [0x00] * len(codes))
+        self.assertLess(rss_after - rss_before, 2048,
+                        "the manager grew from %d to %d kB while the pod was unplugged" % (rss_before, rss_after))
         status = self.diagnostics.status("SKYPORT link")
         self.assertIn("stale", status.message)
         self.assertLessEqual(int(self.diagnostics.value("SKYPORT link", "pod jobs queued")), 8)

@@ -183,6 +183,13 @@ TEST(SimFaultCounters, ControlSocketDrivesTheFaults) {
   const std::string status = control(link.server().control_port(), "status");
   EXPECT_NE(status.find("connected"), std::string::npos) << status;
   EXPECT_NE(status.find("seq-jumps=1"), std::string::npos) << status;
+  // The settings the rviz panel's test reads back (docs/simulator.md, control socket `status`).
+  link.server().with_model([](PodModel& pod) {
+    pod.thermal().settings().palette = 13;
+    pod.camera().settings().image_mode = 7;
+  });
+  const std::string settings = control(link.server().control_port(), "status");
+  EXPECT_NE(settings.find(" palette 13 image-mode 7 "), std::string::npos) << settings;
 }
 
 }  // namespace

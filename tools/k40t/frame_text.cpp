@@ -82,21 +82,18 @@ std::string frame_json(const protocol::FrameView& frame, uint64_t offset,
   return out.text();
 }
 
+void FieldTextSink::real(const char* name, double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), real_format_, value);
+  add(name, buffer);
+}
+
 namespace {
 
 // "name=value" pairs for humans: reals as %g, enums by label, bytes dotted.
-class SummarySink : public protocol::FieldSink {
+class SummarySink : public FieldTextSink {
  public:
-  void integer(const char* name, int64_t value) override { add(name, std::to_string(value)); }
-  void unsigned_integer(const char* name, uint64_t value) override {
-    add(name, std::to_string(value));
-  }
-  void real(const char* name, double value) override {
-    char buffer[32];
-    std::snprintf(buffer, sizeof(buffer), "%g", value);
-    add(name, buffer);
-  }
-  void boolean(const char* name, bool value) override { add(name, value ? "1" : "0"); }
+  SummarySink() : FieldTextSink("%g") {}
   void text(const char* name, const std::string& value) override { add(name, "\"" + value + "\""); }
   // One token per field: the label as `k40t send` accepts it ("busy_repeated_request(8)").
   void enumeration(const char* name, int64_t code, const char* label) override {
@@ -111,7 +108,7 @@ class SummarySink : public protocol::FieldSink {
   const std::string& line() const { return line_; }
 
  private:
-  void add(const char* name, const std::string& value) {
+  void add(const std::string& name, const std::string& value) override {
     if (!line_.empty()) line_ += ' ';
     line_ += name;
     line_ += '=';

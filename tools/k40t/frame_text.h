@@ -6,6 +6,7 @@
 #include <string>
 
 #include "k40t_driver/protocol/codec_options.h"
+#include "k40t_driver/protocol/field_visit.h"
 #include "k40t_driver/protocol/frame.h"
 #include "k40t_driver/session/dispatcher.h"
 
@@ -23,6 +24,25 @@ std::string id_text(protocol::MessageId id);
 // `*decoded` (if given) tells whether the payload decoded.
 std::string frame_json(const protocol::FrameView& frame, uint64_t offset,
                        const protocol::CodecOptions& codec, bool* decoded = nullptr);
+
+// A message's fields as text, one add(name, value) per field: numbers in decimal (reals with
+// `real_format`, e.g. "%g"), booleans as 1/0. Text, enums and bytes are each view's own.
+class FieldTextSink : public protocol::FieldSink {
+ public:
+  explicit FieldTextSink(const char* real_format) : real_format_(real_format) {}
+  void integer(const char* name, int64_t value) override { add(name, std::to_string(value)); }
+  void unsigned_integer(const char* name, uint64_t value) override {
+    add(name, std::to_string(value));
+  }
+  void real(const char* name, double value) override;
+  void boolean(const char* name, bool value) override { add(name, value ? "1" : "0"); }
+
+ protected:
+  virtual void add(const std::string& name, const std::string& value) = 0;
+
+ private:
+  const char* real_format_;
+};
 
 // "name field=value field=value" with the message's fields, or "name: <decode error>"; long
 // lines are cut at `max_chars` with "...".

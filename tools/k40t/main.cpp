@@ -1,4 +1,5 @@
-// k40t: the K40T pod's command-line tool (ROS-free). Subcommands: decode, monitor, send, list.
+// k40t: the K40T pod's command-line tool (ROS-free). Subcommands: decode, monitor, send, list;
+// bag runs the ROS build's k40t_bag (cmd_bag.cpp).
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@ void print_tool_help() {
       "The K40T gimbal pod's protocol on the command line: decode captures, watch a link,\n"
       "send one request.\n\ncommands:\n");
   for (const Command* c : commands()) std::printf("  %-9s %s\n", c->name, c->summary);
+  std::printf("  %-9s %s\n", "bag", "recorded flights -> bags of the decoded topics (ROS build)");
   std::printf(
       "\n'k40t COMMAND --help' explains each. Links are URLs: serial:///dev/ttyUSB0?baud=115200,\n"
       "udp://HOST:PORT, tcp://HOST:PORT, pty:///tmp/k40t_pod ...\n"
@@ -34,6 +36,7 @@ int run(int argc, char** argv) {
     print_tool_help();
     return kExitOk;
   }
+  if (name == "bag") return run_bag_program(argc, argv);  // the ROS build's k40t_bag
   for (const Command* command : commands()) {
     if (name != command->name) continue;
     Result<ParsedArgs> args =

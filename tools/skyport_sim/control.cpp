@@ -1,10 +1,12 @@
 #include "control.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <vector>
 
+#include "k40t_driver/psdk/sim/adapter_table.h"
 #include "k40t_driver/sim/number_text.h"
 
 namespace k40t::skyport_sim {
@@ -15,6 +17,7 @@ using psdk::AckResult;
 using psdk::CommandKey;
 using psdk::Data;
 using psdk::sim::AdapterSimulator;
+using psdk::sim::table::Request;
 
 std::string hex(const uint8_t* bytes, size_t size) {
   std::string out;
@@ -35,11 +38,11 @@ std::string ack_reply(const AckResult& r) {
   return std::string("ok code=") + code + " data=" + hex(r.data.data() + 1, r.data.size - 1);
 }
 
-template <class Cmd>
-std::string request(AdapterSimulator& adapter, const Cmd& command) {
-  const Result<Data> data = psdk::encode_data(command);
-  if (!data) return "error " + data.error();
-  return ack_reply(adapter.session().request_raw(Cmd::key(), data->data(), data->size));
+// Command `key` with DATA written by the adapter's own writer (adapter_table.h, from the document).
+std::string request(AdapterSimulator& adapter, CommandKey key,
+                    const psdk::sim::table::Request& data = {}) {
+  const std::vector<uint8_t>& bytes = data.bytes();
+  return ack_reply(adapter.session().request_raw(key, bytes.data(), bytes.size()));
 }
 
 std::string report_reply(const psdk::sim::CheckReport& report) {
@@ -94,6 +97,12 @@ std::string fault(AdapterSimulator& adapter, const std::string& name, std::istri
     }
     return "ok " + name;
   }
+  if (name == "utc_late") {
+    const auto ms = number(in, "utc_late milliseconds", 1, 5000);
+    if (!ms) return "error " + ms.error();
+    adapter.delay_next_utc_push(std::chrono::milliseconds(static_cast<int64_t>(*ms)));
+    return "ok utc_late";
+  }
   if (name == "seq_jump") {
     const auto n = number(in, "seq_jump count", 1, 65535);
     if (!n) return "error " + n.error();
@@ -121,7 +130,7 @@ std::string control_help() {
          "zoom FACTOR (digital) | focal MM (optical) | gimbal PITCH ROLL YAW (deg) | "
          "gimbal_state | gimbal_return | power_off | unknown | send SET ID [HEX..] | "
          "transparent TEXT | floating | corrupt P | garbage P | drop_ack P | silence S | "
-         "disconnect S | seq_jump N | clear";
+         "disconnect S | seq_jump N | utc_late MS | clear";
 }
 
 std::string handle_control(AdapterSimulator& adapter, const std::string& line) {
@@ -146,41 +155,36 @@ std::string handle_control(AdapterSimulator& adapter, const std::string& line) {
   if (command == "photo") {
     std::string stop;
     in >> stop;
-    psdk::ShootPhoto photo;
-    photo.action = stop == "stop" ? psdk::ShootPhotoAction::kStop : psdk::ShootPhotoAction::kStart;
-    return request(adapter, photo);
+    // 3.4.3: 1 start, 0 stop.
+    return request(adapter, {0x04, 0x03}, Request().u8(stop == "stop" ? 0 : 1));
   }
   if (command == "record") {
     std::string action;
     in >> action;
     if (action != "start" && action != "stop") return "error record: expected start or stop";
-    psdk::RecordVideo record;
-    record.action = action == "start" ? psdk::RecordAction::kStart : psdk::RecordAction::kStop;
-    return request(adapter, record);
+    // 3.4.7: 1 start, 0 stop.
+    return request(adapter, {0x04, 0x07}, Request().u8(action == "start" ? 1 : 0));
   }
-  if (command == "record_state") return request(adapter, psdk::GetRecordState{});
+  if (command == "record_state") return request(adapter, {0x04, 0x08});
   if (command == "work_mode") {
     std::string mode;
     in >> mode;
     if (mode != "photo" && mode != "video") return "error work_mode: expected photo or video";
-    psdk::SetCameraWorkMode set;
-    set.mode =
-        mode == "photo" ? psdk::CameraWorkMode::kShootPhoto : psdk::CameraWorkMode::kRecordVideo;
-    return request(adapter, set);
+    // 3.4.1: 0 shoot photo, 1 record video.
+    return request(adapter, {0x04, 0x01}, Request().u8(mode == "photo" ? 0 : 1));
   }
   if (command == "zoom") {
     const auto factor = number(in, "zoom factor", 1, 1000);
     if (!factor) return "error " + factor.error();
-    psdk::SetDigitalZoomFactor zoom;
-    zoom.factor_x = static_cast<float>(*factor);
-    return request(adapter, zoom);
+    // 3.4.19: float factor.
+    return request(adapter, {0x04, 0x34}, Request().f32(static_cast<float>(*factor)));
   }
   if (command == "focal") {
     const auto mm = number(in, "focal length (mm)", 0.1, 6000);
     if (!mm) return "error " + mm.error();
-    psdk::SetOpticalZoomFocalLength focal;
-    focal.focal_length_mm = *mm;
-    return request(adapter, focal);
+    // 3.4.22: uint16 in 0.1 mm (P13).
+    return request(adapter, {0x04, 0x37},
+                   Request().u16(static_cast<uint16_t>(std::lround(*mm * 10.0))));
   }
   if (command == "gimbal") {
     const auto pitch = number(in, "pitch (deg)", -360, 360);
@@ -188,14 +192,15 @@ std::string handle_control(AdapterSimulator& adapter, const std::string& line) {
     const auto yaw = number(in, "yaw (deg)", -360, 360);
     if (!pitch || !roll || !yaw)
       return "error gimbal: expected PITCH ROLL YAW in degrees (DJI signs: pitch up, yaw right)";
-    psdk::ControlGimbalAngle angle;
-    angle.pitch_deg = static_cast<float>(*pitch);
-    angle.roll_deg = static_cast<float>(*roll);
-    angle.yaw_deg = static_cast<float>(*yaw);
-    return request(adapter, angle);
+    // 3.5.5: floats in degrees, pitch, roll, yaw.
+    return request(adapter, {0x05, 0x05},
+                   Request()
+                       .f32(static_cast<float>(*pitch))
+                       .f32(static_cast<float>(*roll))
+                       .f32(static_cast<float>(*yaw)));
   }
-  if (command == "gimbal_state") return request(adapter, psdk::GetGimbalState{});
-  if (command == "gimbal_return") return request(adapter, psdk::GimbalReturnHead{});
+  if (command == "gimbal_state") return request(adapter, {0x05, 0x01});
+  if (command == "gimbal_return") return request(adapter, {0x05, 0x03});
   if (command == "power_off") {
     adapter.announce_power_off();
     return "ok power-off announced in the next battery push";
@@ -235,7 +240,7 @@ std::string handle_control(AdapterSimulator& adapter, const std::string& line) {
   }
   if (command == "corrupt" || command == "garbage" || command == "drop_ack" ||
       command == "silence" || command == "disconnect" || command == "seq_jump" ||
-      command == "clear") {
+      command == "utc_late" || command == "clear") {
     return fault(adapter, command, in);
   }
   return "error unknown command '" + command + "' (try help)";

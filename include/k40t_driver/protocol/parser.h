@@ -43,7 +43,19 @@ class FrameParser {
   }
 
   // Parses `size` bytes; `on_frame` is called for each good frame, in order.
-  void feed(const uint8_t* data, size_t size, const FrameCallback& on_frame);
+  void feed(const uint8_t* data, size_t size, const FrameCallback& on_frame) {
+    // The usual case of small serial reads: a frame is arriving and this read does not complete
+    // it, so its bytes are only appended. Inline, because with 1-byte reads the call itself would
+    // cost more than the work.
+    const size_t have = end_ - begin_;
+    if (have != 0 && size < wanted_ - have && size <= kBufferSize - end_) {
+      stats_.bytes_received += size;
+      for (size_t i = 0; i < size; ++i) buffer_[end_ + i] = data[i];
+      end_ += size;
+      return;
+    }
+    feed_chunk(data, size, on_frame);
+  }
 
   // Forget any partial frame (after a reconnect; its bytes count as discarded) and the per-source
   // sequence history.
@@ -65,6 +77,8 @@ class FrameParser {
   // bytes it decided on. What follows is the start of a frame still arriving, which needs
   // wanted_ bytes in all.
   size_t parse(const uint8_t* bytes, size_t size, const FrameCallback& on_frame);
+  // feed() for every read that may decide something.
+  void feed_chunk(const uint8_t* data, size_t size, const FrameCallback& on_frame);
   bool checksum_matches(const uint8_t* frame, size_t size, CrcCoverage* matched);
   void note_coverage(CrcCoverage matched);
   void track_sequence(Address source, uint8_t sequence);

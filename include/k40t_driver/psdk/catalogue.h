@@ -23,6 +23,9 @@ struct CommandInfo {
   bool encrypted = false;  // the payload sends it AES-encrypted when a key is configured
   // Decodes plain DATA and reports its fields to `sink`; fails with a readable message.
   Status (*describe)(const uint8_t* data, size_t size, protocol::FieldSink& sink) = nullptr;
+  // Decodes plain DATA and encodes the result again (the golden frames check that the encoder
+  // gives back the bytes written by hand).
+  Result<Data> (*reencode)(const uint8_t* data, size_t size) = nullptr;
 };
 
 // psdk_crc.md: what the payload encrypts (transparent data 0x02/0x02, floating-window text
@@ -46,6 +49,13 @@ Status describe_data(const uint8_t* data, size_t size, protocol::FieldSink& sink
   if (!decoded) return decoded.status();
   describe(decoded.value(), sink);
   return Status::ok();
+}
+
+template <class T>
+Result<Data> reencode_data(const uint8_t* data, size_t size) {
+  Result<T> decoded = decode_data<T>(data, size);
+  if (!decoded) return decoded.status();
+  return encode_data(decoded.value());
 }
 
 }  // namespace k40t::psdk

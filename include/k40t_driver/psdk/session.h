@@ -25,6 +25,7 @@
 #include <thread>
 #include <type_traits>
 #include <unordered_map>
+#include <vector>
 
 #include "k40t_driver/psdk/aes.h"
 #include "k40t_driver/psdk/command.h"
@@ -84,6 +85,8 @@ class Session {
   // not decode is answered 0x01 and counted.
   template <class Cmd, class F>
   void handle(F handler);
+  // The dispatch table's keys: every (set, id) a handler is registered for, sorted.
+  std::vector<CommandKey> handled_commands() const;
   void on_frame(FrameHandler handler);      // every good frame received (raw rx)
   void on_frame_sent(SentHandler handler);  // every frame written (raw tx)
 

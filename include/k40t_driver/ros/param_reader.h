@@ -1,6 +1,7 @@
 // Reading private parameters with one line each: a wrong type or an out-of-range value records
 // the first error, naming the parameter, what it got and what it accepts; check error() once at
-// the end. Shared by the driver's and the video nodelet's parameter readers.
+// the end. Shared by the driver's and the video nodelet's parameter readers. Reads the parameter
+// server, or (offline, no master: `k40t bag`) a struct of values such as a YAML file's.
 #pragma once
 
 #include <array>
@@ -9,18 +10,36 @@
 #include <vector>
 
 #include <ros/node_handle.h>
+#include <xmlrpcpp/XmlRpcValue.h>
 
 namespace k40t::driver {
+
+// An offline parameter value as roscpp's getParam would convert it (an integer is also a double).
+bool from_xmlrpc(XmlRpc::XmlRpcValue& in, std::string& out);
+bool from_xmlrpc(XmlRpc::XmlRpcValue& in, bool& out);
+bool from_xmlrpc(XmlRpc::XmlRpcValue& in, int& out);
+bool from_xmlrpc(XmlRpc::XmlRpcValue& in, double& out);
+bool from_xmlrpc(XmlRpc::XmlRpcValue& in, std::vector<double>& out);
+template <class T>
+bool from_xmlrpc(XmlRpc::XmlRpcValue&, T&) {
+  return false;  // a type no offline reader needs yet: reported as a wrong type
+}
 
 // Collects the first error so that every parameter is read with one line and checked once.
 class ParamReader {
  public:
-  explicit ParamReader(const ros::NodeHandle& nh) : nh_(nh) {}
+  explicit ParamReader(const ros::NodeHandle& nh) : nh_(&nh), ns_(nh.getNamespace()) {}
+  // Offline: `params` is a struct of name -> value; `ns` names the parameters in errors.
+  ParamReader(const XmlRpc::XmlRpcValue& params, const std::string& ns)
+      : params_(params), ns_(ns) {}
 
   template <class T>
   T get(const std::string& name, const T& fallback) {
     T value = fallback;
-    if (nh_.hasParam(name) && !nh_.getParam(name, value)) fail(name, "has the wrong type");
+    const bool wrong_type = nh_ ? nh_->hasParam(name) && !nh_->getParam(name, value)
+                                : params_.getType() == XmlRpc::XmlRpcValue::TypeStruct &&
+                                      params_.hasMember(name) && !from_xmlrpc(params_[name], value);
+    if (wrong_type) fail(name, "has the wrong type");
     return value;
   }
   double number(const std::string& name, double fallback, double lo, double hi) {
@@ -42,12 +61,17 @@ class ParamReader {
     return {v[0], v[1], v[2]};
   }
   void fail(const std::string& name, const std::string& why) {
-    if (error_.empty()) error_ = "parameter " + nh_.resolveName(name) + " " + why;
+    if (error_.empty()) {
+      const std::string resolved = nh_ ? nh_->resolveName(name) : ns_ + "/" + name;
+      error_ = "parameter " + resolved + " " + why;
+    }
   }
   const std::string& error() const { return error_; }
 
  private:
-  const ros::NodeHandle& nh_;
+  const ros::NodeHandle* nh_ = nullptr;
+  XmlRpc::XmlRpcValue params_;
+  std::string ns_;
   std::string error_;
 };
 

@@ -8,6 +8,7 @@
 #include "k40t_driver/protocol/result.h"
 #include "k40t_driver/ros/conversions.h"
 #include "k40t_driver/ros/driver_options.h"
+#include "k40t_driver/ros/param_reader.h"
 
 namespace k40t::driver {
 
@@ -21,5 +22,7 @@ struct RosPodConfig {
 };
 
 Result<RosPodConfig> read_params(const ros::NodeHandle& private_nh);
+// The same from any ParamReader (offline: a YAML file's values, see `k40t bag`).
+Result<RosPodConfig> read_params(ParamReader& reader);
 
 }  // namespace k40t::driver

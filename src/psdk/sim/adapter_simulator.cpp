@@ -1,13 +1,14 @@
 #include "k40t_driver/psdk/sim/adapter_simulator.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 
-#include "k40t_driver/psdk/identity.h"
+#include "k40t_driver/psdk/sim/adapter_table.h"
 
 namespace k40t::psdk::sim {
 namespace {
-
-constexpr double kRadToDeg = 180.0 / M_PI;
 
 SessionOptions session_options(const AdapterOptions& o) {
   SessionOptions s;
@@ -22,18 +23,6 @@ std::unique_ptr<transport::Transport> wrap(std::unique_ptr<transport::Transport>
   auto faulty = std::make_unique<FaultyTransport>(std::move(inner), faults);
   *raw = faulty.get();
   return faulty;
-}
-
-int64_t unix_us_of(const DateTime& d) {
-  // Days from civil (Howard Hinnant), the inverse of utc_from_unix_us().
-  const int64_t y = d.year - (d.month <= 2 ? 1 : 0);
-  const int64_t era = (y >= 0 ? y : y - 399) / 400;
-  const int64_t yoe = y - era * 400;
-  const int64_t mp = d.month > 2 ? d.month - 3 : d.month + 9;
-  const int64_t doy = (153 * mp + 2) / 5 + d.day - 1;
-  const int64_t doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
-  const int64_t days = era * 146097 + doe - 719468;
-  return ((days * 24 + d.hour) * 60 + d.minute) * 60000000LL + d.second * 1000000LL;
 }
 
 }  // namespace
@@ -63,9 +52,12 @@ AdapterSimulator::AdapterSimulator(std::unique_ptr<transport::Transport> transpo
                        [this](const IncomingCommand& in) { return answer_get_position(in); });
   session_->on_command(FloatingWindowMessage::key(),
                        [this](const IncomingCommand& in) -> std::optional<Data> {
-                         auto m = decode_data<FloatingWindowMessage>(in.data);
+                         // 3.2.3: UTF-8 text ending with a NUL (read up to it, as the
+                         // adapter's own reading: adapter_table.h).
+                         const char* text = reinterpret_cast<const char*>(in.data.data());
                          std::lock_guard<std::mutex> lock(mutex_);
-                         if (m) floating_window_.push_back(m->text);
+                         if (in.data.size > 0)
+                           floating_window_.emplace_back(text, strnlen(text, in.data.size));
                          return std::nullopt;
                        });
   session_->on_command(TransparentToMobile::key(),
@@ -149,7 +141,37 @@ void AdapterSimulator::run() {
   }
 }
 
+void AdapterSimulator::delay_next_utc_push(std::chrono::milliseconds delay) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  utc_delay_ = delay;
+}
+
+void AdapterSimulator::push_or_delay_utc(const UtcTimePush& message) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (utc_delay_) {
+      late_utc_ = LateUtcPush{std::chrono::steady_clock::now() + *utc_delay_, message};
+      utc_delay_.reset();
+      return;
+    }
+  }
+  push(message);
+}
+
+void AdapterSimulator::send_late_utc_push() {
+  std::optional<UtcTimePush> due;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (late_utc_ && std::chrono::steady_clock::now() >= late_utc_->due) {
+      due = late_utc_->push;
+      late_utc_.reset();
+    }
+  }
+  if (due) push(*due);
+}
+
 void AdapterSimulator::send_due_pushes(double t_s) {
+  send_late_utc_push();
   const AirframeState s = airframe_now();
   for (Schedule& item : schedule_) {
     if (item.hz <= 0 || t_s < item.next_s) continue;
@@ -172,7 +194,7 @@ void AdapterSimulator::send_due_pushes(double t_s) {
     else if (name == AppDateTimePush::kName)
       push(app_date_time_push(s));
     else if (name == UtcTimePush::kName)
-      push(utc_time_push(s));
+      push_or_delay_utc(utc_time_push(s));
     else if (name == OtherPayloadTypePush::kName)
       push(OtherPayloadTypePush{});
     else if (name == RawGpsPush::kName) {
@@ -210,10 +232,10 @@ void AdapterSimulator::push(const Push& message) {
     if (!data) return;
     session_->request_async(Push::key(), data.value(), [this](const AckResult& r) {
       if (!r.received) return;
-      const Result<BatteryInfoAck> ack = decode_data<BatteryInfoAck>(r.data);
+      const Result<table::Reading> ack = table::read(Push::key(), r.data);  // the adapter's table
       std::lock_guard<std::mutex> lock(mutex_);
       ++stats_.battery_acks;
-      if (ack) stats_.last_power_off_ready = ack->power_off_ready;
+      if (ack) stats_.last_power_off_ready = ack->number("power_off_ready") == 1;
     });
   } else {
     sent = session_->send(message);
@@ -223,63 +245,7 @@ void AdapterSimulator::push(const Push& message) {
   ++stats_.pushes_sent[Push::kName];
 }
 
-// --- the payload's commands
-// -------------------------------------------------------------------------
-
-std::optional<Data> AdapterSimulator::answer_get_position(const IncomingCommand& in) {
-  const Result<GetPosition> request = decode_data<GetPosition>(in.data);
-  GetPositionAck ack;
-  if (!request || request->count > ack.points.size()) {
-    ack.code = AckCode::kError;
-  } else {
-    ack.count = request->count;
-    ack.task_index = request->task_index;
-    ack.base_time = request->base_time;
-    const int64_t base_us = unix_us_of(request->base_time);
-    for (size_t i = 0; i < request->count; ++i) {
-      const PositionRequestPoint& p = request->points[i];
-      const double t =
-          static_cast<double>(base_us + p.time_offset_us - options_.flight.start_utc_us) / 1e6;
-      const AirframeState s = flight_.state_at(t);
-      TargetPosition& out = ack.points[i];
-      out.event = p.event;
-      out.time_offset_us = p.time_offset_us;
-      out.solution = PositionSolution::kFixed;
-      out.uav_pitch_deg = static_cast<int16_t>(std::lround(s.pitch_rad * kRadToDeg));
-      out.uav_roll_deg = static_cast<int16_t>(std::lround(s.roll_rad * kRadToDeg));
-      out.uav_yaw_deg = static_cast<int16_t>(std::lround(s.yaw_rad * kRadToDeg));
-      out.longitude_deg = s.longitude_deg;
-      out.latitude_deg = s.latitude_deg;
-      out.height_m = s.altitude_msl_m;
-      out.longitude_std_dev = 0.02f;
-      out.latitude_std_dev = 0.02f;
-      out.height_std_dev = 0.03f;
-    }
-    // More than 4 points do not fit in DATA (docs/psdk.md): refuse rather than truncate.
-    if (!validate(ack)) {
-      ack = GetPositionAck{};
-      ack.code = AckCode::kError;
-    }
-  }
-  Result<Data> data = encode_data(ack);
-  if (!data) return std::nullopt;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (ack.code == AckCode::kOk) ++stats_.positions_answered;
-    if (roll(protocol_faults_.drop_ack_rate)) {
-      ++stats_.acks_dropped;
-      return std::nullopt;
-    }
-    if (protocol_faults_.delay_ack_ms > 0 && roll(protocol_faults_.delay_ack_rate)) {
-      ++stats_.acks_delayed;
-      const auto delay =
-          std::chrono::microseconds(static_cast<int64_t>(protocol_faults_.delay_ack_ms * 1000.0));
-      delayed_.push_back({std::chrono::steady_clock::now() + delay, in.header, data.value()});
-      return std::nullopt;
-    }
-  }
-  return data.value();
-}
+// --- the payload's commands: answer_get_position() in adapter_positioning.cpp -------------------
 
 void AdapterSimulator::flush_delayed_acks() {
   std::vector<DelayedAck> due;
@@ -297,23 +263,29 @@ void AdapterSimulator::flush_delayed_acks() {
 // --- identity verification -----------------------------------------------------------------------
 
 IdentityResult AdapterSimulator::verify_identity() {
-  IdentityVerification command;
+  // 3.1.1: 16 random bytes; the ACK is the code and MD5(app key + the random bytes) in bytes 2:17,
+  // read and checked here byte by byte (psdk_crc.md), not with the payload's identity code.
+  std::array<uint8_t, 16> random{};
   {
     std::lock_guard<std::mutex> lock(mutex_);
     std::uniform_int_distribution<int> nonzero(1, 255);  // all 16 bytes count (psdk_crc.md)
-    for (uint8_t& b : command.random) b = static_cast<uint8_t>(nonzero(random_));
+    for (uint8_t& b : random) b = static_cast<uint8_t>(nonzero(random_));
   }
   IdentityResult result;
-  AckResult raw;
-  const Result<IdentityVerificationAck> ack = session_->request(command, &raw);
-  if (!ack) {
-    result.detail = ack.error();
+  const AckResult raw = session_->request_raw({0x01, 0x01}, random.data(), random.size());
+  if (!raw.received) {
+    result.detail = raw.message;
   } else {
     result.answered = true;
-    result.passed = identity_answer_matches(options_.credentials.app_key, command, ack.value());
-    result.detail = result.passed               ? "payload proved the app key"
-                    : ack->code != AckCode::kOk ? "payload refused: " + ack_code_text(raw.code())
-                                                : "MD5 does not match the app key";
+    const std::string& key = options_.credentials.app_key;
+    const Md5Digest expected =
+        md5(reinterpret_cast<const uint8_t*>(key.data()), key.size(), random.data(), random.size());
+    const bool ok = raw.data.size >= 1 && raw.code() == 0x00;
+    result.passed = ok && raw.data.size >= 17 &&
+                    std::equal(expected.begin(), expected.end(), raw.data.data() + 1);
+    result.detail = result.passed ? "payload proved the app key"
+                    : !ok         ? "payload refused: " + ack_code_text(raw.code())
+                                  : "MD5 does not match the app key";
   }
   std::lock_guard<std::mutex> lock(mutex_);
   ++(result.passed ? stats_.identity_passed : stats_.identity_failed);

@@ -141,7 +141,12 @@ PodCall RosPodPort::set_photo_mode(uint8_t mode, uint8_t interval_s, uint8_t bur
 }
 
 PodCall RosPodPort::set_video_mode(bool video) {
-  return reconfigure_int("camera_mode", video);
+  PodCall call = reconfigure_int("camera_mode", video);
+  if (call.ok) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    video_mode_set_.accepted(video, std::chrono::steady_clock::now());
+  }
+  return call;
 }
 
 PodCall RosPodPort::set_metering(int metering) {
@@ -231,6 +236,7 @@ PodSnapshot RosPodPort::snapshot() const {
       (started && recent(record_commanded_at_)) || (said_recording && recent(record_status_at_));
   out.recording_known = out.recording || (!started && !said_recording);
   out.state_age_s = heard_at_.isZero() ? -1.0 : std::max(0.0, (now - heard_at_).toSec());
+  out.video_mode = video_mode_set_.answer(state_.video_mode, std::chrono::steady_clock::now());
   return out;
 }
 
@@ -277,6 +283,7 @@ void RosPodPort::on_camera(const k40t_driver::CameraStatus::ConstPtr& msg) {
                   (!state_.have_camera || state_.sd_state != msg->sd_state);
     state_.have_camera = true;
     state_.video_mode = msg->mode == k40t_driver::CameraStatus::MODE_VIDEO;
+    video_mode_set_.reported(state_.video_mode, std::chrono::steady_clock::now());
     state_.photo_mode = msg->photo_mode;
     state_.burst_count = msg->burst_count;
     state_.timelapse_interval_s = msg->timelapse_interval_s;

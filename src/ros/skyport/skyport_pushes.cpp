@@ -1,4 +1,5 @@
 // The aircraft's data pushes (0x03) as ROS messages, and the pod fed from them (feed_pod).
+#include <chrono>
 #include <cmath>
 
 #include <geometry_msgs/QuaternionStamped.h>
@@ -202,9 +203,21 @@ void SkyportRos::register_pushes() {
     }
     const ros::Time received = ros::Time::now();
     sensor_msgs::TimeReference out;
-    out.header.stamp = received;
+    out.time_ref = unix_time(p.time, p.microsecond);
     if (config_.pps_topic.empty()) {
-      ++utc_pushes_unchecked_;  // no PPS edge to check against: stamped at reception
+      // No PPS edge to measure against: the rule relative to the most punctual push (pps_rule.h).
+      const double steady_s =
+          std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+              .count();
+      const UtcPushLateness::Judgement lateness =
+          utc_lateness_.judge(out.time_ref.toSec(), steady_s);
+      if (lateness.verdict != UtcPushVerdict::kUse) {  // 3.3.10: surely over 500 ms after its edge
+        ++utc_pushes_late_;
+        return;
+      }
+      ++utc_pushes_unchecked_;
+      // Its edge was at least the excess delay before its receipt.
+      out.header.stamp = received - ros::Duration(lateness.excess_delay_s);
     } else {
       std::optional<ros::Time> edge;
       {
@@ -219,7 +232,6 @@ void SkyportRos::register_pushes() {
       }
       out.header.stamp = *edge;  // the instant the UTC time describes, on this computer's clock
     }
-    out.time_ref = unix_time(p.time, p.microsecond);
     {
       std::lock_guard<std::mutex> lock(mutex_);
       newest_utc_ns_ = static_cast<int64_t>(out.time_ref.toNSec());

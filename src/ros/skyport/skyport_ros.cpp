@@ -1,6 +1,7 @@
 #include "k40t_driver/ros/skyport/skyport_ros.h"
 
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 
 #include <geometry_msgs/QuaternionStamped.h>
@@ -85,6 +86,7 @@ SkyportRos::SkyportRos(ros::NodeHandle nh, ros::NodeHandle private_nh, SkyportCo
   bridge_ptr_ = bridge_.get();
   register_pushes();
   register_transparent();
+  publish_handled_commands();
   session_->on_frame([this](const FrameView&) {
     std::lock_guard<std::mutex> lock(mutex_);
     last_frame_ = std::chrono::steady_clock::now();
@@ -140,6 +142,16 @@ void SkyportRos::advertise() {
   to_mobile_ = nh_.subscribe("skyport/transparent/to_mobile", 10, &SkyportRos::on_to_mobile, this);
   to_onboard_ =
       nh_.subscribe("skyport/transparent/to_onboard", 10, &SkyportRos::on_to_onboard, this);
+}
+
+void SkyportRos::publish_handled_commands() {
+  std::vector<std::string> keys;
+  for (const CommandKey key : session_->handled_commands()) {
+    char text[16];
+    std::snprintf(text, sizeof(text), "0x%02X/0x%02X", key.set, key.id);
+    keys.emplace_back(text);
+  }
+  private_nh_.setParam("handled_commands", keys);
 }
 
 void SkyportRos::register_transparent() {
@@ -231,8 +243,9 @@ void SkyportRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   status.add("pod state age (s)", pod_age_s);
   status.add("pod state stale", pod_stale);
   status.add("UTC pushes dropped (invalid)", utc_pushes_invalid_.load());
-  status.add("UTC pushes dropped (over 500 ms after the PPS edge)", utc_pushes_late_.load());
-  status.add("UTC pushes stamped at reception (no PPS source)", utc_pushes_unchecked_.load());
+  status.add("UTC pushes dropped (over 500 ms after their edge)", utc_pushes_late_.load());
+  status.add("UTC pushes used without PPS (checked against the most punctual)",
+             utc_pushes_unchecked_.load());
 }
 
 }  // namespace k40t::driver::skyport

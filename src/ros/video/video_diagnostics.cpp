@@ -10,7 +10,9 @@ VideoDiagnostics::VideoDiagnostics(const ros::NodeHandle& nh, const ros::NodeHan
     : config_(config),
       stats_(std::move(stats)),
       published_(std::move(published)),
-      updater_(nh, private_nh),
+      // Named after the node or nodelet ("pod_a/video: video stream"), not the process: the
+      // default (the manager's name) would be the same for two pods' nodelets in one manager.
+      updater_(nh, private_nh, private_nh.getNamespace()),
       last_report_(std::chrono::steady_clock::now()) {
   updater_.setHardwareID(config.capture.url);
   updater_.add("video stream", this, &VideoDiagnostics::report);

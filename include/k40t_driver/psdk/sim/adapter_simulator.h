@@ -17,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <random>
 #include <string>
 #include <thread>
@@ -110,6 +111,9 @@ class AdapterSimulator {
   void disconnect_for(std::chrono::milliseconds duration);
   // Our following commands skip `count` sequence numbers (one gap).
   void jump_sequence(uint16_t count);
+  // The next UTC push (3.3.10) goes out `delay` after its turn, with the same content: a push
+  // late for its PPS edge, which the payload must drop when over 500 ms.
+  void delay_next_utc_push(std::chrono::milliseconds delay);
   // From now on the battery push announces power-off (and asks the payload to get ready).
   void announce_power_off();
 
@@ -122,6 +126,8 @@ class AdapterSimulator {
  private:
   void run();
   void send_due_pushes(double t_s);
+  void push_or_delay_utc(const UtcTimePush& message);
+  void send_late_utc_push();
   void check_interval_mode(CheckReport& report);  // part of check_camera()
   template <class Push>
   void push(const Push& message);
@@ -144,6 +150,12 @@ class AdapterSimulator {
   std::vector<std::string> floating_window_;
   std::optional<double> power_off_from_s_;
   uint16_t raw_gps_counter_ = 0;
+  std::optional<std::chrono::milliseconds> utc_delay_;  // for the next UTC push
+  struct LateUtcPush {
+    std::chrono::steady_clock::time_point due;
+    UtcTimePush push;
+  };
+  std::optional<LateUtcPush> late_utc_;
   struct DelayedAck {
     std::chrono::steady_clock::time_point due;
     FrameHeader header;

@@ -24,6 +24,7 @@
 #include "k40t_driver/PhotoStatus.h"
 #include "k40t_driver/RecordStatus.h"
 #include "k40t_driver/VisibleStatus.h"
+#include "k40t_driver/ros/skyport/commanded_value.h"
 #include "k40t_driver/ros/skyport/pod_port.h"
 
 namespace k40t::driver::skyport {
@@ -84,6 +85,8 @@ class RosPodPort : public PodPort {
   ros::Time record_status_at_;
   ros::Time record_commanded_at_;  // a record start the pod accepted, not yet confirmed
   ros::Time heard_at_;             // the newest status message from the pod
+  // The work mode the pod accepted, answered until camera/status (1 Hz) says so too.
+  CommandedValue<bool> video_mode_set_{std::chrono::seconds(3)};
 };
 
 }  // namespace k40t::driver::skyport

@@ -22,6 +22,7 @@
 #include "k40t_driver/GetPosition.h"
 #include "k40t_driver/protocol/result.h"
 #include "k40t_driver/psdk/session.h"
+#include "k40t_driver/ros/skyport/pps_rule.h"
 #include "k40t_driver/ros/skyport/ros_pod_port.h"
 #include "k40t_driver/ros/skyport/skyport_bridge.h"
 #include "k40t_driver/ros/skyport/skyport_config.h"
@@ -39,6 +40,9 @@ class SkyportRos {
   void advertise();
   void register_pushes();
   void register_transparent();
+  // ~handled_commands: the dispatch table's keys ("0x03/0x0A"), for the golden-frame coverage
+  // check of the rostest (test_skyport.py).
+  void publish_handled_commands();
   void on_to_mobile(const std_msgs::UInt8MultiArray::ConstPtr& msg);
   void on_to_onboard(const std_msgs::UInt8MultiArray::ConstPtr& msg);
   bool on_get_position(k40t_driver::GetPosition::Request& req,
@@ -71,9 +75,11 @@ class SkyportRos {
   uint16_t next_event_index_ = 0;
   std::mutex position_mutex_;  // one get_position at a time (rate limit, event indices)
   std::atomic<uint64_t> utc_pushes_invalid_{0};
-  std::atomic<uint64_t> utc_pushes_late_{0};       // 3.3.10's 500 ms rule (pps_topic set)
-  std::atomic<uint64_t> utc_pushes_unchecked_{0};  // no pps_topic: the rule cannot be applied
-  std::optional<ros::Time> last_pps_edge_;         // local time of the newest PPS rising edge
+  std::atomic<uint64_t> utc_pushes_late_{0};  // 3.3.10's 500 ms rule (with or without PPS)
+  // No pps_topic: used after the rule relative to the most punctual push (pps_rule.h).
+  std::atomic<uint64_t> utc_pushes_unchecked_{0};
+  UtcPushLateness utc_lateness_;            // session I/O thread only
+  std::optional<ros::Time> last_pps_edge_;  // local time of the newest PPS rising edge
   ros::Subscriber pps_;
 };
 

@@ -1,5 +1,5 @@
 // /diagnostics of the video stream (diagnostic_updater, updated every ~diagnostic_period on a
-// steady timer), one status "video stream":
+// steady timer), one status "<node or nodelet name>: video stream":
 //   ERROR  not streaming (connecting, or the stream failed), or the newest frame is older than
 //          stale_after — a killed or frozen stream is ERROR within stale_after + one period;
 //   WARN   frame rate below half the expected one;

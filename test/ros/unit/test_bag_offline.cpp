@@ -1,0 +1,148 @@
+// The offline pieces of `k40t bag`: the driver's YAML parameter file read without a master, and
+// the bag sink's topic names, header.seq and receive times.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include <rosbag/view.h>
+
+#include "k40t_driver/ros/bag/bag_topic_sink.h"
+#include "k40t_driver/ros/bag/yaml_params.h"
+#include "k40t_driver/ros/decoded_topics.h"
+#include "k40t_driver/ros/ros_params.h"
+
+namespace k40t::driver {
+namespace {
+
+class TempFile {
+ public:
+  explicit TempFile(const std::string& suffix)
+      : path_("/tmp/k40t_bag_offline_" + std::to_string(::getpid()) + suffix) {}
+  ~TempFile() { std::remove(path_.c_str()); }
+  const std::string& path() const { return path_; }
+  void write(const std::string& text) const { std::ofstream(path_) << text; }
+
+ private:
+  std::string path_;
+};
+
+Result<RosPodConfig> config_from(const std::string& yaml) {
+  TempFile file(".yaml");
+  file.write(yaml);
+  Result<XmlRpc::XmlRpcValue> params = load_yaml_params(file.path());
+  if (!params) return Result<RosPodConfig>::fail(params.error());
+  ParamReader reader(params.value(), "~");
+  return read_params(reader);
+}
+
+TEST(YamlParams, ValuesAreTypedAsRosparamLoadsThem) {
+  Result<RosPodConfig> c = config_from(
+      "frame_prefix: left_\nbaud: 57600\npublish_tf: false\ncrc_coverage: whole_frame\n"
+      "tele_offset: [1, 0.5, -2]\nlaser_max_range: 800\ntime_sync_period: 2.5\n");
+  ASSERT_TRUE(c) << c.error();
+  EXPECT_EQ(c->ids.base, "left_base_link");
+  EXPECT_EQ(c->driver.baud, 57600);
+  EXPECT_FALSE(c->publish_tf);
+  EXPECT_EQ(c->driver.session.crc_coverage, protocol::CrcCoverage::kWholeFrame);
+  EXPECT_EQ(c->geometry.tele, (std::array<double, 3>{1.0, 0.5, -2.0}));  // integers read as reals
+  EXPECT_FLOAT_EQ(c->range.max_range, 800.0f);
+  EXPECT_DOUBLE_EQ(c->driver.time_sync_period_s, 2.5);
+}
+
+TEST(YamlParams, AbsentParametersKeepTheDriversDefaults) {
+  Result<RosPodConfig> c = config_from("device: serial:///dev/ttyUSB1\n");
+  ASSERT_TRUE(c) << c.error();
+  EXPECT_EQ(c->ids.base, "k40t_base_link");
+  EXPECT_TRUE(c->publish_tf);
+  EXPECT_EQ(c->driver.session.codec.ack_byte_order, protocol::ByteOrder::kBig);
+}
+
+TEST(YamlParams, BadValuesFailNamingTheParameter) {
+  Result<RosPodConfig> wrong_type = config_from("baud: fast\n");
+  ASSERT_FALSE(wrong_type);
+  EXPECT_EQ(wrong_type.error(), "parameter ~/baud has the wrong type");
+  Result<RosPodConfig> quoted_number = config_from("publish_tf: \"true\"\n");
+  ASSERT_FALSE(quoted_number);  // a quoted scalar is a string, as for rosparam
+  EXPECT_EQ(quoted_number.error(), "parameter ~/publish_tf has the wrong type");
+  Result<RosPodConfig> out_of_range = config_from("laser_max_range: -1\n");
+  ASSERT_FALSE(out_of_range);
+  EXPECT_NE(out_of_range.error().find("parameter ~/laser_max_range must be"), std::string::npos)
+      << out_of_range.error();
+  Result<RosPodConfig> short_list = config_from("laser_offset: [1, 2]\n");
+  ASSERT_FALSE(short_list);
+  EXPECT_NE(short_list.error().find("laser_offset must be a list of 3 numbers"), std::string::npos);
+}
+
+TEST(YamlParams, UnreadableFilesFailWithTheirPath) {
+  Result<XmlRpc::XmlRpcValue> missing = load_yaml_params("/nonexistent/k40t.yaml");
+  ASSERT_FALSE(missing);
+  EXPECT_NE(missing.error().find("/nonexistent/k40t.yaml"), std::string::npos);
+  TempFile file(".yaml");
+  file.write("baud: [1, 2\n");
+  EXPECT_FALSE(load_yaml_params(file.path()));
+  file.write("- a list\n- not a mapping\n");
+  Result<XmlRpc::XmlRpcValue> list = load_yaml_params(file.path());
+  ASSERT_FALSE(list);
+  EXPECT_NE(list.error().find("not a mapping"), std::string::npos);
+}
+
+TEST(BagTopicSink, NamesSeqAndTimesAreThoseOfALiveRecording) {
+  TempFile file(".bag");
+  {
+    rosbag::Bag bag(file.path(), rosbag::bagmode::Write);
+    BagTopicSink sink(bag, "/pod1");
+    auto joints = sink.advertise<sensor_msgs::JointState>("joint_states", 10, false);
+    auto range = sink.advertise<sensor_msgs::Range>("laser/range", 10, false);
+    auto range_again = sink.advertise<sensor_msgs::Range>("laser/range", 10, false);
+    auto tf = sink.advertise<tf2_msgs::TFMessage>("/tf", 100, false);
+    sensor_msgs::JointState j;
+    j.header.seq = 77;  // overwritten, as roscpp does
+    j.header.stamp = ros::Time(5, 6);
+    // Distinct receive times: rosbag reads equal times in no set order across topics.
+    sink.set_receive_time(ros::Time(10, 0));
+    joints(j);
+    sensor_msgs::Range r;
+    sink.set_receive_time(ros::Time(11, 0));
+    range(r);
+    sink.set_receive_time(ros::Time(12, 0));
+    joints(j);
+    sink.set_receive_time(ros::Time(13, 0));
+    range_again(r);  // one topic, one counter, however often advertised
+    sink.set_receive_time(ros::Time(14, 0));
+    tf(tf2_msgs::TFMessage());
+    EXPECT_EQ(sink.written(), 5u);
+  }
+  rosbag::Bag bag(file.path(), rosbag::bagmode::Read);
+  rosbag::View view(bag);
+  std::vector<std::string> topics;
+  std::vector<uint32_t> seqs;
+  std::vector<uint32_t> seconds;
+  for (const rosbag::MessageInstance& m : view) {
+    topics.push_back(m.getTopic());
+    seconds.push_back(m.getTime().sec);
+    if (auto js = m.instantiate<sensor_msgs::JointState>()) {
+      seqs.push_back(js->header.seq);
+      EXPECT_EQ(js->header.stamp, ros::Time(5, 6));
+    } else if (auto rg = m.instantiate<sensor_msgs::Range>()) {
+      seqs.push_back(rg->header.seq);
+    }
+  }
+  EXPECT_EQ(topics, (std::vector<std::string>{"/pod1/joint_states", "/pod1/laser/range",
+                                              "/pod1/joint_states", "/pod1/laser/range", "/tf"}));
+  EXPECT_EQ(seqs, (std::vector<uint32_t>{0, 0, 1, 1}));
+  EXPECT_EQ(seconds, (std::vector<uint32_t>{10, 11, 12, 13, 14}));
+}
+
+TEST(BagTopicSink, TheRootNamespaceResolvesToAbsoluteNames) {
+  TempFile file(".bag");
+  rosbag::Bag bag(file.path(), rosbag::bagmode::Write);
+  EXPECT_EQ(BagTopicSink(bag, "/").resolve("raw/rx"), "/raw/rx");
+  EXPECT_EQ(BagTopicSink(bag, "/a/b").resolve("gimbal/status"), "/a/b/gimbal/status");
+  EXPECT_EQ(BagTopicSink(bag, "/a").resolve("/tf"), "/tf");
+}
+
+}  // namespace
+}  // namespace k40t::driver
