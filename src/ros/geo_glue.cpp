@@ -1,5 +1,7 @@
 #include "k40t_driver/ros/geo_glue.h"
 
+#include <cmath>
+
 #include <tf2/LinearMath/Quaternion.h>
 #include <tf2/LinearMath/Vector3.h>
 
@@ -52,6 +54,37 @@ sensor_msgs::NavSatFix to_nav_sat_fix(const geo::Located& located, const ros::Ti
   for (size_t i = 0; i < 9; ++i) fix.position_covariance[i] = located.covariance[i];
   fix.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_KNOWN;
   return fix;
+}
+
+k40t_driver::LaserTarget to_laser_target(const protocol::TargetGpsAck& target,
+                                         const ros::Time& stamp, const std::string& frame_id,
+                                         const VehicleState& vehicle) {
+  k40t_driver::LaserTarget report;
+  report.header.stamp = stamp;
+  report.header.frame_id = frame_id;
+  report.code = static_cast<uint16_t>(target.code);
+  report.mount_mask = target.mount_mask;
+  report.pod_utc.fromNSec(target.utc_time_ms * 1000000);
+  report.latitude = target.latitude_deg;
+  report.longitude = target.longitude_deg;
+  report.relative_height = target.relative_height_m;
+  report.altitude_msl = target.altitude_m;
+  const Result<double> h = geo::Geoid::egm96().ellipsoid_from_msl(
+      target.latitude_deg, target.longitude_deg, target.altitude_m);
+  report.altitude = h ? h.value() : std::nan("");
+  report.position_covariance.fill(-1.0);
+  if (target.code != protocol::ResponseCode::kOk || !h || !vehicle.has_fix) return report;
+  const Result<geo::LocalFrame> frame =
+      geo::LocalFrame::at({vehicle.latitude_deg, vehicle.longitude_deg, vehicle.altitude_m});
+  if (!frame) return report;
+  const geo::Enu d = frame->to_enu({target.latitude_deg, target.longitude_deg, h.value()});
+  const double slant = std::sqrt(d.east * d.east + d.north * d.north + d.up * d.up);
+  const geo::RayUncertainty u;
+  const double angular = slant * u.attitude_sigma_deg * M_PI / 180.0;
+  const double extra = angular * angular + u.range_sigma_m * u.range_sigma_m;
+  for (size_t i = 0; i < 9; ++i) report.position_covariance[i] = vehicle.position_covariance[i];
+  for (size_t i = 0; i < 3; ++i) report.position_covariance[i * 4] += extra;
+  return report;
 }
 
 geo::RayUncertainty read_uncertainty(const ros::NodeHandle& private_nh) {

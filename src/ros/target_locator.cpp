@@ -5,7 +5,6 @@
 #include <geometry_msgs/PointStamped.h>
 #include <ros/console.h>
 
-#include "k40t_driver/LaserTarget.h"
 #include "k40t_driver/protocol/messages/laser.h"
 #include "k40t_driver/ros/geo_glue.h"
 
@@ -40,7 +39,6 @@ TargetLocator::TargetLocator(ros::NodeHandle nh, const ros::NodeHandle& private_
   private_nh.param("laser_axis_tolerance_px", laser_axis_tolerance_px_, laser_axis_tolerance_px_);
 
   target_local_ = nh.advertise<sensor_msgs::NavSatFix>("laser/target_local", 10);
-  target_report_ = nh.advertise<k40t_driver::LaserTarget>("laser/target_report", 10);
   located_point_ = nh.advertise<geometry_msgs::PointStamped>("located_point", 1, true);
   located_fix_ = nh.advertise<sensor_msgs::NavSatFix>("located_fix", 1, true);
   auto range = [this](const auto& m, StampNs s) {
@@ -79,35 +77,18 @@ void TargetLocator::on_range(double distance_m, StampNs stamp) {
   last_error_.clear();
   ++located_;
   last_local_ = {located->position, stamp};
-  last_local_covariance_ = located->covariance;
   compare_locked();
   target_local_.publish(to_nav_sat_fix(located.value(), t, ids_.laser));
 }
 
 void TargetLocator::on_pod_target(const protocol::TargetGpsAck& target, StampNs stamp) {
-  k40t_driver::LaserTarget report;
-  report.header.stamp = to_ros_time(stamp);
-  report.header.frame_id = ids_.laser;
-  report.code = static_cast<uint16_t>(target.code);
-  report.mount_mask = target.mount_mask;
-  report.pod_utc.fromNSec(target.utc_time_ms * 1000000);
-  report.latitude = target.latitude_deg;
-  report.longitude = target.longitude_deg;
-  report.relative_height = target.relative_height_m;
-  report.altitude_msl = target.altitude_m;
+  if (target.code != protocol::ResponseCode::kOk) return;
   const Result<double> h = geo::Geoid::egm96().ellipsoid_from_msl(
       target.latitude_deg, target.longitude_deg, target.altitude_m);
-  report.altitude = h ? h.value() : std::nan("");
-  report.position_covariance.fill(-1.0);
+  if (!h) return;
   std::lock_guard<std::mutex> lock(mutex_);
-  if (target.code == protocol::ResponseCode::kOk && h) {
-    last_pod_ = {{target.latitude_deg, target.longitude_deg, h.value()}, stamp};
-    compare_locked();
-    if (last_local_ && std::llabs(last_local_->second - stamp) <= kSecondNs) {
-      for (size_t i = 0; i < 9; ++i) report.position_covariance[i] = last_local_covariance_[i];
-    }
-  }
-  target_report_.publish(report);
+  last_pod_ = {{target.latitude_deg, target.longitude_deg, h.value()}, stamp};
+  compare_locked();
 }
 
 void TargetLocator::compare_locked() {

@@ -1,6 +1,4 @@
 // The driver's own geolocation (docs/geo.md):
-//   laser/target_report k40t_driver/LaserTarget  every field of the pod's ACK 0x010320, with
-//                       laser/target_local's covariance when one is at most 1 s apart
 //   laser/target_local  sensor_msgs/NavSatFix  where the laser spot is: each laser range (ACK
 //                       0x010400, status 0x020406) along the laser frame's x axis, taken to the
 //                       vehicle frame by TF (~vehicle_frame, default the pod's base link) and to
@@ -54,7 +52,7 @@ class TargetLocator {
   double laser_axis_tolerance_px_ = 8;
   tf2_ros::Buffer tf_;
   tf2_ros::TransformListener listener_;
-  ros::Publisher target_local_, target_report_, located_point_, located_fix_;
+  ros::Publisher target_local_, located_point_, located_fix_;
   ros::Subscriber camera_info_;
   ros::ServiceServer locate_pixel_;
 
@@ -62,7 +60,6 @@ class TargetLocator {
   std::optional<sensor_msgs::CameraInfo> camera_info_msg_;
   std::optional<std::pair<double, StampNs>> last_range_;
   std::optional<std::pair<geo::Geodetic, StampNs>> last_local_, last_pod_;
-  geo::Covariance3 last_local_covariance_{};
   std::optional<double> disagreement_m_;
   uint64_t located_ = 0;
   std::string last_error_;
