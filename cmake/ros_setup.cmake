@@ -15,6 +15,9 @@ add_action_files(FILES ${K40T_ACTION_FILES})  # the long operations (docs/ros_in
 generate_messages(DEPENDENCIES std_msgs sensor_msgs geometry_msgs actionlib_msgs)
 
 generate_dynamic_reconfigure_options(cfg/K40t.cfg)
+# K40t.cfg reads the enum names from cfg/setting_enums.txt: regenerate when it changes.
+add_custom_command(OUTPUT ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_INCLUDE_DESTINATION}/K40tConfig.h APPEND
+                   DEPENDS ${PROJECT_SOURCE_DIR}/cfg/setting_enums.txt)
 
 catkin_package(
   INCLUDE_DIRS include

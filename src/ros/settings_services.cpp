@@ -16,11 +16,11 @@ SettingsServices::SettingsServices(ros::NodeHandle nh, SettingsSync* settings)
     : nh_(nh), settings_(settings) {
   advertise_service<k40t_driver::SetPalette>(
       nh_, servers_, "set_palette", [this](auto& req, auto& res) {
-        fill(res, write("palette", [&](Config& c) { c.palette = req.palette; }));
+        fill(res, write("set_palette", [&](Config& c) { c.palette = req.palette; }));
       });
   advertise_service<k40t_driver::SetPhotoMode>(
       nh_, servers_, "set_photo_mode", [this](auto& req, auto& res) {
-        fill(res, write("photo_mode", [&](Config& c) {
+        fill(res, write("set_photo_mode", [&](Config& c) {
                c.photo_mode = req.mode;
                c.timelapse_interval = req.timelapse_interval_s;
                c.burst_count = req.burst_count;
@@ -35,10 +35,13 @@ SettingsServices::SettingsServices(ros::NodeHandle nh, SettingsSync* settings)
                                        });
 }
 
-session::AckResult SettingsServices::write(const std::string& name,
+session::AckResult SettingsServices::write(const std::string& service,
                                            const std::function<void(Config&)>& edit) {
   if (!settings_) return session::AckResult::not_sent(kNoPod);
-  return settings_->write(name, edit);
+  // The settings table says which setting the service writes.
+  const SettingBinding* binding = binding_for_service(service);
+  if (!binding) return session::AckResult::not_sent("no setting is written by " + service);
+  return settings_->write(binding->name, edit);
 }
 
 }  // namespace k40t::driver

@@ -110,14 +110,13 @@ SettingsState SettingsSync::read_from_pod() {
   {
     boost::recursive_mutex::scoped_lock server_lock(server_mutex_);
     Config config = current_;
-    if (settings.thermal) absorb(config, *settings.thermal);
-    if (settings.visible) absorb(config, *settings.visible);
-    if (camera) absorb(config, *camera);
-    if (gimbal) absorb(config, *gimbal);
+    absorb(config, SettingReports{settings.thermal ? &*settings.thermal : nullptr,
+                                  settings.visible ? &*settings.visible : nullptr,
+                                  camera ? &*camera : nullptr, gimbal ? &*gimbal : nullptr});
     current_ = config;
     server_->updateConfig(config);
     for (const SettingBinding& binding : setting_bindings()) {
-      if (binding.readable || set_by_user_.count(binding.name) == 0) continue;
+      if (binding.readable() || set_by_user_.count(binding.name) == 0) continue;
       const session::AckResult result = binding.apply(driver_, current_);
       if (!result.ok()) message += "; " + binding.name + " not restored: " + result.message;
     }

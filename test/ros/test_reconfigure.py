@@ -2,6 +2,8 @@
 """dynamic_reconfigure against the simulated pod: every parameter round-trips (set, then read
 back from the pod after a reconnect), a refused change is reverted, and the pod's own settings
 become the configuration on connect."""
+import os
+import re
 import sys
 import time
 import unittest
@@ -16,9 +18,8 @@ from k40t_test_support import WARN, Diagnostics, Recorder, SimControl, name, ser
 
 PKG = "k40t_driver"
 
-# A value different from the simulator's default for every parameter, grouped by what the pod
-# reports back: 0x000100, 0x000200, the camera status report and the gimbal status report.
-READ_BACK = {
+# A value different from the simulator's default for every parameter.
+VALUES = {
     "palette": 9, "thermal_zoom": 4, "thermal_measurement": False, "thermal_gain": 1,
     "thermal_sharpness": 33, "thermal_brightness": 61, "thermal_contrast": 72,
     "thermal_denoise": True, "thermal_denoise_level": 44, "thermal_enhancement": 6,
@@ -30,9 +31,32 @@ READ_BACK = {
     "ae_lock": True, "metering": 3, "osd_watermark": True,
     "camera_mode": 1, "image_mode": 7, "stream_bitrate": 6, "stream_encoding": 1,
     "photo_mode": 2, "timelapse_interval": 30, "burst_count": 5, "stabilisation": True,
+    "pitch_dial_speed": 100, "yaw_dial_speed": 25, "periodic_ranging": True, "thermal_overlay": True,
 }
-# Parameters the pod cannot report: checked by their ACK only (the value stays as set).
-WRITE_ONLY = {"pitch_dial_speed": 100, "yaw_dial_speed": 25, "periodic_ranging": True, "thermal_overlay": True}
+# Not set: the strong-light suppression excludes the backlight compensation set above; the only
+# other stream resolution, 720p, is one the document marks unsupported (refused before sending).
+NOT_SET = {"strong_light_suppression", "strong_light_level", "stream_resolution"}
+
+
+def write_only_parameters():
+    """The cfg parameters of the write-only rows of the settings table in docs/ros_interface.md
+    (generated from the driver's settings table and checked against it by a unit test)."""
+    doc = os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "..", "docs", "ros_interface.md")
+    with open(doc) as f:
+        text = f.read()
+    table = text.split("<!-- settings table begin")[1].split("<!-- settings table end")[0]
+    rows = [[cell.strip() for cell in line.split("|")[1:-1]] for line in table.splitlines()[3:]]
+    names = set()
+    for row in rows:
+        if row[3] == "write-only":
+            names.update(re.findall(r"`(\w+)`", row[1]))
+    return names
+
+
+# Parameters the pod cannot report: checked by their ACK only (the value stays as set); the others
+# are read back from the pod's reports (0x000100, 0x000200, the camera and the gimbal status).
+WRITE_ONLY = {k: v for k, v in VALUES.items() if k in write_only_parameters()}
+READ_BACK = {k: v for k, v in VALUES.items() if k not in WRITE_ONLY}
 
 
 class Reconfigure(unittest.TestCase):
@@ -58,6 +82,11 @@ class Reconfigure(unittest.TestCase):
     def refusal_reported(self, text):
         """Diagnostics (published every 0.25 s) name the refused parameter."""
         return wait_until(lambda: (self.diagnostics.value("settings", "last refusal") or "").startswith(text), 3.0)
+
+    def test_every_parameter_has_a_value_to_round_trip(self):
+        described = {p["name"] for p in self.client.get_parameter_descriptions()}
+        self.assertEqual(set(VALUES) | NOT_SET, described)
+        self.assertTrue(WRITE_ONLY, "the docs' settings table lists no write-only setting")
 
     def test_every_parameter_round_trips_through_the_pod(self):
         # One at a time, so a refusal names its parameter.

@@ -19,7 +19,8 @@ class SettingsServices {
   SettingsServices(ros::NodeHandle nh, SettingsSync* settings);
 
  private:
-  session::AckResult write(const std::string& name, const std::function<void(Config&)>& edit);
+  // Writes the setting the table assigns to `service` (SettingBinding::service).
+  session::AckResult write(const std::string& service, const std::function<void(Config&)>& edit);
 
   ros::NodeHandle nh_;
   SettingsSync* settings_;  // nullptr in replay mode

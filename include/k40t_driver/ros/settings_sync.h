@@ -7,7 +7,8 @@
 //     reads 0x000100 and 0x000200 and the next camera (0x000003) and gimbal (0x000001) status
 //     reports, and publishes the result as the current configuration; settings the pod cannot
 //     report and the user has set are sent again (a rebooted pod resumes periodic ranging).
-// The binding of each parameter to its request and read-back lives in settings_bindings.cpp.
+// The binding of each parameter to its request and read-back is the settings table
+// (setting_binding.h, settings_bindings.cpp).
 #pragma once
 
 #include <condition_variable>
@@ -23,40 +24,13 @@
 #include <ros/node_handle.h>
 #include <boost/thread/recursive_mutex.hpp>
 
-#include "k40t_driver/K40tConfig.h"
 #include "k40t_driver/protocol/messages/camera_reports.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/ros/pod_driver.h"
 #include "k40t_driver/ros/pod_queries.h"
+#include "k40t_driver/ros/setting_binding.h"
 
 namespace k40t::driver {
-
-using Config = k40t_driver::K40tConfig;
-
-// One parameter group and the request that sets it (settings_bindings.cpp).
-struct SettingBinding {
-  std::string name;                                                    // e.g. "thermal_denoise"
-  std::function<bool(const Config&, const Config&)> differs;           // any of its fields changed
-  std::function<void(Config& to, const Config& from)> copy;            // copy its fields
-  std::function<session::AckResult(PodDriver&, const Config&)> apply;  // send the request
-  // The change from `current` to `next` is only dynamic_reconfigure's clamping: each changed
-  // field was outside the cfg range (as the pod reported it) and is now the nearest bound.
-  std::function<bool(const Config& next, const Config& current)> only_clamped;
-  // The change switches this setting off: sent before the others, so that one of two settings the
-  // pod will not have on together (strong light, backlight) is off before the other goes on.
-  std::function<bool(const Config& next, const Config& current)> switches_off;
-  // false: the pod cannot report it (dial speeds, periodic ranging, overlay); a value set through
-  // reconfigure is sent again after each read-back, so that a rebooted pod resumes it.
-  bool readable = true;
-};
-const SettingBinding* find_binding(const std::string& name);
-const std::vector<SettingBinding>& setting_bindings();
-
-// Read-back: the pod's reports -> the parameters they carry (settings_bindings.cpp).
-void absorb(Config& config, const protocol::ThermalSettingsAck& thermal);
-void absorb(Config& config, const protocol::VisibleSettingsAck& visible);
-void absorb(Config& config, const protocol::CameraSystemStatus& camera);
-void absorb(Config& config, const protocol::GimbalStatus& gimbal);
 
 struct SettingsState {
   bool read_ok = false;      // the last read-back got both settings ACKs

@@ -1,15 +1,21 @@
 // DJI Pilot widgets of the K40T (APP function set 0x02, ids 0x04..0x08, sections 3.2.4..3.2.8):
-//   0 choose list "Palette"      ten of the pod's 20 thermal palettes (dynamic_reconfigure)
+//   0 choose list "Palette"      ten of the pod's 20 thermal palettes, named as
+//   cfg/setting_enums.txt
+//                                names them (dynamic_reconfigure)
 //   1 choose list "Image mode"   thermal, visible, split screen (dynamic_reconfigure)
 //   2 button      "Laser range"  one ranging (laser/measure) per press (value 1 = pressed down, 0 =
 //                                released, as DJI's headers number the button states); the result
 //                                as a floating window
 //   3 switch      "Record"       record start/stop; reads back the pod's recording state
 // All values fit one group.
+#include <algorithm>  // std::replace
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
+#include "k40t_driver/protocol/messages/thermal.h"
 #include "k40t_driver/ros/skyport/skyport_bridge.h"
 
 namespace k40t::driver::skyport {
@@ -22,22 +28,47 @@ namespace {
 enum Widget : uint8_t { kPalette = 0, kImageMode = 1, kLaser = 2, kRecord = 3, kWidgetCount = 4 };
 
 struct Choice {
-  const char* name;  // at most 15 bytes (3.2.5)
+  std::string name;  // at most 15 bytes (3.2.5)
   int pod_value;
 };
-// K40t.cfg's palette numbers.
-constexpr std::array<Choice, 10> kPalettes{{{"White hot", 1},
-                                            {"Black hot", 2},
-                                            {"Rainbow", 3},
-                                            {"HC rainbow", 4},
-                                            {"Iron red", 5},
-                                            {"Magma", 6},
-                                            {"Sky", 7},
-                                            {"Medium grey", 8},
-                                            {"Warning red", 12},
-                                            {"Ice fire", 13}}};
+
+char upper(char c) {
+  return static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+}
+
+// A palette's name (cfg/setting_enums.txt, the protocol's to_string) as a widget item: "iron_red"
+// -> "Iron red"; a name longer than an item's 15 bytes keeps its last word and the initials of
+// the others ("high_contrast_rainbow" -> "HC rainbow").
+std::string palette_label(protocol::Palette palette) {
+  std::string label = protocol::to_string(palette);
+  std::replace(label.begin(), label.end(), '_', ' ');
+  if (label.size() >= kChooseItemNameSize) {  // 15 bytes + NUL
+    const size_t last = label.rfind(' ');
+    std::string initials;
+    for (size_t i = 0; i < last; i = label.find(' ', i) + 1) initials += upper(label[i]);
+    return initials + label.substr(last);
+  }
+  label[0] = upper(label[0]);
+  return label;
+}
+
+// Ten of K40t.cfg's palettes.
+const std::array<Choice, 10>& palettes() {
+  static const std::array<Choice, 10> choices = [] {
+    using P = protocol::Palette;
+    std::array<Choice, 10> c;
+    const std::array<P, 10> offered{
+        P::kWhiteHot, P::kBlackHot, P::kRainbow,    P::kHighContrastRainbow, P::kIronRed,
+        P::kMagma,    P::kSky,      P::kMediumGrey, P::kWarningRed,          P::kIceFire};
+    for (size_t i = 0; i < c.size(); ++i) {
+      c[i] = {palette_label(offered[i]), static_cast<int>(offered[i])};
+    }
+    return c;
+  }();
+  return choices;
+}
 // K40t.cfg's image modes.
-constexpr std::array<Choice, 3> kImageModes{{{"Thermal", 0}, {"Visible", 5}, {"Split", 7}}};
+const std::array<Choice, 3> kImageModes{{{"Thermal", 0}, {"Visible", 5}, {"Split", 7}}};
 
 template <size_t N>
 void fill_choices(WidgetListDataAck& ack, const std::array<Choice, N>& choices) {
@@ -52,7 +83,7 @@ WidgetListDataAck describe_widget(uint8_t index) {
     case kPalette:
       ack.type = WidgetType::kChooseList;
       ack.name = "Palette";
-      fill_choices(ack, kPalettes);
+      fill_choices(ack, palettes());
       break;
     case kImageMode:
       ack.type = WidgetType::kChooseList;
@@ -118,9 +149,9 @@ AckCode SkyportBridge::set_widget(const WidgetValue& widget) {
   const int32_t v = widget.value;
   switch (widget.index) {
     case kPalette: {
-      if (v < 0 || v >= static_cast<int32_t>(kPalettes.size()))
+      if (v < 0 || v >= static_cast<int32_t>(palettes().size()))
         return invalid("palette widget: no item " + std::to_string(v));
-      const AckCode code = pod_code(pod_.set_palette(kPalettes[v].pod_value), "palette widget");
+      const AckCode code = pod_code(pod_.set_palette(palettes()[v].pod_value), "palette widget");
       if (code == AckCode::kOk) {
         std::lock_guard<std::mutex> lock(mutex_);
         palette_item_ = v;

@@ -3,6 +3,8 @@
 #include <array>
 #include <vector>
 
+#include "k40t_driver/protocol/messages/thermal.h"
+
 namespace k40t::sim::video {
 
 namespace {
@@ -12,24 +14,27 @@ struct Stop {
   int r, g, b;
 };
 
+using P = protocol::Palette;
+
+// The palette's code (its name is the protocol's to_string, from cfg/setting_enums.txt) and stops.
 struct PaletteSpec {
-  const char* name;
+  P code;
   std::vector<Stop> stops;
 };
 
 // Colour stops chosen to resemble each palette as thermal cameras commonly draw it.
 const std::array<PaletteSpec, kLastPalette>& palettes() {
   static const std::array<PaletteSpec, kLastPalette> kPalettes{{
-      {"white_hot", {{0, 0, 0, 0}, {1, 255, 255, 255}}},
-      {"black_hot", {{0, 255, 255, 255}, {1, 0, 0, 0}}},
-      {"rainbow",
+      {P::kWhiteHot, {{0, 0, 0, 0}, {1, 255, 255, 255}}},
+      {P::kBlackHot, {{0, 255, 255, 255}, {1, 0, 0, 0}}},
+      {P::kRainbow,
        {{0, 0, 0, 128},
         {0.2, 0, 0, 255},
         {0.4, 0, 255, 255},
         {0.6, 0, 255, 0},
         {0.8, 255, 255, 0},
         {1, 255, 0, 0}}},
-      {"high_contrast_rainbow",  // the rainbow twice over: more colour steps per degree
+      {P::kHighContrastRainbow,  // the rainbow twice over: more colour steps per degree
        {{0, 0, 0, 255},
         {0.125, 0, 255, 0},
         {0.25, 255, 255, 0},
@@ -39,7 +44,7 @@ const std::array<PaletteSpec, kLastPalette>& palettes() {
         {0.75, 255, 255, 0},
         {0.875, 255, 0, 0},
         {1, 255, 255, 255}}},
-      {"iron_red",
+      {P::kIronRed,
        {{0, 0, 0, 0},
         {0.15, 30, 0, 100},
         {0.35, 130, 0, 150},
@@ -47,39 +52,40 @@ const std::array<PaletteSpec, kLastPalette>& palettes() {
         {0.75, 250, 140, 0},
         {0.9, 255, 220, 60},
         {1, 255, 255, 230}}},
-      {"magma",
+      {P::kMagma,
        {{0, 0, 0, 4},
         {0.25, 80, 18, 123},
         {0.5, 183, 55, 121},
         {0.75, 251, 136, 97},
         {1, 252, 253, 191}}},
-      {"sky", {{0, 0, 0, 40}, {0.4, 0, 90, 200}, {0.75, 120, 200, 255}, {1, 255, 255, 255}}},
-      {"medium_grey", {{0, 64, 64, 64}, {1, 192, 192, 192}}},
-      {"grey_red", {{0, 0, 0, 0}, {0.8, 200, 200, 200}, {0.81, 200, 0, 0}, {1, 255, 60, 60}}},
-      {"purple_orange", {{0, 40, 0, 80}, {0.5, 160, 60, 160}, {1, 255, 165, 0}}},
-      {"special_1", {{0, 0, 20, 0}, {0.6, 0, 200, 60}, {1, 220, 255, 220}}},  // night-vision green
-      {"warning_red", {{0, 20, 20, 20}, {0.85, 210, 210, 210}, {0.86, 255, 0, 0}, {1, 255, 0, 0}}},
-      {"ice_fire",
+      {P::kSky, {{0, 0, 0, 40}, {0.4, 0, 90, 200}, {0.75, 120, 200, 255}, {1, 255, 255, 255}}},
+      {P::kMediumGrey, {{0, 64, 64, 64}, {1, 192, 192, 192}}},
+      {P::kGreyRed, {{0, 0, 0, 0}, {0.8, 200, 200, 200}, {0.81, 200, 0, 0}, {1, 255, 60, 60}}},
+      {P::kPurpleOrange, {{0, 40, 0, 80}, {0.5, 160, 60, 160}, {1, 255, 165, 0}}},
+      {P::kSpecial1, {{0, 0, 20, 0}, {0.6, 0, 200, 60}, {1, 220, 255, 220}}},  // night-vision green
+      {P::kWarningRed, {{0, 20, 20, 20}, {0.85, 210, 210, 210}, {0.86, 255, 0, 0}, {1, 255, 0, 0}}},
+      {P::kIceFire,
        {{0, 180, 255, 255},
         {0.25, 0, 60, 255},
         {0.5, 0, 0, 0},
         {0.75, 255, 40, 0},
         {1, 255, 255, 160}}},
-      {"cyan_red", {{0, 0, 255, 255}, {0.5, 128, 128, 128}, {1, 255, 0, 0}}},
-      {"special_2", {{0, 0, 0, 160}, {0.5, 200, 0, 200}, {1, 255, 255, 0}}},
-      {"gradient_red", {{0, 0, 0, 0}, {1, 255, 0, 0}}},
-      {"gradient_green", {{0, 0, 0, 0}, {1, 0, 255, 0}}},
-      {"gradient_yellow", {{0, 0, 0, 0}, {1, 255, 255, 0}}},
-      {"warning_green",
+      {P::kCyanRed, {{0, 0, 255, 255}, {0.5, 128, 128, 128}, {1, 255, 0, 0}}},
+      {P::kSpecial2, {{0, 0, 0, 160}, {0.5, 200, 0, 200}, {1, 255, 255, 0}}},
+      {P::kGradientRed, {{0, 0, 0, 0}, {1, 255, 0, 0}}},
+      {P::kGradientGreen, {{0, 0, 0, 0}, {1, 0, 255, 0}}},
+      {P::kGradientYellow, {{0, 0, 0, 0}, {1, 255, 255, 0}}},
+      {P::kWarningGreen,
        {{0, 20, 20, 20}, {0.85, 210, 210, 210}, {0.86, 0, 255, 0}, {1, 0, 255, 0}}},
-      {"warning_blue",  // the cold end marked
+      {P::kWarningBlue,  // the cold end marked
        {{0, 0, 0, 255}, {0.15, 0, 0, 255}, {0.16, 40, 40, 40}, {1, 230, 230, 230}}},
   }};
   return kPalettes;
 }
 
 Status check_palette(int palette) {
-  if (palette < kFirstPalette || palette > kLastPalette) {
+  if (palette < kFirstPalette || palette > kLastPalette ||
+      static_cast<int>(palettes()[palette - 1].code) != palette) {
     return Status::fail("palette " + std::to_string(palette) + " is out of range " +
                         std::to_string(kFirstPalette) + ".." + std::to_string(kLastPalette));
   }
@@ -106,7 +112,7 @@ cv::Vec3b interpolate(const std::vector<Stop>& stops, double t) {
 
 Result<std::string> palette_name(int palette) {
   if (Status s = check_palette(palette); !s) return s;
-  return std::string(palettes()[palette - 1].name);
+  return std::string(protocol::to_string(palettes()[palette - 1].code));
 }
 
 Result<cv::Mat> palette_table(int palette) {

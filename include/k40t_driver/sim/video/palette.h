@@ -15,7 +15,8 @@ namespace k40t::sim::video {
 constexpr int kFirstPalette = 1;
 constexpr int kLastPalette = 20;
 
-// The palette's name as cfg/K40t.cfg spells it ("white_hot", "iron_red", ...).
+// The palette's name: the protocol's to_string(Palette), as cfg/setting_enums.txt spells it
+// ("white_hot", "iron_red", ...).
 Result<std::string> palette_name(int palette);
 
 // A 1 x 256 CV_8UC3 table (BGR) for cv::LUT; an error naming the code when it is not 1..20.

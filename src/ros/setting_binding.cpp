@@ -1,0 +1,104 @@
+// What is derived from the settings table (settings_bindings.cpp): look-ups, the read-back and
+// the cfg parameters each entry covers.
+#include "k40t_driver/ros/setting_binding.h"
+
+#include <cstdio>
+
+#include <dynamic_reconfigure/config_tools.h>
+
+#include "k40t_driver/protocol/catalogue.h"
+
+namespace k40t::driver {
+
+const SettingBinding* find_binding(const std::string& name) {
+  for (const SettingBinding& binding : setting_bindings()) {
+    if (binding.name == name) return &binding;
+  }
+  return nullptr;
+}
+
+const SettingBinding* binding_for_service(const std::string& service) {
+  for (const SettingBinding& binding : setting_bindings()) {
+    if (!service.empty() && binding.service == service) return &binding;
+  }
+  return nullptr;
+}
+
+void absorb(Config& config, const SettingReports& reports) {
+  for (const SettingBinding& binding : setting_bindings()) {
+    if (binding.readable()) binding.read_back(config, reports);
+  }
+}
+
+namespace {
+
+// Every parameter of `config` in the message form dynamic_reconfigure publishes (name -> text).
+std::vector<std::pair<std::string, std::string>> values_of(const Config& config) {
+  dynamic_reconfigure::Config message;
+  config.__toMessage__(message);
+  std::vector<std::pair<std::string, std::string>> values;
+  for (const auto& p : message.bools) values.emplace_back(p.name, std::to_string(p.value));
+  for (const auto& p : message.ints) values.emplace_back(p.name, std::to_string(p.value));
+  for (const auto& p : message.strs) values.emplace_back(p.name, p.value);
+  for (const auto& p : message.doubles) values.emplace_back(p.name, std::to_string(p.value));
+  return values;
+}
+
+// A configuration in which every parameter differs from the default one.
+Config every_parameter_changed() {
+  dynamic_reconfigure::Config message;
+  Config::__getDefault__().__toMessage__(message);
+  for (auto& p : message.bools) p.value = !p.value;
+  for (auto& p : message.ints) p.value += 1;
+  for (auto& p : message.strs) p.value += "x";
+  for (auto& p : message.doubles) p.value += 1.0;
+  Config changed = Config::__getDefault__();
+  changed.__fromMessage__(message);
+  return changed;
+}
+
+}  // namespace
+
+std::vector<std::string> parameters_of(const SettingBinding& binding) {
+  const Config base = Config::__getDefault__();
+  Config copied = base;
+  binding.copy(copied, every_parameter_changed());
+  const auto before = values_of(base);
+  const auto after = values_of(copied);
+  std::vector<std::string> names;
+  for (const auto& param : Config::__getParamDescriptions__()) {
+    for (size_t i = 0; i < before.size(); ++i) {
+      if (before[i].first == param->name && before[i] != after[i]) names.push_back(param->name);
+    }
+  }
+  return names;
+}
+
+namespace {
+
+std::string id_and_name(protocol::MessageId id) {
+  char hex[16];
+  std::snprintf(hex, sizeof hex, "0x%06X", static_cast<unsigned>(id));
+  const protocol::MessageInfo* info = protocol::find_message(id);
+  return std::string(hex) + " `" + (info ? info->name : "?") + "`";
+}
+
+}  // namespace
+
+std::string settings_table_markdown() {
+  std::string table =
+      "| setting | cfg parameters | request | read back from | service |\n"
+      "|---|---|---|---|---|\n";
+  for (const SettingBinding& binding : setting_bindings()) {
+    std::string parameters;
+    for (const std::string& name : parameters_of(binding)) {
+      parameters += (parameters.empty() ? "`" : ", `") + name + "`";
+    }
+    table += "| " + binding.name + " | " + parameters + " | " + id_and_name(binding.request) +
+             " | " + (binding.readable() ? id_and_name(binding.read_from) : "write-only") + " | " +
+             (binding.service.empty() ? "" : "`" + binding.service + "`") + " |\n";
+  }
+  return table;
+}
+
+}  // namespace k40t::driver

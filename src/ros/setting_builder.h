@@ -1,0 +1,107 @@
+// How the entries of the settings table (settings_bindings.cpp) are written: one expression per
+// setting, e.g.
+//   one_field<p::ThermalSharpnessRequest>("thermal_sharpness", &Req::sharpness,
+//   &C::thermal_sharpness)
+//       .reads(&p::ThermalSettingsAck::sharpness)
+// gives the binding, its clamp rule, its request id and its read-back together.
+#pragma once
+
+#include <type_traits>
+#include <utility>
+
+#include "k40t_driver/ros/setting_binding.h"
+
+namespace k40t::driver::setting_table {
+
+// `next` is `current` moved into the cfg range [lo, hi] by dynamic_reconfigure's clamp: current
+// was outside it and next is the nearest bound.
+template <class T>
+bool clamped_from(const T& next, const T& current, const T& lo, const T& hi) {
+  if (next == current) return true;
+  if (current < lo) return next == lo;
+  if (hi < current) return next == hi;
+  return false;
+}
+
+// A table entry under construction; converts to the finished SettingBinding.
+class Entry {
+ public:
+  explicit Entry(SettingBinding binding) : binding_(std::move(binding)) {}
+
+  // Read back from `Report` by `read(config, report)`.
+  template <class Report, class Read>
+  Entry&& reads_with(Read read) && {
+    binding_.read_from = Report::kId;
+    binding_.read_back = [read](Config& c, const SettingReports& reports) {
+      if (const Report* report = std::get<const Report*>(reports)) read(c, *report);
+    };
+    return std::move(*this);
+  }
+  // No report carries it (stated, so that every entry says where its value comes back from).
+  Entry&& write_only() && { return std::move(*this); }
+  Entry&& service(std::string name) && {
+    binding_.service = std::move(name);
+    return std::move(*this);
+  }
+  // For one of two settings the pod will not have on at once (3.2.3.9/3.2.3.10 note).
+  template <class Member>
+  Entry&& sent_first_when_off(Member member) && {
+    binding_.switches_off = [member](const Config& next, const Config& current) {
+      return current.*member && !(next.*member);
+    };
+    return std::move(*this);
+  }
+  operator SettingBinding() && { return std::move(binding_); }  // NOLINT: the table's element
+
+ protected:
+  SettingBinding binding_;
+};
+
+// A binding for the parameters `members`, sent together as the request build(config) returns.
+template <class Build, class... Members>
+Entry group(std::string name, Build build, Members... members) {
+  using Request = decltype(build(std::declval<const Config&>()));
+  SettingBinding b;
+  b.name = std::move(name);
+  b.request = Request::kId;
+  b.request_name = Request::kName;
+  b.differs = [=](const Config& a, const Config& c) { return ((a.*members != c.*members) || ...); };
+  b.copy = [=](Config& to, const Config& from) { ((to.*members = from.*members), ...); };
+  b.apply = [build](PodDriver& driver, const Config& c) { return driver.request(build(c)); };
+  b.only_clamped = [=](const Config& next, const Config& current) {
+    const Config& lo = Config::__getMin__();
+    const Config& hi = Config::__getMax__();
+    return (clamped_from(next.*members, current.*members, lo.*members, hi.*members) && ...);
+  };
+  return Entry(std::move(b));
+}
+
+// The common case: one parameter, one request field (enums, switches and levels alike), read
+// back, when it is, from one field of a report.
+template <class T>
+class OneField : public Entry {
+ public:
+  OneField(Entry entry, T Config::*member) : Entry(std::move(entry)), member_(member) {}
+
+  template <class Report, class V>
+  Entry&& reads(V Report::*field) && {
+    T Config::*member = member_;
+    return std::move(*this).template reads_with<Report>(
+        [member, field](Config& c, const Report& r) { c.*member = static_cast<T>(r.*field); });
+  }
+
+ private:
+  T Config::*member_;
+};
+
+template <class Req, class ReqField, class T>
+OneField<T> one_field(std::string name, ReqField field, T Config::*member) {
+  auto build = [field, member](const Config& c) {
+    Req r;
+    r.*field = static_cast<std::decay_t<decltype(r.*field)>>(c.*member);
+    return r;
+  };
+  return OneField<T>(group(std::move(name), build, member), member);
+}
+
+}  // namespace k40t::driver::setting_table
