@@ -3,7 +3,7 @@
 file(GLOB_RECURSE K40T_SIM_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/sim/*.cpp)
 if(K40T_SIM_SOURCES)
   add_library(k40t_sim_model STATIC ${K40T_SIM_SOURCES})
-  target_link_libraries(k40t_sim_model PUBLIC k40t_core)
+  target_link_libraries(k40t_sim_model PUBLIC k40t_core k40t_geo)
   set_target_properties(k40t_sim_model PROPERTIES POSITION_INDEPENDENT_CODE ON)
 endif()
 file(GLOB K40T_SIM_MAIN CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tools/k40t_sim/*.cpp)

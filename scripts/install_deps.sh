@@ -20,6 +20,7 @@ packages=(
   libgstrtspserver-1.0-dev libgstreamer1.0-dev libgstreamer-plugins-base1.0-dev
   gstreamer1.0-plugins-good gstreamer1.0-plugins-bad gstreamer1.0-plugins-ugly gstreamer1.0-libav
   gstreamer1.0-rtsp gstreamer1.0-tools
+  libgeographiclib-dev libproj-dev proj-data
   librosbag-storage-dev libyaml-cpp-dev
 )
 

@@ -9,16 +9,24 @@ namespace k40t::driver {
 
 namespace {
 constexpr double kRadToDeg = 180.0 / M_PI;
+
+// A message's stamp, or its time of arrival when it has none.
+StampNs stamp_of(const std_msgs::Header& header) {
+  const ros::Time t = header.stamp.isZero() ? ros::Time::now() : header.stamp;
+  return static_cast<StampNs>(t.toNSec());
+}
 }  // namespace
 
 CommandInput::CommandInput(ros::NodeHandle nh, PodDriver& driver) : driver_(driver) {
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
   cmd_angle_ = nh.subscribe("gimbal/cmd_angle", 1, &CommandInput::on_cmd_angle, this, hints);
   cmd_rate_ = nh.subscribe("gimbal/cmd_rate", 1, &CommandInput::on_cmd_rate, this, hints);
-  fix_ = nh.subscribe("fix", 1, &CommandInput::on_fix, this, hints);
-  attitude_ = nh.subscribe("attitude", 1, &CommandInput::on_attitude, this, hints);
+  fix_ = nh.subscribe("fix", 10, &CommandInput::on_fix, this, hints);
+  attitude_ = nh.subscribe("attitude", 10, &CommandInput::on_attitude, this, hints);
   time_reference_ =
       nh.subscribe("time_reference", 1, &CommandInput::on_time_reference, this, hints);
+  // Queues of 10: every sample counts for the history, not only the latest.
+  velocity_ = nh.subscribe("velocity", 10, &CommandInput::on_velocity, this, hints);
 }
 
 void CommandInput::on_cmd_angle(const geometry_msgs::Vector3Stamped::ConstPtr& msg) {
@@ -40,6 +48,9 @@ void CommandInput::on_fix(const sensor_msgs::NavSatFix::ConstPtr& msg) {
   VehicleState state = driver_.vehicle_state();
   update_from_fix(state, *msg, &reference_altitude_m_);
   driver_.set_vehicle_state(state);
+  if (state.has_fix)
+    driver_.record_position(stamp_of(msg->header),
+                            {state.latitude_deg, state.longitude_deg, state.altitude_m});
 }
 
 void CommandInput::on_attitude(const sensor_msgs::Imu::ConstPtr& msg) {
@@ -47,6 +58,18 @@ void CommandInput::on_attitude(const sensor_msgs::Imu::ConstPtr& msg) {
   VehicleState state = driver_.vehicle_state();
   update_from_imu(state, *msg);
   driver_.set_vehicle_state(state);
+  if (state.has_attitude)
+    driver_.record_attitude(stamp_of(msg->header),
+                            {state.heading_deg, state.pitch_deg, state.roll_deg});
+}
+
+void CommandInput::on_velocity(const geometry_msgs::TwistStamped::ConstPtr& msg) {
+  const geometry_msgs::Vector3& v = msg->twist.linear;
+  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
+    ROS_WARN_THROTTLE(5.0, "velocity ignored: not finite");
+    return;
+  }
+  driver_.record_velocity(stamp_of(msg->header), {v.x, v.y, v.z});
 }
 
 void CommandInput::on_time_reference(const sensor_msgs::TimeReference::ConstPtr& msg) {

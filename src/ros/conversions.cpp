@@ -6,6 +6,7 @@
 #include <tf2/LinearMath/Matrix3x3.h>
 #include <tf2/LinearMath/Quaternion.h>
 
+#include "k40t_driver/geo/geodesy.h"
 #include "k40t_driver/ros/code_text.h"
 
 namespace k40t::driver {
@@ -254,7 +255,10 @@ sensor_msgs::NavSatFix to_nav_sat_fix(const protocol::TargetGpsAck& target, cons
   fix.status.service = sensor_msgs::NavSatStatus::SERVICE_GPS;
   fix.latitude = target.latitude_deg;
   fix.longitude = target.longitude_deg;
-  fix.altitude = target.altitude_m;
+  // The pod's altitude is above sea level; NavSatFix's is above the ellipsoid (NaN: unknown).
+  const Result<double> ellipsoid = geo::Geoid::egm96().ellipsoid_from_msl(
+      target.latitude_deg, target.longitude_deg, target.altitude_m);
+  fix.altitude = ellipsoid ? ellipsoid.value() : std::numeric_limits<double>::quiet_NaN();
   fix.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN;
   return fix;
 }
@@ -289,11 +293,23 @@ void update_from_fix(VehicleState& state, const sensor_msgs::NavSatFix& fix,
   }
   if (!usable) return;
   const double altitude = std::isfinite(fix.altitude) ? fix.altitude : 0.0;
+  // NavSatFix heights are above the ellipsoid; the pod wants sea level. Without the geoid (no
+  // proj-data) there is no height to send: the fix is not usable.
+  const Result<double> msl =
+      geo::Geoid::egm96().msl_from_ellipsoid(fix.latitude, fix.longitude, altitude);
+  if (!msl) {
+    state.has_fix = false;
+    return;
+  }
   if (reference_altitude_m && std::isnan(*reference_altitude_m)) *reference_altitude_m = altitude;
   state.utc_ms = static_cast<int64_t>(fix.header.stamp.toNSec() / 1000000);
   state.latitude_deg = fix.latitude;
   state.longitude_deg = fix.longitude;
   state.altitude_m = altitude;
+  state.altitude_msl_m = msl.value();
+  if (fix.position_covariance_type != sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN) {
+    for (size_t i = 0; i < 9; ++i) state.position_covariance[i] = fix.position_covariance[i];
+  }
   state.relative_altitude_m = reference_altitude_m ? altitude - *reference_altitude_m : 0.0;
 }
 

@@ -133,6 +133,9 @@ void PodDiagnostics::link(DiagnosticStatusWrapper& stat) {
   stat.add("time syncs sent", s.time_syncs_sent);
   stat.add("gps requests answered", s.gps_requests_answered);
   stat.add("gps requests without fix", s.gps_requests_unanswerable);
+  stat.add("gps requests time-matched", s.gps_requests_time_matched);
+  stat.add("gps requests outside the history", s.gps_requests_out_of_history);
+  stat.add("last geotag gap to a fix (s)", s.last_geotag_gap_s);
   stat.add("cmd_rate dead-man stops", s.deadman_stops);
 }
 

@@ -60,7 +60,9 @@ Result<std::unique_ptr<PodDriver>> PodDriver::create(DriverOptions options, Cloc
 }
 
 PodDriver::PodDriver(DriverOptions options, Clock clock)
-    : options_(std::move(options)), clock_(std::move(clock)) {
+    : options_(std::move(options)),
+      clock_(std::move(clock)),
+      history_(geo::HistoryLimits{options_.state_history_s, 5000}) {
   rate_.set_timeout(std::chrono::duration<double>(options_.cmd_rate_timeout_s));
 }
 
@@ -187,8 +189,21 @@ std::optional<protocol::Payload> PodDriver::answer_gps_request(const FrameView& 
   Result<protocol::CameraGpsRequest> request =
       protocol::decode_payload<protocol::CameraGpsRequest>(frame, codec());
   if (!request) return std::nullopt;  // counted as a decode error by the dispatcher too
-  const VehicleState vehicle = vehicle_state();
-  protocol::CameraGpsAck ack = protocol::CameraGpsAck::answering(request.value());
+  const protocol::CameraGpsRequest& asked = request.value();
+  bool in_history = true;
+  double gap_s = -1;  // stays -1 when the history holds no position (the latest state answers)
+  VehicleState vehicle;
+  if (options_.geotag_time_match) {
+    // The time of day is the pod clock's (UTC), on the day nearest to the pod's now.
+    const int64_t time_of_day_ms =
+        ((asked.hour * 60 + asked.minute) * 60 + asked.second) * 1000 + asked.millisecond;
+    const int64_t pod_now_ms = pod_time_of_stamp(clock_());
+    const StampNs at = stamp_of_pod_time(geo::unix_ms_of_time_of_day(time_of_day_ms, pod_now_ms));
+    vehicle = vehicle_state_at(at, &in_history, &gap_s);
+  } else {
+    vehicle = vehicle_state();
+  }
+  protocol::CameraGpsAck ack = protocol::CameraGpsAck::answering(asked);
   bool positioned = false;
   if (vehicle.has_fix) {
     fill_position(ack, vehicle);
@@ -203,6 +218,11 @@ std::optional<protocol::Payload> PodDriver::answer_gps_request(const FrameView& 
   if (!payload) return std::nullopt;  // the failure form always encodes; kept for safety
   std::lock_guard<std::mutex> lock(mutex_);
   ++(positioned ? counters_.gps_requests_answered : counters_.gps_requests_unanswerable);
+  if (positioned && gap_s >= 0) {
+    ++counters_.gps_requests_time_matched;
+    if (!in_history) ++counters_.gps_requests_out_of_history;
+    counters_.last_geotag_gap_s = gap_s;
+  }
   return payload.value();
 }
 
@@ -235,16 +255,6 @@ void PodDriver::set_clock_offset_ms(int64_t offset_ms) {
     send_time_sync();
 }
 
-void PodDriver::set_vehicle_state(const VehicleState& state) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  vehicle_ = state;
-}
-
-VehicleState PodDriver::vehicle_state() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return vehicle_;
-}
-
 void PodDriver::send_time_sync() {
   protocol::TimeSyncRequest sync;
   {
@@ -258,11 +268,13 @@ void PodDriver::send_time_sync() {
 }
 
 void PodDriver::send_laser_target_request() {
-  const VehicleState vehicle = vehicle_state();
+  // The latest fix and attitude, with the velocity from the input or the last two fixes.
+  const VehicleState vehicle = vehicle_state_at(clock_());
   if (!vehicle.has_fix) return;
   protocol::TargetGpsRequest request;
   request.fix = static_cast<protocol::GpsFixStatus>(vehicle.gps_status);
-  request.utc_time_ms = static_cast<uint64_t>(vehicle.utc_ms);
+  // The fix's time in UTC: its stamp through the clock offset (time_reference).
+  request.utc_time_ms = static_cast<uint64_t>(pod_time_of_stamp(vehicle.utc_ms * 1000000));
   fill_position(request, vehicle);
   if (vehicle.has_attitude)
     request.heading_deg = std::fmod(std::fmod(vehicle.heading_deg, 360.0) + 360.0, 360.0);

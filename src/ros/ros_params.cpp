@@ -53,6 +53,8 @@ Result<RosPodConfig> read_params(ParamReader& p) {
     p.fail("gps_provider", "must be topics or none, got '" + gps + "'");
   d.answer_gps_requests = gps == "topics";
   d.gps_clamp_height = p.get("gps_clamp_height", true);
+  d.geotag_time_match = p.get("geotag_time_match", true);
+  d.state_history_s = p.number("state_history", 10.0, 0.5, 600);
   d.laser_target_period_s = p.number("laser_target_period", 1.0, 0, 3600);
   d.silence_timeout_s = p.number("silence_timeout", 0.5, 0.1, 60);
 

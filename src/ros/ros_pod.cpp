@@ -31,6 +31,7 @@ RosPod::RosPod(ros::NodeHandle nh, ros::NodeHandle private_nh, const RosPodConfi
   }
   diagnostics_ =
       std::make_unique<PodDiagnostics>(nh, private_nh, *driver_, config_, settings_.get());
+  locator_ = std::make_unique<TargetLocator>(nh, private_nh, *driver_, config_, *diagnostics_);
   services_ = std::make_unique<PodServices>(nh, *driver_);
   settings_services_ = std::make_unique<SettingsServices>(nh, settings_.get());
   job_services_ = std::make_unique<JobServices>(nh, *driver_);

@@ -158,6 +158,15 @@ std::string run_ground_height(const Args& args, ControlTarget& target) {
   return "ok ground " + args[0] + " m below the pod";
 }
 
+std::string run_hot_object(const Args& args, ControlTarget& target) {
+  const auto north = number(args[0], "NORTH", -100000, 100000);
+  if (!north) return error(north.error());
+  const auto east = number(args[1], "EAST", -100000, 100000);
+  if (!east) return error(east.error());
+  target.with_model([&](PodModel& pod) { pod.world().set_hot_object(*north, *east); });
+  return "ok hot object " + args[0] + " m north, " + args[1] + " m east of the take-off point";
+}
+
 std::string run_photos(const Args&, ControlTarget& target) {
   std::ostringstream out;
   out << "ok";
@@ -175,6 +184,46 @@ std::string run_photos(const Args&, ControlTarget& target) {
     }
   });
   return out.str();
+}
+
+// "P LAT LON H_ELLIPSOID H_MSL" of a truth-frame point, or "P none".
+void put_point(std::ostream& out, const char* name, const std::optional<Vec3>& point,
+               const GroundTruth& truth) {
+  out << " " << name;
+  const auto earth = point ? truth.to_earth(*point) : Result<TruePoint>::fail("none");
+  if (!earth) {
+    out << " none";
+    return;
+  }
+  out << " " << earth->geodetic.latitude_deg << " " << earth->geodetic.longitude_deg << " "
+      << earth->geodetic.height_ellipsoid_m << " " << earth->msl_m;
+}
+
+// The true state now: Unix time of the model's now, the pod's position and velocity, the
+// vehicle heading the pod uses, the hot object's centre, the laser spot and its range.
+std::string run_truth(const Args&, ControlTarget& target) {
+  std::ostringstream out;
+  out.precision(12);
+  out << "ok";
+  target.with_model([&](PodModel& pod) {
+    const GroundTruth& truth = pod.ground_truth();
+    const Vec3 v = truth.velocity();
+    out << " unix " << pod.unix_time_s();
+    put_point(out, "pod", pod.pod_position(), truth);
+    out << " pod_ne " << pod.pod_position().x << " " << pod.pod_position().y;
+    out << " velocity_ne " << v.x << " " << v.y << " heading " << pod.vehicle_attitude().yaw_deg;
+    put_point(out, "hot", pod.hot_object_position(), truth);
+    put_point(out, "laser", pod.laser_spot(), truth);
+    const std::optional<double> range = pod.laser_range();
+    out << " range " << (range ? *range : 0.0);
+  });
+  return out.str();
+}
+
+std::string run_geotags(const Args&, ControlTarget& target) {
+  std::string text;
+  target.with_model([&](PodModel& pod) { text = pod.ground_truth().describe_geotags(); });
+  return "ok " + text;
 }
 
 const std::vector<Command>& commands() {
@@ -195,6 +244,9 @@ const std::vector<Command>& commands() {
       {"photo-resolution", "photo-resolution 0x14|0x15|0x16", 1, 1, run_photo_resolution},
       {"ground-height", "ground-height METRES", 1, 1, run_ground_height},
       {"photos", "photos", 0, 0, run_photos},
+      {"truth", "truth", 0, 0, run_truth},
+      {"hot-object", "hot-object NORTH EAST", 2, 2, run_hot_object},
+      {"geotags", "geotags", 0, 0, run_geotags},
   };
   return kCommands;
 }

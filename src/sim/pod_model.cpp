@@ -31,7 +31,8 @@ PodModel::PodModel(const PodConfig& config)
       gimbal_(config.gimbal),
       zoom_(config.zoom),
       laser_(config.laser),
-      camera_(config.camera) {
+      camera_(config.camera),
+      truth_(config.vehicle) {
   update_auto_exposure();
 }
 
@@ -48,6 +49,12 @@ ThermalStats PodModel::thermal_stats() const {
 
 std::optional<double> PodModel::laser_range() const {
   return laser_.range(world_, boresight_yaw_deg(), boresight_pitch_deg());
+}
+
+std::optional<Vec3> PodModel::laser_spot() const {
+  const std::optional<double> range = laser_range();
+  if (!range) return std::nullopt;
+  return pod_position() + direction(boresight_yaw_deg(), boresight_pitch_deg()) * *range;
 }
 
 Exposure PodModel::exposure() const {
@@ -145,6 +152,8 @@ void PodModel::restore_defaults() {
 
 void PodModel::step(double dt_s) {
   now_s_ += dt_s;
+  const Vec3 pod = pod_position();
+  world_.set_pod_offset(pod.x, pod.y);
   if (shutdown_in_s_ >= 0) {
     shutdown_in_s_ -= dt_s;
     if (shutdown_in_s_ < 0) {

@@ -132,6 +132,7 @@ void PodServer::advance_model(double dt_s, std::vector<Outgoing>& out,
   pod_.step(dt_s);
   for (const PodEvent& event : pod_.take_events()) {
     if (const auto* request = std::get_if<GpsRequestEvent>(&event)) {
+      pod_.ground_truth().photo_taken(request->photo_id, pod_.pod_position());
       gps.push_back(*request);
     } else if (auto message = encode_event(event, options_.codec)) {
       out.push_back({options_.codec.camera_address, *message});
@@ -162,25 +163,27 @@ void PodServer::ask_for_gps(const GpsRequestEvent& event) {
   Result<protocol::Payload> payload = protocol::encode_payload(request, options_.codec);
   if (!payload) return;
   const uint64_t photo_id = event.photo_id;
-  session_->request_async(protocol::CameraGpsRequest::kId, *payload,
-                          protocol::kFlightControllerAddress,
-                          [this, photo_id](const session::AckResult& result) {
-                            if (!result.ok()) return;  // no GPS: the photo keeps no position
-                            auto ack = protocol::decode_payload<protocol::CameraGpsAck>(
-                                result.payload.data(), result.payload.size(), options_.codec);
-                            if (!ack) return;
-                            GpsAnswer answer;
-                            answer.echoed = {ack->hour, ack->minute, ack->second, ack->millisecond};
-                            answer.longitude_deg = ack->longitude_deg;
-                            answer.latitude_deg = ack->latitude_deg;
-                            answer.relative_height_m = ack->relative_height_m;
-                            answer.altitude_m = ack->altitude_m;
-                            answer.yaw_deg = ack->yaw_deg;
-                            answer.roll_deg = ack->roll_deg;
-                            answer.pitch_deg = ack->pitch_deg;
-                            std::lock_guard<std::mutex> lock(model_mutex_);
-                            pod_.camera().attach_gps(photo_id, answer);
-                          });
+  session_->request_async(
+      protocol::CameraGpsRequest::kId, *payload, protocol::kFlightControllerAddress,
+      [this, photo_id](const session::AckResult& result) {
+        if (!result.ok()) return;  // no GPS: the photo keeps no position
+        auto ack = protocol::decode_payload<protocol::CameraGpsAck>(
+            result.payload.data(), result.payload.size(), options_.codec);
+        if (!ack) return;
+        GpsAnswer answer;
+        answer.echoed = {ack->hour, ack->minute, ack->second, ack->millisecond};
+        answer.longitude_deg = ack->longitude_deg;
+        answer.latitude_deg = ack->latitude_deg;
+        answer.relative_height_m = ack->relative_height_m;
+        answer.altitude_m = ack->altitude_m;
+        answer.yaw_deg = ack->yaw_deg;
+        answer.roll_deg = ack->roll_deg;
+        answer.pitch_deg = ack->pitch_deg;
+        std::lock_guard<std::mutex> lock(model_mutex_);
+        pod_.camera().attach_gps(photo_id, answer);
+        pod_.ground_truth().photo_answered(photo_id, pod_.pod_position(), ack->latitude_deg,
+                                           ack->longitude_deg, ack->altitude_m);
+      });
 }
 
 void PodServer::fire_scheduled_faults(SteadyClock::time_point now) {
@@ -222,6 +225,14 @@ void PodServer::run() {
   const auto tick = std::chrono::duration_cast<SteadyClock::duration>(
       std::chrono::duration<double>(options_.tick_s));
   SteadyClock::time_point simulated_until = SteadyClock::now();
+  {
+    // Model time follows the wall clock from here: the truth's Unix times (control command
+    // "truth") count from this instant.
+    std::lock_guard<std::mutex> lock(model_mutex_);
+    pod_.set_unix_epoch_s(
+        std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count() -
+        pod_.now_s());
+  }
   while (running_) {
     const SteadyClock::time_point now = SteadyClock::now();
     std::vector<Outgoing> out;
@@ -232,7 +243,16 @@ void PodServer::run() {
       simulated_until += tick;
     }
     send(out);
-    for (const GpsRequestEvent& request : gps) ask_for_gps(request);
+    // GPS requests leave gps_request_delay_s after their photo.
+    for (const GpsRequestEvent& request : gps)
+      delayed_gps_.push_back(
+          {now + std::chrono::duration_cast<SteadyClock::duration>(
+                     std::chrono::duration<double>(options_.gps_request_delay_s)),
+           request});
+    while (!delayed_gps_.empty() && delayed_gps_.front().first <= now) {
+      ask_for_gps(delayed_gps_.front().second);
+      delayed_gps_.pop_front();
+    }
     fire_scheduled_faults(now);
     send_due_acks(now);
     link_->poll(now);

@@ -83,6 +83,18 @@ const std::vector<OptionSpec>& option_table() {
        [](SimOptions& o, const std::string& option, const std::string& v) {
          return set_number(o.pod.world.ground_height_m, option, v, 1.0, 10000.0);
        }},
+      {"--velocity-north", "M/S", "the vehicle flies north at this speed (default 0)",
+       [](SimOptions& o, const std::string& option, const std::string& v) {
+         return set_number(o.pod.vehicle.velocity_north_m_s, option, v, -100.0, 100.0);
+       }},
+      {"--velocity-east", "M/S", "the vehicle flies east at this speed (default 0)",
+       [](SimOptions& o, const std::string& option, const std::string& v) {
+         return set_number(o.pod.vehicle.velocity_east_m_s, option, v, -100.0, 100.0);
+       }},
+      {"--gps-delay", "S", "the GPS request leaves this long after its photo (default 0)",
+       [](SimOptions& o, const std::string& option, const std::string& v) {
+         return set_number(o.gps_request_delay_s, option, v, 0.0, 5.0);
+       }},
       {"--hot-object-temp", "DEGC", "temperature of the hot object (default 85)",
        [](SimOptions& o, const std::string& option, const std::string& v) {
          return set_number(o.pod.world.hot.temperature_degC, option, v, -40.0, 2000.0);

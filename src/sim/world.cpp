@@ -20,14 +20,19 @@ const char* to_string(Surface surface) {
 }
 
 Vec3 World::hot_object_centre() const {
-  return {config_.hot.north_m, config_.hot.east_m, -config_.ground_height_m + config_.hot.radius_m};
+  return {config_.hot.north_m - pod_north_m_, config_.hot.east_m - pod_east_m_,
+          -config_.ground_height_m + config_.hot.radius_m};
 }
 
 Vec3 World::cold_object_centre() const {
-  return {config_.cold.north_m, config_.cold.east_m, -config_.ground_height_m};
+  return {config_.cold.north_m - pod_north_m_, config_.cold.east_m - pod_east_m_,
+          -config_.ground_height_m};
 }
 
+// At a point relative to the pod; the pattern is fixed to the ground.
 double World::ground_temperature(double north_m, double east_m) const {
+  north_m += pod_north_m_;
+  east_m += pod_east_m_;
   return config_.ground_temperature_degC +
          config_.ground_texture_degC * std::sin(north_m / 37.0) * std::cos(east_m / 23.0);
 }
@@ -53,8 +58,8 @@ Hit World::trace(const Vec3& dir) const {
   if (ground) {
     const Vec3 point = dir * *ground;
     const double ground_degC = ground_temperature(point.x, point.y);
-    const double from_pond =
-        std::hypot(point.x - config_.cold.north_m, point.y - config_.cold.east_m);
+    const Vec3 pond = cold_object_centre();
+    const double from_pond = std::hypot(point.x - pond.x, point.y - pond.y);
     hit.distance_m = *ground;
     if (from_pond < config_.cold.radius_m) {
       // Coldest at the centre, blending smoothly into the ground at the rim.

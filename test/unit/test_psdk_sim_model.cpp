@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "geo_test_support.h"
 #include "k40t_driver/psdk/parser.h"
 #include "k40t_driver/psdk/sim/faulty_transport.h"
 #include "k40t_driver/psdk/sim/flight_model.h"
@@ -13,8 +14,6 @@
 
 namespace k40t::psdk::sim {
 namespace {
-
-constexpr double kEarthRadiusM = 6378137.0;
 
 // Expected dates from Python: datetime.datetime.utcfromtimestamp(t).
 TEST(PsdkSimTime, UtcFromUnixMicroseconds) {
@@ -53,9 +52,10 @@ TEST(PsdkSimFlight, StartsAtHomeClimbsThenCircles) {
   // Half a circle later the airframe is one diameter east of home.
   const double half_circle_s = M_PI * o.circle_radius_m / o.speed_m_s;
   const AirframeState opposite = model.state_at(o.climb_s + half_circle_s);
-  const double east_m = (opposite.longitude_deg - o.home_longitude_deg) * M_PI / 180.0 *
-                        kEarthRadiusM * std::cos(o.home_latitude_deg * M_PI / 180.0);
-  EXPECT_NEAR(east_m, 2 * o.circle_radius_m, 1e-6);
+  const double east_m =
+      test::metres_east(o.home_latitude_deg, o.home_longitude_deg, opposite.longitude_deg,
+                        o.home_altitude_msl_m + o.altitude_m);
+  EXPECT_NEAR(east_m, 2 * o.circle_radius_m, 1e-3);
   EXPECT_NEAR(opposite.relative_height_m, o.altitude_m, 1e-9);
 }
 
@@ -65,7 +65,8 @@ TEST(PsdkSimFlight, VelocityIsTheDerivativeOfPositionAndYawFollowsTheTrack) {
     const double dt = 1e-3;
     const AirframeState a = model.state_at(t);
     const AirframeState b = model.state_at(t + dt);
-    const double north_rate = (b.latitude_deg - a.latitude_deg) * M_PI / 180.0 * kEarthRadiusM / dt;
+    const double north_rate =
+        test::metres_north(a.latitude_deg, b.latitude_deg, a.altitude_msl_m) / dt;
     EXPECT_NEAR(north_rate, a.velocity_north_m_s, 0.01) << t;
     EXPECT_NEAR(std::atan2(a.velocity_east_m_s, a.velocity_north_m_s), a.yaw_rad, 1e-9) << t;
     EXPECT_NEAR(std::hypot(a.velocity_north_m_s, a.velocity_east_m_s), model.options().speed_m_s,

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "geo_test_support.h"
 #include "k40t_driver/protocol/messages/camera.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/protocol/messages/laser.h"
@@ -626,8 +627,7 @@ TEST(SimConformance, TargetPositionFromTheLaser) {
   const auto target = link.ask(request);
   EXPECT_EQ(target.code, ResponseCode::kOk);
   EXPECT_NEAR(target.latitude_deg, 47.0, 1e-7);
-  const double east_m =
-      (target.longitude_deg - 8.0) * kPi / 180 * 6378137.0 * std::cos(47.0 * kPi / 180);
+  const double east_m = test::metres_east(47.0, 8.0, target.longitude_deg, 530);
   EXPECT_NEAR(east_m, 30, 0.05);  // 45 deg down from 30 m: 30 m out
   EXPECT_NEAR(target.altitude_m, 500, 0.01);
 }

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "geo_test_support.h"
 #include "k40t_driver/sim/laser_model.h"
 
 namespace k40t::sim {
@@ -55,11 +56,14 @@ TEST(SimLaser, TargetIsWhereTheBeamHits) {
   // 45 degrees down, heading east: the spot is 100 m east and 100 m below.
   const auto target = laser.locate_target(world, pod, 90, -45);
   ASSERT_TRUE(target);
-  EXPECT_NEAR(target->latitude_deg, 47.0, 1e-9);
-  const double metres_per_degree_lon = 6378137.0 * std::cos(deg_to_rad(47.0)) * kPi / 180;
-  EXPECT_NEAR((target->longitude_deg - 8.0) * metres_per_degree_lon, 100, 1e-3);
-  EXPECT_NEAR(target->relative_height_m, 0, 1e-6);
-  EXPECT_NEAR(target->altitude_m, 500, 1e-6);
+  // Due east along the tangent plane ends a little south of the parallel (0.8 mm at 100 m).
+  EXPECT_NEAR(test::metres_north(47.0, target->latitude_deg, 600), 0, 2e-3);
+  EXPECT_NEAR(test::metres_east(47.0, 8.0, target->longitude_deg, 600), 100, 1e-3);
+  // 100 m along the tangent plane the ellipsoid has dropped by d^2 / 2R = 0.8 mm (and the
+  // geoid moved by less than that): the spot is that much higher above the ground.
+  EXPECT_NEAR(target->relative_height_m, 0, 2e-3);
+  EXPECT_GT(target->relative_height_m, 0);
+  EXPECT_NEAR(target->altitude_m, 500, 2e-3);
   EXPECT_FALSE(laser.locate_target(world, pod, 90, 10));
 }
 

@@ -36,7 +36,8 @@ TEST(SimPod, VehicleHeadingTurnsTheWorldAndTheReportedAttitude) {
   const auto target = pod.locate_target(GeoPoint{47, 8, 30, 500}, VehicleAttitude{90, 0, 0});
   ASSERT_TRUE(target);
   EXPECT_GT(target->longitude_deg, 8.0);  // looking east, 30 m out
-  EXPECT_NEAR(target->relative_height_m, 0, 1e-6);
+  // On the ground, which 30 m out is d^2 / 2R = 0.07 mm below the pod's tangent plane.
+  EXPECT_NEAR(target->relative_height_m, 0, 1e-3);
 }
 
 TEST(SimPod, AutoExposureIsFasterOnTheSkyAndAeLockHoldsIt) {

@@ -7,7 +7,9 @@
 //                     gimbal
 //   fix               sensor_msgs/NavSatFix  the vehicle's position }  answers to the pod's GPS
 //   attitude          sensor_msgs/Imu        its orientation (ENU)  }  requests, laser-target
-//   requests
+//   velocity          geometry_msgs/TwistStamped  its velocity, linear in ENU (optional) }
+//                     requests; each also goes into the history the GPS answers are
+//                     interpolated in (stamps: header.stamp; 0 = time of arrival)
 //   time_reference    sensor_msgs/TimeReference  a better clock (time_ref at header.stamp): the
 //                     pod's clock is set from it (0x00030E) instead of from the system clock
 #pragma once
@@ -16,6 +18,7 @@
 #include <mutex>
 
 #include <geometry_msgs/Twist.h>
+#include <geometry_msgs/TwistStamped.h>
 #include <geometry_msgs/Vector3Stamped.h>
 #include <ros/node_handle.h>
 #include <ros/subscriber.h>
@@ -37,11 +40,12 @@ class CommandInput {
   void on_fix(const sensor_msgs::NavSatFix::ConstPtr& msg);
   void on_attitude(const sensor_msgs::Imu::ConstPtr& msg);
   void on_time_reference(const sensor_msgs::TimeReference::ConstPtr& msg);
+  void on_velocity(const geometry_msgs::TwistStamped::ConstPtr& msg);
 
   PodDriver& driver_;
   std::mutex mutex_;
   double reference_altitude_m_ = std::nan("");
-  ros::Subscriber cmd_angle_, cmd_rate_, fix_, attitude_, time_reference_;
+  ros::Subscriber cmd_angle_, cmd_rate_, fix_, attitude_, time_reference_, velocity_;
 };
 
 }  // namespace k40t::driver

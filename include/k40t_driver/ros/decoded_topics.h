@@ -19,6 +19,7 @@
 
 #include "k40t_driver/protocol/messages/laser.h"
 #include "k40t_driver/ros/conversions.h"
+#include "k40t_driver/ros/geo_glue.h"
 #include "k40t_driver/ros/job_status_conversions.h"
 #include "k40t_driver/ros/pod_driver.h"
 #include "k40t_driver/ros/ros_params.h"
@@ -104,6 +105,11 @@ void advertise_decoded_topics(Sink& sink, PodDriver& driver, const RosPodConfig&
   forward(
       Tag<p::TargetGpsAck>{}, "laser/target",
       [ids](const p::TargetGpsAck& m, const ros::Time& t) { return to_nav_sat_fix(m, t, ids); });
+  // Every field of that answer (docs/geo.md); the covariance needs the vehicle state at its time.
+  auto report = sink.template advertise<k40t_driver::LaserTarget>("laser/target_report", 10, false);
+  driver.on<p::TargetGpsAck>([report, ids, &driver](const p::TargetGpsAck& m, StampNs s) {
+    report(to_laser_target(m, to_ros_time(s), ids.laser, driver.vehicle_state_at(s)));
+  });
 }
 
 }  // namespace k40t::driver

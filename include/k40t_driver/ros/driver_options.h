@@ -35,6 +35,12 @@ struct DriverOptions {
   // true: a height beyond that is sent as the nearest limit (the position still tags the photo);
   // false: such a request is answered with the failure code and no position.
   bool gps_clamp_height = true;
+  // Answer a GPS request with the vehicle state at the requested time of day (the photo's),
+  // interpolated in a history of the inputs; false: the latest state (the behaviour before
+  // issue 12, kept to measure against).
+  bool geotag_time_match = true;
+  // Seconds of input history kept for those answers.
+  double state_history_s = 10.0;
   // Seconds between laser-target requests (0x000320); 0 disables. Needs a vehicle fix.
   double laser_target_period_s = 1.0;
   // Seconds without a frame before the pod counts as silent; the next frame is a "pod online"

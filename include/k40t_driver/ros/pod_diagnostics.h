@@ -41,6 +41,11 @@ class PodDiagnostics {
                  const RosPodConfig& config, const SettingsSync* settings);
 
   void set_versions(const PodVersions& versions);
+  // Another part's status (e.g. TargetLocator's), updated with the others.
+  void add_task(const std::string& name,
+                std::function<void(diagnostic_updater::DiagnosticStatusWrapper&)> task) {
+    updater_.add(name, std::move(task));
+  }
 
  private:
   struct RateCheck {

@@ -28,6 +28,7 @@
 #include <thread>
 #include <vector>
 
+#include "k40t_driver/geo/state_history.h"
 #include "k40t_driver/protocol/frame.h"
 #include "k40t_driver/ros/driver_options.h"
 #include "k40t_driver/ros/rate_commander.h"
@@ -46,8 +47,11 @@ struct DriverStats {
   uint64_t pod_online_events = 0;
   uint64_t time_syncs_sent = 0;
   uint64_t gps_requests_answered = 0;
-  uint64_t gps_requests_unanswerable = 0;  // no fix yet, or a position the wire cannot carry:
-                                           // answered with the failure code
+  uint64_t gps_requests_unanswerable = 0;    // no fix yet, or a position the wire cannot carry:
+                                             // answered with the failure code
+  uint64_t gps_requests_time_matched = 0;    // answered with the state at the requested time
+  uint64_t gps_requests_out_of_history = 0;  // the time was outside the history: nearest state
+  double last_geotag_gap_s = -1;  // last answer: requested time to the nearest fix (-1: none)
   uint64_t deadman_stops = 0;
   protocol::CrcCoverage crc_coverage = protocol::CrcCoverage::kAuto;  // locked coverage
 };
@@ -97,6 +101,20 @@ class PodDriver {
   void command_rate(double pitch_deg_s, double yaw_deg_s);
   void set_vehicle_state(const VehicleState& state);
   VehicleState vehicle_state() const;
+  // The history the GPS answers are interpolated in (stamps: the Clock's, i.e. ROS time).
+  void record_position(StampNs stamp, const geo::PositionSample& sample);
+  void record_attitude(StampNs stamp, const geo::AttitudeSample& sample);
+  void record_velocity(StampNs stamp, const geo::VelocitySample& sample);
+  // The vehicle state at `stamp` from the history (position, attitude, velocity interpolated;
+  // heights converted as for the latest state), or the latest state when the history holds no
+  // position. `in_history` false: the nearest sample stood in.
+  VehicleState vehicle_state_at(StampNs stamp, bool* in_history = nullptr,
+                                double* gap_s = nullptr) const;
+  // The Clock's stamp (ROS time) of a Unix time read on the pod's clock, which the time syncs
+  // set to the system clock plus the offset of set_clock_offset_ms().
+  StampNs stamp_of_pod_time(int64_t pod_unix_ms) const;
+  // The inverse: the pod-clock (UTC) milliseconds of a Clock stamp.
+  int64_t pod_time_of_stamp(StampNs stamp) const;
   // Time syncs (0x00030E) use the system clock plus this offset from now on: a better clock's
   // reading minus the system clock at the same instant (e.g. the SKYPORT's UTC/PPS, through the
   // time_reference topic).
@@ -148,6 +166,7 @@ class PodDriver {
   bool reconnected_since_frame_ = true;  // the first frame ever is an online event
   bool online_pending_ = false;
   VehicleState vehicle_;
+  geo::StateHistory history_;
   int64_t clock_offset_ms_ = 0;
   RateCommander rate_;
   DriverStats counters_;  // the driver's own counters (session stats are read live)

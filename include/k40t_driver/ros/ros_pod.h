@@ -22,6 +22,7 @@
 #include "k40t_driver/ros/ros_params.h"
 #include "k40t_driver/ros/settings_services.h"
 #include "k40t_driver/ros/settings_sync.h"
+#include "k40t_driver/ros/target_locator.h"
 #include "k40t_driver/ros/topic_publisher.h"
 
 namespace k40t::driver {
@@ -49,6 +50,7 @@ class RosPod {
   std::unique_ptr<JobServices> job_services_;
   std::unique_ptr<CommandInput> commands_;
   std::unique_ptr<ReplayInput> replay_;
+  std::unique_ptr<TargetLocator> locator_;
   std::unique_ptr<PodActions> actions_;  // live mode; shut down before the driver stops
 };
 

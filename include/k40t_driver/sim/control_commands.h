@@ -17,6 +17,12 @@
 //   ground-height METRES    the flat ground below the pod
 //   photos                  the photos on the card, with their GPS answers
 //   photo-resolution CODE   the visible photo resolution held and reported (0x14..0x16)
+//   truth                   true positions now (sim/ground_truth.h): Unix time, pod (and its
+//                           metres north, east of the take-off point), velocity, heading, hot
+//                           object, laser spot (lat lon h_ellipsoid h_msl), range
+//   hot-object NORTH EAST   move the hot object (metres from the take-off point)
+//   geotags                 per photo: geotag error against the truth, distance moved by the
+//                           time the answer arrived
 #pragma once
 
 #include <chrono>

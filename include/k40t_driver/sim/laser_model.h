@@ -22,7 +22,7 @@ struct GeoPoint {
   double latitude_deg = 0;
   double longitude_deg = 0;
   double relative_height_m = 0;  // above the take-off point
-  double altitude_m = 0;         // above sea level
+  double altitude_m = 0;         // above mean sea level (EGM96 geoid)
 };
 
 class LaserModel {
@@ -32,8 +32,9 @@ class LaserModel {
   // Distance along heading `yaw_deg`, elevation `pitch_deg` (world frame), or none.
   std::optional<double> range(const World& world, double yaw_deg, double pitch_deg) const;
 
-  // Where the laser hits, given the pod's own position (the host's fix). Local flat-earth
-  // approximation, good to centimetres at the laser's 3 km.
+  // Where the laser hits, given the pod's own position (the host's fix): exact WGS 84 geodesy
+  // (geo/geodesy.h), heights above sea level through the EGM96 geoid. None without a return, or
+  // for a position the geodesy refuses (latitude beyond +-90).
   std::optional<GeoPoint> locate_target(const World& world, const GeoPoint& pod, double yaw_deg,
                                         double pitch_deg) const;
 

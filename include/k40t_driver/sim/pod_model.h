@@ -15,6 +15,7 @@
 #include "k40t_driver/sim/camera_model.h"
 #include "k40t_driver/sim/events.h"
 #include "k40t_driver/sim/gimbal_model.h"
+#include "k40t_driver/sim/ground_truth.h"
 #include "k40t_driver/sim/laser_model.h"
 #include "k40t_driver/sim/thermal_model.h"
 #include "k40t_driver/sim/world.h"
@@ -86,6 +87,7 @@ struct PodConfig {
   ZoomConfig zoom;
   LaserConfig laser;
   CameraConfig camera;
+  VehicleConfig vehicle;
   Versions versions;
   double camera_boot_s = 5;  // after shutdown or factory reset
   double reset_delay_s = 1;  // 0x00030F: "restart after one second"
@@ -129,6 +131,17 @@ class PodModel {
   std::optional<double> laser_range() const;
   Exposure exposure() const;
 
+  // The truth: the vehicle's motion, the pod's, the objects' and the laser spot's true
+  // positions (truth frame of ground_truth.h), and the geotag log. The Unix time of model time 0
+  // is the front-end's to set (the model has no clock).
+  GroundTruth& ground_truth() { return truth_; }
+  const GroundTruth& ground_truth() const { return truth_; }
+  Vec3 pod_position() const { return truth_.pod_position(now_s_, world_.config().ground_height_m); }
+  Vec3 hot_object_position() const { return pod_position() + world_.hot_object_centre(); }
+  std::optional<Vec3> laser_spot() const;
+  void set_unix_epoch_s(double seconds) { unix_epoch_s_ = seconds; }
+  double unix_time_s() const { return unix_epoch_s_ + now_s_; }
+
   // 0x000320: the host's fix and attitude in, the laser target's position out.
   std::optional<GeoPoint> locate_target(const GeoPoint& host, const VehicleAttitude& attitude);
   const VehicleAttitude& vehicle_attitude() const { return vehicle_; }
@@ -168,6 +181,8 @@ class PodModel {
   SbusSettings sbus_;
   AiSettings ai_;
   VehicleAttitude vehicle_;
+  GroundTruth truth_;
+  double unix_epoch_s_ = 0;
   uint8_t self_test_ = kSelfTestAllGood;
   double now_s_ = 0;
   double camera_off_s_ = 0;    // > 0: the camera is down for this long

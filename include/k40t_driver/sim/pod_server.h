@@ -72,6 +72,7 @@ class PodServer : public ControlTarget {
 
   SimOptions options_;
   FaultInjector faults_;
+  std::deque<std::pair<SteadyClock::time_point, GpsRequestEvent>> delayed_gps_;  // run() only
   std::unique_ptr<CaptureWriter> capture_;
   FaultyTransport* link_ = nullptr;  // owned by session_
   std::unique_ptr<session::Session> session_;

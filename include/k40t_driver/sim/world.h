@@ -53,10 +53,22 @@ class World {
 
   const WorldConfig& config() const { return config_; }
   void set_ground_height(double metres) { config_.ground_height_m = metres; }
+  // Where the hot object stands, metres north and east of the take-off point.
+  void set_hot_object(double north_m, double east_m) {
+    config_.hot.north_m = north_m;
+    config_.hot.east_m = east_m;
+  }
+  // Where the pod is over the ground, relative to where it started (a moving vehicle): the
+  // objects and the ground's pattern stay put while the pod moves (sim/ground_truth.h).
+  void set_pod_offset(double north_m, double east_m) {
+    pod_north_m_ = north_m;
+    pod_east_m_ = east_m;
+  }
 
   // What a ray from the pod (the origin) along the unit vector `dir` sees first.
   Hit trace(const Vec3& dir) const;
 
+  // Relative to the pod, like everything above.
   Vec3 hot_object_centre() const;
   Vec3 cold_object_centre() const;
 
@@ -64,6 +76,8 @@ class World {
   double ground_temperature(double north_m, double east_m) const;
 
   WorldConfig config_;
+  double pod_north_m_ = 0;
+  double pod_east_m_ = 0;
 };
 
 }  // namespace k40t::sim

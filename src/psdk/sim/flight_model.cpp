@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "k40t_driver/geo/geodesy.h"
+
 namespace k40t::psdk::sim {
 namespace {
 
-constexpr double kEarthRadiusM = 6378137.0;  // WGS-84 equatorial; a local flat-earth offset
 constexpr double kGravity = 9.80665;
-constexpr double kDegPerRad = 180.0 / M_PI;
 
 }  // namespace
 
@@ -47,11 +47,16 @@ AirframeState FlightModel::state_at(double t_s) const {
     s.pitch_rad = -0.05;  // a multirotor leans forward to fly forward
   }
   s.landing = t_s >= 1.0 ? LandingState::kInTheSky : LandingState::kLanded;
-  s.latitude_deg = o.home_latitude_deg + north_m / kEarthRadiusM * kDegPerRad;
-  s.longitude_deg =
-      o.home_longitude_deg +
-      east_m / (kEarthRadiusM * std::cos(o.home_latitude_deg / kDegPerRad)) * kDegPerRad;
-  s.altitude_msl_m = o.home_altitude_msl_m + s.relative_height_m;
+  // Home's ENU frame. Its origin height is home's MSL height: an origin tens of metres off in
+  // height moves a point 50 m away by well under a millimetre, and the height above home comes
+  // back through the same frame.
+  const geo::Geodetic home{o.home_latitude_deg, o.home_longitude_deg, o.home_altitude_msl_m};
+  const Result<geo::LocalFrame> frame = geo::LocalFrame::at(home);
+  const geo::Geodetic here =
+      frame ? frame->to_geodetic({east_m, north_m, s.relative_height_m}) : home;
+  s.latitude_deg = here.latitude_deg;
+  s.longitude_deg = here.longitude_deg;
+  s.altitude_msl_m = here.height_ellipsoid_m;  // home MSL + height above home's tangent plane
   return s;
 }
 

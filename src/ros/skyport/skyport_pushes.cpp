@@ -16,6 +16,7 @@
 #include "k40t_driver/LinkBandwidth.h"
 #include "k40t_driver/OtherPayload.h"
 #include "k40t_driver/UavState.h"
+#include "k40t_driver/geo/geodesy.h"
 #include "k40t_driver/psdk/commands/all.h"
 #include "k40t_driver/psdk/commands/header_variants.h"
 #include "k40t_driver/ros/skyport/position_request.h"
@@ -47,15 +48,20 @@ geometry_msgs::TwistStamped enu_velocity(const ros::Time& stamp, const std::stri
   return out;
 }
 
+// `altitude_msl_m`: the PSDK pushes heights above sea level (3.3.8, 3.3.9); NavSatFix wants the
+// WGS 84 ellipsoid's (docs/geo.md), so the EGM96 undulation is added. NaN stays NaN (unknown),
+// and so does a height the geoid cannot convert.
 sensor_msgs::NavSatFix fix_message(const ros::Time& stamp, const std::string& frame,
-                                   double latitude_deg, double longitude_deg, double altitude_m,
+                                   double latitude_deg, double longitude_deg, double altitude_msl_m,
                                    int8_t status) {
   sensor_msgs::NavSatFix fix;
   fix.header.stamp = stamp;
   fix.header.frame_id = frame;
   fix.latitude = latitude_deg;
   fix.longitude = longitude_deg;
-  fix.altitude = altitude_m;
+  const Result<double> ellipsoid =
+      geo::Geoid::egm96().ellipsoid_from_msl(latitude_deg, longitude_deg, altitude_msl_m);
+  fix.altitude = ellipsoid ? ellipsoid.value() : std::nan("");
   fix.status.status = status;
   fix.status.service = sensor_msgs::NavSatStatus::SERVICE_GPS;
   fix.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN;

@@ -160,6 +160,8 @@ TEST(VehicleState, FirstFixIsTheRelativeAltitudeReference) {
   update_from_fix(s, fix, &reference);
   EXPECT_DOUBLE_EQ(s.relative_altitude_m, 30.0);
   EXPECT_DOUBLE_EQ(s.altitude_m, 530.0);
+  // Sea level for the pod: the EGM96 geoid is 47.9 m above the ellipsoid at 47.1N 8.5E.
+  EXPECT_NEAR(s.altitude_msl_m, 530.0 - 47.9, 0.2);
   fix.status.status = sensor_msgs::NavSatStatus::STATUS_NO_FIX;
   update_from_fix(s, fix, &reference);
   EXPECT_FALSE(s.has_fix);

@@ -16,7 +16,8 @@ VehicleState high_vehicle() {
   vehicle.has_fix = true;
   vehicle.latitude_deg = 27.9881;
   vehicle.longitude_deg = 86.9250;
-  vehicle.altitude_m = 5364.0;  // Everest base camp: beyond int16 x0.1 m (3276.7 m)
+  vehicle.altitude_m = 5335.0;
+  vehicle.altitude_msl_m = 5364.0;  // Everest base camp: beyond int16 x0.1 m (3276.7 m)
   vehicle.relative_altitude_m = 120.0;
   return vehicle;
 }

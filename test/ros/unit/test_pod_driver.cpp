@@ -66,7 +66,8 @@ TEST(PodDriver, GpsRequestIsAnsweredFromTheVehicleState) {
   vehicle.has_fix = true;
   vehicle.latitude_deg = 47.1234567;
   vehicle.longitude_deg = 8.7654321;
-  vehicle.altitude_m = 512.3;
+  vehicle.altitude_m = 560.0;      // above the ellipsoid
+  vehicle.altitude_msl_m = 512.3;  // above sea level: what the pod gets
   vehicle.relative_altitude_m = 40.5;
   vehicle.has_attitude = true;
   vehicle.heading_deg = 270.0;  // west: -90 on the wire's -180..180

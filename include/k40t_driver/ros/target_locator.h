@@ -1,0 +1,68 @@
+// The driver's own geolocation (docs/geo.md):
+//   laser/target_local  sensor_msgs/NavSatFix  where the laser spot is: each laser range (ACK
+//                       0x010400, status 0x020406) along the laser frame's x axis, taken to the
+//                       vehicle frame by TF (~vehicle_frame, default the pod's base link) and to
+//                       the Earth by the fix and attitude at the range's stamp; ENU covariance
+//                       from the fix, ~attitude_sigma, ~pointing_sigma and ~range_sigma
+//   locate_pixel        k40t_driver/LocatePixel  a pixel of the current image to a position
+//   located_point       geometry_msgs/PointStamped  the last located pixel, in its camera frame
+//   located_fix         sensor_msgs/NavSatFix       the same on the Earth
+// and a diagnostic "geolocation": the distance between laser/target_local and the pod's own
+// answer (laser/target) when both are less than a second apart.
+// Handlers are registered on the PodDriver like TopicPublisher's (frame stamps), so a replay
+// regenerates laser/target_local.
+#pragma once
+
+#include <mutex>
+#include <optional>
+
+#include <ros/node_handle.h>
+#include <ros/publisher.h>
+#include <ros/service_server.h>
+#include <ros/subscriber.h>
+#include <sensor_msgs/CameraInfo.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include "k40t_driver/LocatePixel.h"
+#include "k40t_driver/geo/ray_locator.h"
+#include "k40t_driver/ros/pod_diagnostics.h"
+#include "k40t_driver/ros/pod_driver.h"
+#include "k40t_driver/ros/ros_params.h"
+
+namespace k40t::driver {
+
+class TargetLocator {
+ public:
+  TargetLocator(ros::NodeHandle nh, const ros::NodeHandle& private_nh, PodDriver& driver,
+                const RosPodConfig& config, PodDiagnostics& diagnostics);
+
+ private:
+  void on_range(double distance_m, StampNs stamp);
+  void on_pod_target(const protocol::TargetGpsAck& target, StampNs stamp);
+  void compare_locked();
+  bool locate_pixel(k40t_driver::LocatePixel::Request& req,
+                    k40t_driver::LocatePixel::Response& res);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
+
+  PodDriver& driver_;
+  FrameIds ids_;
+  std::string vehicle_frame_;
+  geo::RayUncertainty uncertainty_;
+  double laser_axis_tolerance_px_ = 8;
+  tf2_ros::Buffer tf_;
+  tf2_ros::TransformListener listener_;
+  ros::Publisher target_local_, located_point_, located_fix_;
+  ros::Subscriber camera_info_;
+  ros::ServiceServer locate_pixel_;
+
+  std::mutex mutex_;  // everything below
+  std::optional<sensor_msgs::CameraInfo> camera_info_msg_;
+  std::optional<std::pair<double, StampNs>> last_range_;
+  std::optional<std::pair<geo::Geodetic, StampNs>> last_local_, last_pod_;
+  std::optional<double> disagreement_m_;
+  uint64_t located_ = 0;
+  std::string last_error_;
+};
+
+}  // namespace k40t::driver

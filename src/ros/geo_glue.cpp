@@ -1,0 +1,105 @@
+#include "k40t_driver/ros/geo_glue.h"
+
+#include <cmath>
+
+#include <tf2/LinearMath/Quaternion.h>
+#include <tf2/LinearMath/Vector3.h>
+
+namespace k40t::driver {
+
+Result<geo::VehiclePose> vehicle_pose(const VehicleState& state) {
+  if (!state.has_fix) return Result<geo::VehiclePose>::fail("no vehicle fix (topic fix)");
+  if (!state.has_attitude)
+    return Result<geo::VehiclePose>::fail("no vehicle attitude (topic attitude)");
+  geo::VehiclePose pose;
+  pose.position = {state.latitude_deg, state.longitude_deg, state.altitude_m};
+  pose.position_covariance = state.position_covariance;
+  pose.heading_deg = state.heading_deg;
+  pose.pitch_deg = state.pitch_deg;
+  pose.roll_deg = state.roll_deg;
+  return pose;
+}
+
+Result<geo::BodyRay> ray_in_vehicle(const tf2_ros::Buffer& tf, const std::string& vehicle_frame,
+                                    const std::string& sensor_frame, const ros::Time& stamp,
+                                    const geo::Vector3& direction) {
+  geometry_msgs::TransformStamped t;
+  try {
+    t = tf.canTransform(vehicle_frame, sensor_frame, stamp)
+            ? tf.lookupTransform(vehicle_frame, sensor_frame, stamp)
+            : tf.lookupTransform(vehicle_frame, sensor_frame, ros::Time(0));
+  } catch (const tf2::TransformException& e) {
+    return Result<geo::BodyRay>::fail("no TF from " + vehicle_frame + " to " + sensor_frame + ": " +
+                                      e.what());
+  }
+  const tf2::Quaternion q(t.transform.rotation.x, t.transform.rotation.y, t.transform.rotation.z,
+                          t.transform.rotation.w);
+  const tf2::Vector3 d = tf2::quatRotate(q, tf2::Vector3(direction[0], direction[1], direction[2]));
+  geo::BodyRay ray;
+  ray.origin_m = {t.transform.translation.x, t.transform.translation.y, t.transform.translation.z};
+  ray.direction = {d.x(), d.y(), d.z()};
+  return ray;
+}
+
+sensor_msgs::NavSatFix to_nav_sat_fix(const geo::Located& located, const ros::Time& stamp,
+                                      const std::string& frame_id) {
+  sensor_msgs::NavSatFix fix;
+  fix.header.stamp = stamp;
+  fix.header.frame_id = frame_id;
+  fix.status.status = sensor_msgs::NavSatStatus::STATUS_FIX;
+  fix.status.service = sensor_msgs::NavSatStatus::SERVICE_GPS;
+  fix.latitude = located.position.latitude_deg;
+  fix.longitude = located.position.longitude_deg;
+  fix.altitude = located.position.height_ellipsoid_m;
+  for (size_t i = 0; i < 9; ++i) fix.position_covariance[i] = located.covariance[i];
+  fix.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_KNOWN;
+  return fix;
+}
+
+k40t_driver::LaserTarget to_laser_target(const protocol::TargetGpsAck& target,
+                                         const ros::Time& stamp, const std::string& frame_id,
+                                         const VehicleState& vehicle) {
+  k40t_driver::LaserTarget report;
+  report.header.stamp = stamp;
+  report.header.frame_id = frame_id;
+  report.code = static_cast<uint16_t>(target.code);
+  report.mount_mask = target.mount_mask;
+  report.pod_utc.fromNSec(target.utc_time_ms * 1000000);
+  report.latitude = target.latitude_deg;
+  report.longitude = target.longitude_deg;
+  report.relative_height = target.relative_height_m;
+  report.altitude_msl = target.altitude_m;
+  const Result<double> h = geo::Geoid::egm96().ellipsoid_from_msl(
+      target.latitude_deg, target.longitude_deg, target.altitude_m);
+  report.altitude = h ? h.value() : std::nan("");
+  report.position_covariance.fill(-1.0);
+  if (target.code != protocol::ResponseCode::kOk || !h || !vehicle.has_fix) return report;
+  const Result<geo::LocalFrame> frame =
+      geo::LocalFrame::at({vehicle.latitude_deg, vehicle.longitude_deg, vehicle.altitude_m});
+  if (!frame) return report;
+  const geo::Enu d = frame->to_enu({target.latitude_deg, target.longitude_deg, h.value()});
+  const double slant = std::sqrt(d.east * d.east + d.north * d.north + d.up * d.up);
+  const geo::RayUncertainty u;
+  const double angular = slant * u.attitude_sigma_deg * M_PI / 180.0;
+  const double extra = angular * angular + u.range_sigma_m * u.range_sigma_m;
+  for (size_t i = 0; i < 9; ++i) report.position_covariance[i] = vehicle.position_covariance[i];
+  for (size_t i = 0; i < 3; ++i) report.position_covariance[i * 4] += extra;
+  return report;
+}
+
+geo::RayUncertainty read_uncertainty(const ros::NodeHandle& private_nh) {
+  geo::RayUncertainty u;
+  private_nh.param("attitude_sigma", u.attitude_sigma_deg, u.attitude_sigma_deg);
+  private_nh.param("pointing_sigma", u.pointing_sigma_deg, u.pointing_sigma_deg);
+  private_nh.param("range_sigma", u.range_sigma_m, u.range_sigma_m);
+  auto sane = [](double& v, double fallback) {
+    if (!std::isfinite(v) || v < 0) v = fallback;
+  };
+  const geo::RayUncertainty defaults;
+  sane(u.attitude_sigma_deg, defaults.attitude_sigma_deg);
+  sane(u.pointing_sigma_deg, defaults.pointing_sigma_deg);
+  sane(u.range_sigma_m, defaults.range_sigma_m);
+  return u;
+}
+
+}  // namespace k40t::driver

@@ -1,0 +1,197 @@
+#include "k40t_driver/ros/target_locator.h"
+
+#include <cmath>
+
+#include <geometry_msgs/PointStamped.h>
+#include <ros/console.h>
+
+#include "k40t_driver/protocol/messages/laser.h"
+#include "k40t_driver/ros/geo_glue.h"
+
+namespace k40t::driver {
+
+namespace {
+
+constexpr StampNs kSecondNs = 1000000000;
+
+ros::Time to_ros_time(StampNs stamp) {
+  ros::Time t;
+  t.fromNSec(stamp > 0 ? static_cast<uint64_t>(stamp) : 0);
+  return t;
+}
+
+// Metres between two positions (in the ENU frame of the first).
+double distance_m(const geo::Geodetic& a, const geo::Geodetic& b) {
+  const Result<geo::LocalFrame> frame = geo::LocalFrame::at(a);
+  if (!frame) return std::nan("");
+  const geo::Enu d = frame->to_enu(b);
+  return std::sqrt(d.east * d.east + d.north * d.north + d.up * d.up);
+}
+
+}  // namespace
+
+TargetLocator::TargetLocator(ros::NodeHandle nh, const ros::NodeHandle& private_nh,
+                             PodDriver& driver, const RosPodConfig& config,
+                             PodDiagnostics& diagnostics)
+    : driver_(driver), ids_(config.ids), tf_(ros::Duration(30.0)), listener_(tf_) {
+  vehicle_frame_ = private_nh.param<std::string>("vehicle_frame", ids_.base);
+  uncertainty_ = read_uncertainty(private_nh);
+  private_nh.param("laser_axis_tolerance_px", laser_axis_tolerance_px_, laser_axis_tolerance_px_);
+
+  target_local_ = nh.advertise<sensor_msgs::NavSatFix>("laser/target_local", 10);
+  located_point_ = nh.advertise<geometry_msgs::PointStamped>("located_point", 1, true);
+  located_fix_ = nh.advertise<sensor_msgs::NavSatFix>("located_fix", 1, true);
+  auto range = [this](const auto& m, StampNs s) {
+    if (m.code == protocol::ResponseCode::kOk && m.distance_m > 0) on_range(m.distance_m, s);
+  };
+  driver.on<protocol::LaserRangeAck>(range);
+  driver.on<protocol::LaserPeriodicRangeStatus>(range);
+  driver.on<protocol::TargetGpsAck>(
+      [this](const protocol::TargetGpsAck& m, StampNs s) { on_pod_target(m, s); });
+  camera_info_ = nh.subscribe<sensor_msgs::CameraInfo>(
+      "camera_info", 1, [this](const sensor_msgs::CameraInfo::ConstPtr& msg) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        camera_info_msg_ = *msg;
+      });
+  locate_pixel_ = nh.advertiseService("locate_pixel", &TargetLocator::locate_pixel, this);
+  diagnostics.add_task("geolocation", [this](auto& stat) { diagnose(stat); });
+}
+
+void TargetLocator::on_range(double distance_m, StampNs stamp) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    last_range_ = {distance_m, stamp};
+  }
+  const ros::Time t = to_ros_time(stamp);
+  Result<geo::VehiclePose> pose = vehicle_pose(driver_.vehicle_state_at(stamp));
+  Result<geo::BodyRay> ray = pose ? ray_in_vehicle(tf_, vehicle_frame_, ids_.laser, t, {1, 0, 0})
+                                  : Result<geo::BodyRay>::fail(pose.error());
+  Result<geo::Located> located =
+      ray ? geo::locate_at_range(pose.value(), ray.value(), distance_m, uncertainty_)
+          : Result<geo::Located>::fail(ray.error());
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!located) {
+    last_error_ = located.error();
+    return;
+  }
+  last_error_.clear();
+  ++located_;
+  last_local_ = {located->position, stamp};
+  compare_locked();
+  target_local_.publish(to_nav_sat_fix(located.value(), t, ids_.laser));
+}
+
+void TargetLocator::on_pod_target(const protocol::TargetGpsAck& target, StampNs stamp) {
+  if (target.code != protocol::ResponseCode::kOk) return;
+  const Result<double> h = geo::Geoid::egm96().ellipsoid_from_msl(
+      target.latitude_deg, target.longitude_deg, target.altitude_m);
+  if (!h) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  last_pod_ = {{target.latitude_deg, target.longitude_deg, h.value()}, stamp};
+  compare_locked();
+}
+
+void TargetLocator::compare_locked() {
+  if (!last_local_ || !last_pod_) return;
+  if (std::llabs(last_local_->second - last_pod_->second) > kSecondNs) return;
+  disagreement_m_ = distance_m(last_local_->first, last_pod_->first);
+}
+
+void TargetLocator::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  stat.add("laser targets located", located_);
+  stat.add("last error", last_error_.empty() ? "none" : last_error_);
+  stat.add("distance to the pod's laser target (m)", disagreement_m_ ? *disagreement_m_ : -1.0);
+  if (!last_error_.empty() && located_ == 0) {
+    stat.summary(diagnostic_msgs::DiagnosticStatus::OK, "no laser target located: " + last_error_);
+  } else {
+    stat.summary(diagnostic_msgs::DiagnosticStatus::OK, "ok");
+  }
+}
+
+bool TargetLocator::locate_pixel(k40t_driver::LocatePixel::Request& req,
+                                 k40t_driver::LocatePixel::Response& res) {
+  auto fail = [&](const std::string& why) {
+    res.success = false;
+    res.message = why;
+    return true;
+  };
+  std::optional<sensor_msgs::CameraInfo> info;
+  std::optional<std::pair<double, StampNs>> range;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    info = camera_info_msg_;
+    range = last_range_;
+  }
+  if (!info) return fail("no camera_info received (start the video: video:=true)");
+  const double fx = info->K[0], cx = info->K[2], fy = info->K[4], cy = info->K[5];
+  if (!(fx > 0 && fy > 0)) return fail("camera_info has no intrinsics (K)");
+  if (!std::isfinite(req.u) || !std::isfinite(req.v) || req.u < 0 || req.v < 0 ||
+      (info->width > 0 && req.u > info->width) || (info->height > 0 && req.v > info->height))
+    return fail("u, v must be inside the " + std::to_string(info->width) + "x" +
+                std::to_string(info->height) + " image");
+  if (req.plane_reference > k40t_driver::LocatePixel::Request::MSL)
+    return fail("plane_reference must be 0 (ABOVE_TAKEOFF) or 1 (MSL)");
+  if (!std::isfinite(req.plane_height)) return fail("plane_height must be finite");
+
+  const ros::Time stamp = info->header.stamp;
+  const VehicleState state = driver_.vehicle_state_at(static_cast<StampNs>(stamp.toNSec()));
+  const Result<geo::VehiclePose> pose = vehicle_pose(state);
+  if (!pose) return fail(pose.error());
+  const std::string& camera = info->header.frame_id;
+  // Optical frame: z forward, x right, y down.
+  const geo::Vector3 optical{(req.u - cx) / fx, (req.v - cy) / fy, 1.0};
+  const Result<geo::BodyRay> ray = ray_in_vehicle(tf_, vehicle_frame_, camera, stamp, optical);
+  if (!ray) return fail(ray.error());
+
+  // Is the pixel on the laser axis? The laser's x axis projected into this image.
+  bool on_axis = false;
+  if (req.use_laser && range) {
+    const Result<geo::BodyRay> laser = ray_in_vehicle(tf_, camera, ids_.laser, stamp, {1, 0, 0});
+    if (laser && laser->direction[2] > 0) {
+      const double lu = fx * laser->direction[0] / laser->direction[2] + cx;
+      const double lv = fy * laser->direction[1] / laser->direction[2] + cy;
+      on_axis = std::hypot(lu - req.u, lv - req.v) <= laser_axis_tolerance_px_;
+    }
+  }
+  Result<geo::Located> located = Result<geo::Located>::fail("not located");
+  if (on_axis) {
+    located = geo::locate_at_range(pose.value(), ray.value(), range->first, uncertainty_);
+  } else {
+    double plane_h = 0;
+    if (req.plane_reference == k40t_driver::LocatePixel::Request::ABOVE_TAKEOFF) {
+      plane_h = state.altitude_m - state.relative_altitude_m + req.plane_height;
+    } else {
+      const Result<double> h = geo::Geoid::egm96().ellipsoid_from_msl(
+          state.latitude_deg, state.longitude_deg, req.plane_height);
+      if (!h) return fail(h.error());
+      plane_h = h.value();
+    }
+    located =
+        geo::locate_on_plane(pose.value(), ray.value(), plane_h - state.altitude_m, uncertainty_);
+    if (!located)
+      return fail("the pixel's ray misses the ground plane (above the horizon or beyond 10 km)");
+  }
+  if (!located) return fail(located.error());
+  const Result<double> msl = geo::Geoid::egm96().msl_from_ellipsoid(
+      located->position.latitude_deg, located->position.longitude_deg,
+      located->position.height_ellipsoid_m);
+  res.success = true;
+  res.message = "ok";
+  res.fix = to_nav_sat_fix(located.value(), stamp, camera);
+  res.altitude_msl = msl ? msl.value() : std::nan("");
+  res.slant_range = located->slant_range_m;
+  res.on_laser_axis = on_axis;
+  // For rviz: the point in the camera frame, along the pixel's ray.
+  geometry_msgs::PointStamped point;
+  point.header = res.fix.header;
+  const double n = std::sqrt(optical[0] * optical[0] + optical[1] * optical[1] + 1.0);
+  point.point.x = optical[0] / n * located->slant_range_m;
+  point.point.y = optical[1] / n * located->slant_range_m;
+  point.point.z = optical[2] / n * located->slant_range_m;
+  located_point_.publish(point);
+  located_fix_.publish(res.fix);
+  return true;
+}
+
+}  // namespace k40t::driver
