@@ -7,7 +7,7 @@ namespace {
 
 // Entry i: i in the top byte of a Width-bit register, shifted out MSB-first eight times. This is
 // the "normal" (non-reflected) table; pairing it with a right-shifting update is what DJI's
-// sources do, and it is deliberate here (psdk_crc.md).
+// sources do, and it is deliberate here (docs/psdk.md#frames).
 template <class Uint, Uint kPoly>
 constexpr std::array<Uint, 256> make_msb_first_table() {
   constexpr int kWidth = sizeof(Uint) * 8;
@@ -26,8 +26,9 @@ constexpr std::array<Uint, 256> make_msb_first_table() {
 
 constexpr auto kCrc16Table = make_msb_first_table<uint16_t, 0x1021>();
 constexpr auto kCrc32Table = make_msb_first_table<uint32_t, 0x04C11DB7>();
-static_assert(kCrc16Table[1] == 0x1021 && kCrc16Table[2] == 0x2042, "psdk_crc.md CRC16 table");
-static_assert(kCrc32Table[1] == 0x04C11DB7, "psdk_crc.md CRC32 table");
+static_assert(kCrc16Table[1] == 0x1021 && kCrc16Table[2] == 0x2042,
+              "docs/psdk.md#frames CRC16 table");
+static_assert(kCrc32Table[1] == 0x04C11DB7, "docs/psdk.md#frames CRC32 table");
 
 }  // namespace
 

@@ -96,7 +96,7 @@ Result<EncodedFrame> encode_frame(const FrameHeader& header, const uint8_t* data
   if (size + padding > kMaxDataSize) {
     return fail("DATA of " + std::to_string(size) + " bytes" +
                 (padding ? " (+" + std::to_string(padding) + " AES padding)" : std::string()) +
-                " exceeds the maximum of 256 (frame length 16..272, psdk_crc.md)");
+                " exceeds the maximum of 256 (frame length 16..272, docs/psdk.md#frames)");
   }
 
   EncodedFrame frame;
@@ -119,7 +119,7 @@ Result<EncodedFrame> encode_frame(const FrameHeader& header, const uint8_t* data
 
   uint8_t* out = b + kHeaderSize;
   if (size > 0) std::memcpy(out, data, size);
-  std::memset(out + size, 0, padding);  // zero fill (psdk_crc.md)
+  std::memset(out + size, 0, padding);  // zero fill (docs/psdk.md#frames)
   if (aes) {
     const Status encrypted = cipher->encrypt(out, data_size, out);
     if (!encrypted) return fail(encrypted.message());

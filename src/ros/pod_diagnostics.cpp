@@ -37,7 +37,7 @@ PodDiagnostics::PodDiagnostics(ros::NodeHandle nh, ros::NodeHandle private_nh, P
       period_s_(private_nh.param("diagnostic_period", 0.25)) {
   updater_.setHardwareID(hardware_id_);
   updater_.add("link", this, &PodDiagnostics::link);
-  // The document's rates (NOTES periodic reports).
+  // The document's rates (docs/protocol/decisions.md#periodic-reports).
   add_rate_check<p::GimbalStatus>(driver, "gimbal status report (0x000001)", 2.0);
   add_rate_check<p::GimbalAttitude>(driver, "gimbal attitude report (0x000002)", 10.0);
   add_rate_check<p::CameraSystemStatus>(driver, "camera status report (0x000003)", 1.0);

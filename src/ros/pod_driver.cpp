@@ -143,7 +143,8 @@ AckResult PodDriver::request_raw(protocol::MessageId id, const uint8_t* payload,
 }
 
 void PodDriver::handle_rx_frame(const FrameView& frame) {
-  // NOTES A10: the pod sends no timestamps; the frame began arriving one wire time before now.
+  // docs/protocol/decisions.md#a10: the pod sends no timestamps; the frame began arriving one wire
+  // time before now.
   const StampNs stamp =
       replayer_
           ? replay_stamp_

@@ -39,7 +39,8 @@ const std::vector<OptionSpec>& option_table() {
          return Status::ok();
        }},
       {"--crc-coverage", "header_excluded|whole_frame",
-       "NOTES A1: checksum coverage the pod uses, sending and receiving (default header_excluded)",
+       "docs/protocol/decisions.md#a1: checksum coverage the pod uses, sending and receiving "
+       "(default header_excluded)",
        [](SimOptions& o, const std::string& option, const std::string& v) {
          const auto c = protocol::parse_crc_coverage(v);
          if (!c) return Status::fail(option + ": " + c.error());
@@ -50,7 +51,8 @@ const std::vector<OptionSpec>& option_table() {
          o.crc_coverage = *c;
          return Status::ok();
        }},
-      {"--ack-byte-order", "big|little", "NOTES A2: byte order of ACK fields (default big)",
+      {"--ack-byte-order", "big|little",
+       "docs/protocol/decisions.md#a2: byte order of ACK fields (default big)",
        [](SimOptions& o, const std::string& option, const std::string& v) {
          const auto order = protocol::parse_byte_order(v);
          if (!order) return Status::fail(option + ": " + order.error());
@@ -65,14 +67,16 @@ const std::vector<OptionSpec>& option_table() {
          o.codec.laser_status_byte_order = *order;
          return Status::ok();
        }},
-      {"--angle-scale", "N", "NOTES A4: 0x000012 angles are degrees x N (default 100)",
+      {"--angle-scale", "N",
+       "docs/protocol/decisions.md#a4: 0x000012 angles are degrees x N (default 100)",
        [](SimOptions& o, const std::string& option, const std::string& v) {
          const auto n = parse_number(option, v, 1, 1000);
          if (!n) return n.status();
          o.codec.angle_command_scale = static_cast<int>(*n);
          return Status::ok();
        }},
-      {"--gimbal-system-id", "N", "NOTES A3: system id the gimbal answers from (default 3)",
+      {"--gimbal-system-id", "N",
+       "docs/protocol/decisions.md#a3: system id the gimbal answers from (default 3)",
        [](SimOptions& o, const std::string& option, const std::string& v) {
          const auto n = parse_number(option, v, 1, 255);
          if (!n) return n.status();

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""Hand-computation aid for golden DJI PSDK v1 frames (psdk_crc.md, docs/psdk.md).
+"""Hand-computation aid for golden DJI PSDK v1 frames (docs/psdk.md).
 
-An independent transcription of the CRC16 and CRC32 that ../shared/spec/psdk_crc.md describes,
+An independent transcription of the CRC16 and CRC32 that docs/psdk.md describes,
 computed bit by bit (no table), kept apart from the C++ code under test. Write the 12-byte header
 with the two CRC16 bytes left as "?? ??" and the DATA bytes by hand, then run:
 

@@ -1,5 +1,5 @@
-// Test helpers for the PSDK layer: psdk_crc.md's frame vectors, a frame builder, and a FieldSink
-// that records "name=value" lines.
+// Test helpers for the PSDK layer: docs/psdk.md#frames' frame vectors, a frame builder, and a
+// FieldSink that records "name=value" lines.
 #pragma once
 
 #include <iomanip>
@@ -16,7 +16,7 @@ namespace k40t::psdk::testing {
 
 using Bytes = std::vector<uint8_t>;
 
-// psdk_crc.md's whole-frame vectors: get PSDK version (cmd set 0x01, id 0x02, seq 0, ACK
+// docs/psdk.md#frames' whole-frame vectors: get PSDK version (cmd set 0x01, id 0x02, seq 0, ACK
 // requested) and its ACK, DATA 0x00 (OK) + version 1.3.0.0 as {debug, modify, minor, major}.
 inline const Bytes kGetVersion = {0xaa, 0x10, 0x00, 0x01, 0x00, 0x00, 0x01, 0x02,
                                   0x00, 0x00, 0xf2, 0x68, 0xbc, 0x0f, 0x4c, 0x90};

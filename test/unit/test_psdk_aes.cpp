@@ -1,5 +1,5 @@
-// AES-128-ECB through OpenSSL (psdk_crc.md): the FIPS-197 appendix C.1 known answer, round trips,
-// the key derivation and MD5 (RFC 1321 test suite).
+// AES-128-ECB through OpenSSL (docs/psdk.md#frames): the FIPS-197 appendix C.1 known answer, round
+// trips, the key derivation and MD5 (RFC 1321 test suite).
 #include <gtest/gtest.h>
 
 #include <vector>

@@ -133,7 +133,7 @@ TEST(PsdkGolden, UtcTimePush) {
   EXPECT_EQ(d.microsecond, 999999u);
 }
 
-// psdk_crc.md's ACK vector DATA: code 0, then {debug 0, modify 0, minor 3, major 1}.
+// docs/psdk.md#frames' ACK vector DATA: code 0, then {debug 0, modify 0, minor 3, major 1}.
 TEST(PsdkGolden, PsdkVersionAck) {
   PsdkVersionAck m;
   m.version = {1, 3, 0, 0};

@@ -1,4 +1,5 @@
-// PSDK CRC16 and CRC32 (psdk_crc.md): the check values and table entries the document gives.
+// PSDK CRC16 and CRC32 (docs/psdk.md#frames): the check values and table entries the document
+// gives.
 #include <gtest/gtest.h>
 
 #include <cstring>

@@ -1,8 +1,8 @@
-// PSDK frame layout (protocol document 2.1, psdk_crc.md). The golden frames are psdk_crc.md's
-// whole-frame vectors, and one encrypted frame written by hand: header bytes from 2.1, the key
-// MD5("K40T bridge" "123456" "0123456789abcdef0123456789abcdef" "dev@example.com") computed with
-// Python's hashlib, the ciphertext with `openssl enc -aes-128-ecb -nopad`, the CRCs with
-// test/data/psdk_frame_crc.py.
+// PSDK frame layout (protocol document 2.1, docs/psdk.md#frames). The golden frames are
+// docs/psdk.md#frames' whole-frame vectors, and one encrypted frame written by hand: header bytes
+// from 2.1, the key MD5("K40T bridge" "123456" "0123456789abcdef0123456789abcdef"
+// "dev@example.com") computed with Python's hashlib, the ciphertext with `openssl enc -aes-128-ecb
+// -nopad`, the CRCs with test/data/psdk_frame_crc.py.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -18,7 +18,7 @@ std::vector<uint8_t> bytes_of(const EncodedFrame& f) {
   return {f.data(), f.data() + f.size()};
 }
 
-using testing::kGetVersion;  // psdk_crc.md's whole-frame vectors
+using testing::kGetVersion;  // docs/psdk.md#frames' whole-frame vectors
 using testing::kGetVersionAck;
 
 // 3.2.3 floating-window message "SD full" + NUL, seq 5, no ACK, AES (ENC 1 in bits 5-7 of byte 4)

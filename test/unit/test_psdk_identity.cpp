@@ -1,4 +1,4 @@
-// Identity verification (3.1.1, psdk_crc.md). Expected digests computed with Python:
+// Identity verification (3.1.1, docs/psdk.md#frames). Expected digests computed with Python:
 //   hashlib.md5(b"0123456789abcdef0123456789abcdef" + bytes(range(0x10, 0x20))).hexdigest()
 //     == "aebecdd8e8f8de15606640180aab9cb5"
 //   hashlib.md5(b"0123456789abcdef0123456789abcdef" + bytes([1,2,...,13])).hexdigest()

@@ -1,6 +1,6 @@
 // Conformance of the simulated pod, seen from a client built only on the core library (a Session
-// over the serial transport on the simulator's pty): every request of NOTES.md gets its ACK, and
-// the state it sets shows in the pod's reports, status frames and read-all answers.
+// over the serial transport on the simulator's pty): every request of the catalogue gets its ACK,
+// and the state it sets shows in the pod's reports, status frames and read-all answers.
 #include <gtest/gtest.h>
 
 #include <cmath>

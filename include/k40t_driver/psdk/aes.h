@@ -1,6 +1,7 @@
-// AES-128-ECB for encrypted PSDK frames (ENC = 1; protocol document section 2.3, psdk_crc.md),
-// through OpenSSL's EVP interface: every 16-byte block is encrypted on its own with one key, no
-// IV, no cipher-level padding (the frame's own zero padding makes DATA whole blocks).
+// AES-128-ECB for encrypted PSDK frames (ENC = 1; protocol document section 2.3,
+// docs/psdk.md#frames), through OpenSSL's EVP interface: every 16-byte block is encrypted on its
+// own with one key, no IV, no cipher-level padding (the frame's own zero padding makes DATA whole
+// blocks).
 //
 // Key material is wiped when the object dies and is never printed by anything in psdk/.
 #pragma once
@@ -42,8 +43,8 @@ struct Credentials {
   std::string developer_account;
 };
 
-// psdk_crc.md: the AES key is MD5(app name + app id + app key + developer account), the strings
-// concatenated without separators.
+// docs/psdk.md#frames: the AES key is MD5(app name + app id + app key + developer account), the
+// strings concatenated without separators.
 AesKey derive_aes_key(const Credentials& credentials);
 
 using Md5Digest = std::array<uint8_t, 16>;

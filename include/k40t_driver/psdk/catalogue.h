@@ -28,7 +28,7 @@ struct CommandInfo {
   Result<Data> (*reencode)(const uint8_t* data, size_t size) = nullptr;
 };
 
-// psdk_crc.md: what the payload encrypts (transparent data 0x02/0x02, floating-window text
+// docs/psdk.md#frames: what the payload encrypts (transparent data 0x02/0x02, floating-window text
 // 0x02/0x03, everything of set 0x06 and get-position 0x07/0x01).
 bool payload_encrypts(CommandKey key);
 

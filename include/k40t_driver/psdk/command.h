@@ -22,7 +22,7 @@
 //
 // encode_data() validates, then encodes (return code first for ACKs); decode_data() checks the
 // size and decodes without range checks (what the other side says is reported as is). An ACK whose
-// code is not OK may be the code alone (psdk_crc.md: "unsupported" is one byte).
+// code is not OK may be the code alone (docs/psdk.md#frames: "unsupported" is one byte).
 #pragma once
 
 #include <algorithm>

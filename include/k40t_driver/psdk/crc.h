@@ -1,5 +1,5 @@
-// The two checksums of a DJI PSDK v1 frame (psdk_crc.md; the protocol document names them but
-// does not define them):
+// The two checksums of a DJI PSDK v1 frame (docs/psdk.md#frames; the protocol document names them
+// but does not define them):
 //   CRC16 over the header (bytes 0..9): table built MSB-first from 0x1021, but updated with a
 //     right shift, crc = (crc >> 8) ^ table[(crc ^ byte) & 0xFF], start 0x3FDE, no final xor.
 //     No standard reflect-in/reflect-out parameter set reproduces it, so this is that exact loop.
@@ -28,7 +28,8 @@ inline uint32_t crc32(const uint8_t* data, size_t size) {
   return crc32_update(kCrc32Init, data, size) ^ kCrc32FinalXor;
 }
 
-// Table entry `index` (exposed for the tests that pin table[1] and table[2] to psdk_crc.md).
+// Table entry `index` (exposed for the tests that pin table[1] and table[2] to
+// docs/psdk.md#frames).
 uint16_t crc16_table_entry(uint8_t index);
 uint32_t crc32_table_entry(uint8_t index);
 

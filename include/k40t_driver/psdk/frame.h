@@ -1,4 +1,4 @@
-// The DJI PSDK v1 frame (protocol document section 2.1, psdk_crc.md, docs/psdk.md):
+// The DJI PSDK v1 frame (protocol document section 2.1, docs/psdk.md#frames, docs/psdk.md):
 //
 //   offset size
 //   0      1    SOF 0xAA
@@ -115,8 +115,8 @@ class EncodedFrame {
 
 // Builds a frame around `data` (header.padding is ignored and computed). With header.encryption
 // == kAes, DATA is zero-filled to a multiple of 16, the padding count goes in the header, and
-// `cipher` encrypts it after the CRC16 and before the CRC32 (psdk_crc.md). Fails, naming the
-// problem, for DATA over 256 bytes (after padding), AES without a cipher, or an encryption or
+// `cipher` encrypts it after the CRC16 and before the CRC32 (docs/psdk.md#frames). Fails, naming
+// the problem, for DATA over 256 bytes (after padding), AES without a cipher, or an encryption or
 // ACK-request value that does not fit its bits.
 Result<EncodedFrame> encode_frame(const FrameHeader& header, const uint8_t* data, size_t size,
                                   const Aes128Ecb* cipher = nullptr);

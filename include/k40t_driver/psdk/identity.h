@@ -1,7 +1,8 @@
-// Identity verification (0x01/0x01; protocol document 3.1.1, psdk_crc.md): the adapter sends 16
-// random bytes, the payload answers with the raw MD5 of its app key (ASCII) followed by the random
-// bytes up to the first 0x00. If 12 or fewer random bytes remain, the payload refuses (0x01).
-// Both roles are here: the payload answers, the adapter (simulator) checks. Keys are never logged.
+// Identity verification (0x01/0x01; protocol document 3.1.1, docs/psdk.md#frames): the adapter
+// sends 16 random bytes, the payload answers with the raw MD5 of its app key (ASCII) followed by
+// the random bytes up to the first 0x00. If 12 or fewer random bytes remain, the payload refuses
+// (0x01). Both roles are here: the payload answers, the adapter (simulator) checks. Keys are never
+// logged.
 #pragma once
 
 #include <string>

@@ -1,6 +1,6 @@
-// Our own commands waiting for their ACKs, matched on (sequence, cmd set, cmd id) as psdk_crc.md
-// says the requester must, each with a deadline. No I/O and no threads of its own: the session
-// feeds it ACKs and the clock. Thread-safe.
+// Our own commands waiting for their ACKs, matched on (sequence, cmd set, cmd id) as
+// docs/psdk.md#frames says the requester must, each with a deadline. No I/O and no threads of its
+// own: the session feeds it ACKs and the clock. Thread-safe.
 #pragma once
 
 #include <chrono>

@@ -3,9 +3,9 @@
 //
 // Incoming commands go to the handler registered for their (set, id). When the command asks for
 // an ACK, the handler's reply is sent as the ACK: it echoes the command's sequence, set and id,
-// and copies its encryption type (psdk_crc.md). A command nobody handles is answered with the
-// single byte 0x02 (unsupported). Incoming ACKs complete our own requests, matched on sequence +
-// set + id; a request with no ACK by its deadline completes with a timeout. Our sequence starts
+// and copies its encryption type (docs/psdk.md#frames). A command nobody handles is answered with
+// the single byte 0x02 (unsupported). Incoming ACKs complete our own requests, matched on sequence
+// + set + id; a request with no ACK by its deadline completes with a timeout. Our sequence starts
 // at 0 and increments per command we send.
 //
 // Threads: handlers run on the transport's I/O thread and must not block on request() (use
@@ -42,7 +42,7 @@ struct SessionOptions {
   // Set to encrypt and decrypt (ENC = 1) frames; without it encrypted frames cannot be read.
   std::optional<AesKey> aes_key;
   // Which of our own commands go out encrypted when a key is set. Empty: the payload role
-  // encrypts what psdk_crc.md lists (payload_encrypts()), the adapter role nothing.
+  // encrypts what docs/psdk.md#frames lists (payload_encrypts()), the adapter role nothing.
   std::function<bool(CommandKey)> encrypt;
 };
 

@@ -19,10 +19,10 @@ struct DriverOptions {
   // how long after the pod's return the topics resume.
   double reconnect_max_delay_s = 1.0;
 
-  // Codec decisions (NOTES A1-A5), ACK timeout and retries.
+  // Codec decisions (docs/protocol/decisions.md#a1-A5), ACK timeout and retries.
   session::SessionOptions session;
 
-  // Seconds between time syncs (0x00030E, NOTES A8); 0 disables.
+  // Seconds between time syncs (0x00030E, docs/protocol/decisions.md#a8); 0 disables.
   double time_sync_period_s = 10.0;
   // The time zone sent with every time sync (0x00030E, struct timezone's tz_minuteswest): the pod
   // names its files in local time. 0 = UTC; UTC+8 is -480. -840..720.

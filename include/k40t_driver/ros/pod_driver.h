@@ -1,7 +1,8 @@
 // The driver itself, without ROS: one pod link (a Session over the device URL, or in replay mode
 // a bare Dispatcher fed with recorded frames), every decoded message delivered to typed handlers
 // together with its honest stamp, and the link's background duties:
-//   - stamps: reception time of the frame's last byte minus its wire time (NOTES A10); in replay
+//   - stamps: reception time of the frame's last byte minus its wire time
+//   (docs/protocol/decisions.md#a10); in replay
 //     the recorded stamp;
 //   - time sync (0x00030E) every time_sync_period;
 //   - the gimbal rate command and its dead-man (RateCommander);

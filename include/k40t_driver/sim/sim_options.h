@@ -1,5 +1,6 @@
-// Command line of k40t_sim: where to serve, the NOTES decisions the pod follows, its world, the
-// faults it starts with, capture and the control socket. Arguments roslaunch adds (__name:=...,
+// Command line of k40t_sim: where to serve, the decisions (docs/protocol/decisions.md) the pod
+// follows, its world, the faults it starts with, capture and the control socket. Arguments
+// roslaunch adds (__name:=...,
 // __log:=...) are ignored. `--help` prints sim_usage().
 #pragma once
 

@@ -264,11 +264,11 @@ void AdapterSimulator::flush_delayed_acks() {
 
 IdentityResult AdapterSimulator::verify_identity() {
   // 3.1.1: 16 random bytes; the ACK is the code and MD5(app key + the random bytes) in bytes 2:17,
-  // read and checked here byte by byte (psdk_crc.md), not with the payload's identity code.
+  // read and checked here byte by byte (docs/psdk.md#frames), not with the payload's identity code.
   std::array<uint8_t, 16> random{};
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    std::uniform_int_distribution<int> nonzero(1, 255);  // all 16 bytes count (psdk_crc.md)
+    std::uniform_int_distribution<int> nonzero(1, 255);  // all 16 bytes count (docs/psdk.md#frames)
     for (uint8_t& b : random) b = static_cast<uint8_t>(nonzero(random_));
   }
   IdentityResult result;

@@ -34,7 +34,7 @@ TEST(PodDriver, StampIsReceptionMinusWireTime) {
     pod.send(attitude);
     std::this_thread::sleep_for(milliseconds(20));
   }
-  // 20 payload bytes + 12 of frame, 10 bits each at 115200 baud (NOTES A10).
+  // 20 payload bytes + 12 of frame, 10 bits each at 115200 baud (docs/protocol/decisions.md#a10).
   const StampNs wire_ns = std::llround(32 * 10.0 / 115200.0 * 1e9);
   EXPECT_EQ(stamp.load(), kFixedNow - wire_ns);
 }

@@ -75,7 +75,8 @@ TEST(SkyportBridgeAnswers, AFullQueueAnswersBusyAtOnceAndCountsIt) {
 TEST(SkyportBridgeAnswers, ADeferredCommandWithoutTheAckBitGetsNoAck) {
   Rig rig;
   const uint64_t unexpected_before = rig.adapter->stats().session.late_acks;
-  // 3.5.3 return head sent as a command that asks for no ACK (header ACK bits 0, psdk_crc.md).
+  // 3.5.3 return head sent as a command that asks for no ACK (header ACK bits 0,
+  // docs/psdk.md#frames).
   ASSERT_TRUE(rig.adapter->session().send_raw(kReturnHead, nullptr, 0));
   ASSERT_TRUE(eventually([&] { return has_call(rig.pod, "center"); }));
   // Then one that asks. The worker answers in order: an ACK of the first would have come before

@@ -19,7 +19,7 @@ struct TransparentFromMobile : Command<CommandSet::kAppFunction, 0x01, Sender::k
   static constexpr const char* kSection = "3.2.1";
 };
 
-// 3.2.2: 1..128 bytes to the mobile app. No ACK. Encrypted by the payload (psdk_crc.md).
+// 3.2.2: 1..128 bytes to the mobile app. No ACK. Encrypted by the payload (docs/psdk.md#frames).
 struct TransparentToMobile : Command<CommandSet::kAppFunction, 0x02, Sender::kPayload, NoAck>,
                              OpaqueData<1, kMaxTransparentToMobile> {
   static constexpr const char* kName = "transparent_to_mobile";
@@ -27,7 +27,7 @@ struct TransparentToMobile : Command<CommandSet::kAppFunction, 0x02, Sender::kPa
 };
 
 // 3.2.3: a UTF-8 line for DJI Pilot's floating window; on the wire the text and a terminating
-// NUL, 1..128 bytes in all. No ACK. Encrypted by the payload (psdk_crc.md).
+// NUL, 1..128 bytes in all. No ACK. Encrypted by the payload (docs/psdk.md#frames).
 struct FloatingWindowMessage : Command<CommandSet::kAppFunction, 0x03, Sender::kPayload, NoAck> {
   static constexpr const char* kName = "floating_window_message";
   static constexpr const char* kSection = "3.2.3";

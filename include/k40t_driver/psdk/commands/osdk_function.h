@@ -15,7 +15,8 @@ struct TransparentFromOnboard : Command<CommandSet::kOsdkFunction, 0x01, Sender:
   static constexpr const char* kSection = "3.6.1";
 };
 
-// 3.6.2: 1..255 bytes to the onboard computer. No ACK. Encrypted by the payload (psdk_crc.md).
+// 3.6.2: 1..255 bytes to the onboard computer. No ACK. Encrypted by the payload
+// (docs/psdk.md#frames).
 struct TransparentToOnboard : Command<CommandSet::kOsdkFunction, 0x02, Sender::kPayload, NoAck>,
                               OpaqueData<1, kMaxOsdkTransparent> {
   static constexpr const char* kName = "transparent_to_onboard";

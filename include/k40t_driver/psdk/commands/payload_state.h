@@ -1,4 +1,4 @@
-// Payload state command set 0x01 (protocol document section 3.1, psdk_crc.md's reply table):
+// Payload state command set 0x01 (protocol document section 3.1, docs/psdk.md#frames' reply table):
 // the adapter asks, the payload answers.
 #pragma once
 

@@ -101,7 +101,7 @@ struct GetPositionAck : Reply<CommandSet::kPositioning, 0x01, Sender::kAdapter> 
   void describe(FieldSink& sink) const;
 };
 
-// 3.7.1: 1..5 points. Encrypted by the payload (psdk_crc.md).
+// 3.7.1: 1..5 points. Encrypted by the payload (docs/psdk.md#frames).
 struct GetPosition : Command<CommandSet::kPositioning, 0x01, Sender::kPayload, GetPositionAck> {
   static constexpr const char* kName = "get_position";
   static constexpr const char* kSection = "3.7.1";
