@@ -246,7 +246,8 @@ sensor_msgs::Range to_range(double distance_m, const ros::Time& stamp, const Fra
 }
 
 sensor_msgs::NavSatFix to_nav_sat_fix(const protocol::TargetGpsAck& target, const ros::Time& stamp,
-                                      const FrameIds& ids) {
+                                      const FrameIds& ids,
+                                      const boost::array<double, 9>& covariance) {
   sensor_msgs::NavSatFix fix;
   fix.header = header(stamp, ids.laser);
   fix.status.status = target.code == protocol::ResponseCode::kOk
@@ -260,6 +261,9 @@ sensor_msgs::NavSatFix to_nav_sat_fix(const protocol::TargetGpsAck& target, cons
       target.latitude_deg, target.longitude_deg, target.altitude_m);
   fix.altitude = ellipsoid ? ellipsoid.value() : std::numeric_limits<double>::quiet_NaN();
   fix.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN;
+  if (covariance[0] < 0 || covariance[4] < 0 || covariance[8] < 0) return fix;
+  fix.position_covariance = covariance;
+  fix.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_APPROXIMATED;
   return fix;
 }
 

@@ -18,7 +18,7 @@ import unittest
 import rospy
 import rostest
 from geometry_msgs.msg import TwistStamped
-from sensor_msgs.msg import CameraInfo, Imu, JointState, NavSatFix
+from sensor_msgs.msg import CameraInfo, Imu, JointState, NavSatFix, NavSatStatus
 
 from k40t_driver.msg import LaserTarget
 from k40t_driver.srv import LocatePixel, LocatePixelRequest, MeasureRange, SetAngle, TakePhoto
@@ -256,6 +256,12 @@ class GeoTest(unittest.TestCase):
         self.assertAlmostEqual(report.altitude - report.altitude_msl, undulation, delta=0.5)
         self.assertTrue(math.isfinite(report.relative_height))
         self.assertEqual(len(report.position_covariance), 9)
+        # laser/target carries the same approximated covariance (the vehicle has a fix here).
+        target = self.pod_target.wait_for_match(
+            lambda m: m.status.status == NavSatStatus.STATUS_FIX, timeout=10.0)
+        self.assertTrue(target, "no laser/target with a fix")
+        self.assertEqual(target.position_covariance_type, NavSatFix.COVARIANCE_TYPE_APPROXIMATED)
+        self.assertGreater(min(target.position_covariance[i] for i in (0, 4, 8)), 0.0)
 
     def test_locate_pixel_errors_are_clear(self):
         up = LocatePixelRequest(u=960.0, v=0.0, plane_reference=LocatePixelRequest.ABOVE_TAKEOFF,

@@ -103,9 +103,12 @@ k40t_driver::RecordStatus to_msg(const protocol::RecordStatus& status, const ros
 // A laser distance (0 = no return, published as +Inf per REP 117).
 sensor_msgs::Range to_range(double distance_m, const ros::Time& stamp, const FrameIds& ids,
                             const RangeLimits& limits);
-// The laser target's position (0x010320).
+// The laser target's position (0x010320) with `covariance` (ENU m^2, laser/target_report's
+// approximation) as COVARIANCE_TYPE_APPROXIMATED; a negative diagonal (the report's "no fix")
+// gives COVARIANCE_TYPE_UNKNOWN and zeros.
 sensor_msgs::NavSatFix to_nav_sat_fix(const protocol::TargetGpsAck& target, const ros::Time& stamp,
-                                      const FrameIds& ids);
+                                      const FrameIds& ids,
+                                      const boost::array<double, 9>& covariance);
 
 k40t_driver::Frame to_frame_msg(const uint8_t* bytes, size_t size, const ros::Time& stamp,
                                 uint8_t direction);

@@ -102,13 +102,16 @@ void advertise_decoded_topics(Sink& sink, PodDriver& driver, const RosPodConfig&
   };
   driver.on<p::LaserRangeAck>(publish_range);
   driver.on<p::LaserPeriodicRangeStatus>(publish_range);
-  forward(
-      Tag<p::TargetGpsAck>{}, "laser/target",
-      [ids](const p::TargetGpsAck& m, const ros::Time& t) { return to_nav_sat_fix(m, t, ids); });
-  // Every field of that answer (docs/geo.md); the covariance needs the vehicle state at its time.
+  // The laser target (0x010320): its position, and every field of the answer (docs/geo.md); both
+  // carry the same covariance, approximated from the vehicle state at the answer's time.
+  auto target = sink.template advertise<sensor_msgs::NavSatFix>("laser/target", 10, false);
   auto report = sink.template advertise<k40t_driver::LaserTarget>("laser/target_report", 10, false);
-  driver.on<p::TargetGpsAck>([report, ids, &driver](const p::TargetGpsAck& m, StampNs s) {
-    report(to_laser_target(m, to_ros_time(s), ids.laser, driver.vehicle_state_at(s)));
+  driver.on<p::TargetGpsAck>([target, report, ids, &driver](const p::TargetGpsAck& m, StampNs s) {
+    const ros::Time t = to_ros_time(s);
+    const k40t_driver::LaserTarget full =
+        to_laser_target(m, t, ids.laser, driver.vehicle_state_at(s));
+    target(to_nav_sat_fix(m, t, ids, full.position_covariance));
+    report(full);
   });
 }
 

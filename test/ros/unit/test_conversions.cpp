@@ -8,6 +8,7 @@
 
 #include "k40t_driver/ros/conversions.h"
 #include "k40t_driver/ros/driver_options.h"
+#include "k40t_driver/ros/geo_glue.h"
 
 namespace k40t::driver {
 namespace {
@@ -88,6 +89,36 @@ TEST(Range, NoReturnIsPlusInfinityInTheLaserFrame) {
   EXPECT_FLOAT_EQ(hit.range, 123.4f);
   EXPECT_FLOAT_EQ(hit.min_range, limits.min_range);
   EXPECT_FLOAT_EQ(hit.max_range, limits.max_range);
+}
+
+// laser/target carries laser/target_report's covariance: approximated with a vehicle fix,
+// unknown (zeros) without one, as the report's all -1 says.
+TEST(LaserTarget, NavSatFixCarriesTheReportsCovariance) {
+  protocol::TargetGpsAck ack;
+  ack.latitude_deg = 22.5;
+  ack.longitude_deg = 113.9;
+  ack.altitude_m = 10.0;
+  VehicleState vehicle;
+  vehicle.has_fix = true;
+  vehicle.latitude_deg = 22.5;
+  vehicle.longitude_deg = 113.9;
+  vehicle.altitude_m = 400.0;  // far above the target: a slant of a few hundred metres
+  const k40t_driver::LaserTarget report = to_laser_target(ack, ros::Time(3), "laser", vehicle);
+  ASSERT_GT(report.position_covariance[0], vehicle.position_covariance[0]);
+  const sensor_msgs::NavSatFix fix =
+      to_nav_sat_fix(ack, ros::Time(3), FrameIds(), report.position_covariance);
+  EXPECT_EQ(fix.position_covariance_type, sensor_msgs::NavSatFix::COVARIANCE_TYPE_APPROXIMATED);
+  for (size_t i = 0; i < 9; ++i)
+    EXPECT_EQ(fix.position_covariance[i], report.position_covariance[i]);
+  EXPECT_EQ(fix.status.status, sensor_msgs::NavSatStatus::STATUS_FIX);
+
+  const k40t_driver::LaserTarget blind =
+      to_laser_target(ack, ros::Time(3), "laser", VehicleState());
+  ASSERT_EQ(blind.position_covariance[0], -1.0);
+  const sensor_msgs::NavSatFix unknown =
+      to_nav_sat_fix(ack, ros::Time(3), FrameIds(), blind.position_covariance);
+  EXPECT_EQ(unknown.position_covariance_type, sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN);
+  for (double c : unknown.position_covariance) EXPECT_EQ(c, 0.0);
 }
 
 TEST(ThermalStats, DegreesCoordinatesAndAlarms) {
