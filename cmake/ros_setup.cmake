@@ -1,7 +1,7 @@
 # catkin: messages, services, dynamic_reconfigure and catkin_package(). Included before any
 # target so that catkin's output directories apply to every executable (rosrun k40t_driver k40t).
 set(K40T_CATKIN_COMPONENTS
-  roscpp nodelet pluginlib std_msgs std_srvs sensor_msgs geometry_msgs diagnostic_msgs
+  roscpp nodelet pluginlib std_msgs std_srvs sensor_msgs geometry_msgs nav_msgs diagnostic_msgs
   diagnostic_updater dynamic_reconfigure tf2 tf2_ros actionlib actionlib_msgs message_generation)
 find_package(catkin REQUIRED COMPONENTS ${K40T_CATKIN_COMPONENTS})
 
@@ -22,6 +22,6 @@ add_custom_command(OUTPUT ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_INCLUDE_DESTIN
 catkin_package(
   INCLUDE_DIRS include
   LIBRARIES k40t_ros k40t_ros_video k40t_ros_skyport
-  CATKIN_DEPENDS roscpp nodelet pluginlib std_msgs std_srvs sensor_msgs geometry_msgs
+  CATKIN_DEPENDS roscpp nodelet pluginlib std_msgs std_srvs sensor_msgs geometry_msgs nav_msgs
                  diagnostic_msgs diagnostic_updater dynamic_reconfigure tf2 tf2_ros actionlib actionlib_msgs
                  message_runtime)

@@ -11,7 +11,7 @@ packages=(
   libtf2-ros-dev libtf2-geometry-msgs-dev libimage-transport-dev libcamera-info-manager-dev
   libdiagnostic-updater-dev libcv-bridge-dev libopencv-dev python3-dynamic-reconfigure
   libdynamic-reconfigure-config-init-mutex-dev ros-robot-state-publisher
-  ros-std-srvs libstd-srvs-dev ros-sensor-msgs libsensor-msgs-dev
+  ros-std-srvs libstd-srvs-dev ros-sensor-msgs libsensor-msgs-dev ros-nav-msgs libnav-msgs-dev
   python3-sensor-msgs python3-diagnostic-msgs python3-std-srvs python3-nodelet
   python3-tf2-ros python3-tf2-msgs libdiagnostic-aggregator-dev libdiagnostic-aggregator-tools
   socat libssl-dev ccache rviz xvfb

@@ -2,6 +2,7 @@
 
 #include <ros/console.h>
 
+#include "k40t_driver/geo/body_velocity.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/ros/conversions.h"
 
@@ -27,6 +28,7 @@ CommandInput::CommandInput(ros::NodeHandle nh, PodDriver& driver) : driver_(driv
       nh.subscribe("time_reference", 1, &CommandInput::on_time_reference, this, hints);
   // Queues of 10: every sample counts for the history, not only the latest.
   velocity_ = nh.subscribe("velocity", 10, &CommandInput::on_velocity, this, hints);
+  velocity_odom_ = nh.subscribe("velocity_odom", 10, &CommandInput::on_velocity_odom, this, hints);
 }
 
 void CommandInput::on_cmd_angle(const geometry_msgs::Vector3Stamped::ConstPtr& msg) {
@@ -70,6 +72,18 @@ void CommandInput::on_velocity(const geometry_msgs::TwistStamped::ConstPtr& msg)
     return;
   }
   driver_.record_velocity(stamp_of(msg->header), {v.x, v.y, v.z});
+}
+
+void CommandInput::on_velocity_odom(const nav_msgs::Odometry::ConstPtr& msg) {
+  const geometry_msgs::Quaternion& q = msg->pose.pose.orientation;
+  const geometry_msgs::Vector3& v = msg->twist.twist.linear;
+  const Result<geo::VelocitySample> enu =
+      geo::enu_velocity_from_body({q.x, q.y, q.z, q.w}, v.x, v.y, v.z);
+  if (!enu) {
+    ROS_WARN_THROTTLE(5.0, "velocity_odom: %s", enu.error().c_str());
+    return;
+  }
+  driver_.record_velocity(stamp_of(msg->header), enu.value());
 }
 
 void CommandInput::on_time_reference(const sensor_msgs::TimeReference::ConstPtr& msg) {

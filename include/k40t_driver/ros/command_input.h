@@ -8,6 +8,9 @@
 //   fix               sensor_msgs/NavSatFix  the vehicle's position }  answers to the pod's GPS
 //   attitude          sensor_msgs/Imu        its orientation (ENU)  }  requests, laser-target
 //   velocity          geometry_msgs/TwistStamped  its velocity, linear in ENU (optional) }
+//   velocity_odom     nav_msgs/Odometry  the same from odometry (optional): twist in the body
+//                     (child_frame_id, REP 105), turned into ENU by the message's own
+//                     orientation (its header.frame_id taken as ENU)                  }
 //                     requests; each also goes into the history the GPS answers are
 //                     interpolated in (stamps: header.stamp; 0 = time of arrival)
 //   time_reference    sensor_msgs/TimeReference  a better clock (time_ref at header.stamp): the
@@ -20,6 +23,7 @@
 #include <geometry_msgs/Twist.h>
 #include <geometry_msgs/TwistStamped.h>
 #include <geometry_msgs/Vector3Stamped.h>
+#include <nav_msgs/Odometry.h>
 #include <ros/node_handle.h>
 #include <ros/subscriber.h>
 #include <sensor_msgs/Imu.h>
@@ -41,11 +45,13 @@ class CommandInput {
   void on_attitude(const sensor_msgs::Imu::ConstPtr& msg);
   void on_time_reference(const sensor_msgs::TimeReference::ConstPtr& msg);
   void on_velocity(const geometry_msgs::TwistStamped::ConstPtr& msg);
+  void on_velocity_odom(const nav_msgs::Odometry::ConstPtr& msg);
 
   PodDriver& driver_;
   std::mutex mutex_;
   double reference_altitude_m_ = std::nan("");
-  ros::Subscriber cmd_angle_, cmd_rate_, fix_, attitude_, time_reference_, velocity_;
+  ros::Subscriber cmd_angle_, cmd_rate_, fix_, attitude_, time_reference_, velocity_,
+      velocity_odom_;
 };
 
 }  // namespace k40t::driver
