@@ -9,6 +9,7 @@
 #include <condition_variable>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -50,6 +51,12 @@ class FakePod : public PodPort {
     state_.recording = recording;
   }
   void refuse(bool refuse) { refuse_ = refuse; }
+  // The gimbal's joints and attitude, REP 103 radians (pod_port.h); no attitude with nullopt.
+  void set_gimbal(double pitch_rad, double yaw_rad, std::optional<double> attitude_pitch_rad,
+                  std::optional<double> attitude_yaw_rad) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    gimbal_ = {pitch_rad, yaw_rad, attitude_pitch_rad, attitude_yaw_rad};
+  }
   // Every pod call waits until release() (a pod that takes long, or an unplugged one whose
   // driver waits for its timeout); `held()` counts the calls waiting now.
   void hold() {
@@ -169,12 +176,12 @@ class FakePod : public PodPort {
   PodSnapshot snapshot() const override {
     std::lock_guard<std::mutex> lock(mutex_);
     PodSnapshot s = state_;
-    s.have_joints = s.have_camera = s.have_visible = s.have_attitude = true;
-    s.pitch_rad = 30 * M_PI / 180;  // REP 103: looking 30 degrees down
-    s.yaw_rad = -20 * M_PI / 180;   // turned 20 degrees right
-    // The attitude: the aircraft heads 90 degrees east, so the pod looks 110 degrees from north.
-    s.attitude_pitch_rad = s.pitch_rad;
-    s.attitude_yaw_rad = -110 * M_PI / 180;
+    s.have_joints = s.have_camera = s.have_visible = true;
+    s.pitch_rad = gimbal_.pitch_rad;
+    s.yaw_rad = gimbal_.yaw_rad;
+    s.have_attitude = gimbal_.attitude_pitch_rad && gimbal_.attitude_yaw_rad;
+    s.attitude_pitch_rad = gimbal_.attitude_pitch_rad.value_or(0);
+    s.attitude_yaw_rad = gimbal_.attitude_yaw_rad.value_or(0);
     return s;
   }
 
@@ -207,6 +214,13 @@ class FakePod : public PodPort {
   std::chrono::steady_clock::time_point storing_until_{};
   std::vector<std::string> calls_;
   PodSnapshot state_;
+  struct Gimbal {
+    double pitch_rad, yaw_rad;
+    std::optional<double> attitude_pitch_rad, attitude_yaw_rad;
+  };
+  // REP 103: looking 30 degrees down, turned 20 degrees right; the aircraft heads 90 degrees
+  // east, so the pod looks 110 degrees from north, 30 degrees down.
+  Gimbal gimbal_{30 * M_PI / 180, -20 * M_PI / 180, 30 * M_PI / 180, -110 * M_PI / 180};
   std::atomic<bool> refuse_{false};
   std::mutex gate_mutex_;
   std::condition_variable gate_;
