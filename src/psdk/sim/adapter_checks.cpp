@@ -353,10 +353,9 @@ CheckReport AdapterSimulator::check_gimbal() {
       },
       &last, &why);
   report.add("gimbal_reaches_angle", reached,
-             angles_text(last) +
-                 (reached ? ""
-                          : ", " + why + ", " +
-                                expected_text(expect.after_angle(20.0, command_s, elapsed_s()))));
+             angles_text(last) + ", " +
+                 expected_text(expect.after_angle(20.0, command_s, elapsed_s())) +
+                 (reached ? "" : ", " + why));
 
   // 3.5.4: int16 rates in 0.1 deg/s (pitch, roll, yaw), then the action (1 control, 0 stop).
   exchange(s, report, kGimbalSpeed, Request().i16(0).i16(0).i16(100).u8(1), "yaw at 10 deg/s");
@@ -370,8 +369,8 @@ CheckReport AdapterSimulator::check_gimbal() {
       },
       &last, &why);
   report.add("gimbal_returns_to_centre", centred,
-             angles_text(last) +
-                 (centred ? "" : ", " + why + ", " + expected_text(expect.centred(elapsed_s()))));
+             angles_text(last) + ", " + expected_text(expect.centred(elapsed_s())) +
+                 (centred ? "" : ", " + why));
 
   exchange(s, report, kCalibrate, Request(), "calibration");
   exchange(s, report, kCalibrationProgress, Request(), "calibration progress",
