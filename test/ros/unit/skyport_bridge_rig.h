@@ -158,14 +158,20 @@ class FakePod : public PodPort {
   PodCall set_angle(double pitch, double yaw) override {
     char text[64];
     std::snprintf(text, sizeof text, "angle %.4f %.4f", pitch, yaw);
-    return log(text);
+    const PodCall r = log(text);
+    if (r.ok) move_gimbal(pitch, yaw);
+    return r;
   }
   PodCall set_rate(double pitch, double yaw) override {
     char text[64];
     std::snprintf(text, sizeof text, "rate %.4f %.4f", pitch, yaw);
     return log(text);
   }
-  PodCall center() override { return log("center"); }
+  PodCall center() override {
+    const PodCall r = log("center");
+    if (r.ok) move_gimbal(0, 0);
+    return r;
+  }
   PodCall calibrate() override { return log("calibrate"); }
   PodCall set_palette(int p) override { return log("palette " + std::to_string(p)); }
   PodCall set_image_mode(int m) override { return log("image mode " + std::to_string(m)); }
@@ -186,6 +192,14 @@ class FakePod : public PodPort {
   }
 
  private:
+  // The joints arrive at once; the attitude keeps its offset from them (the aircraft's heading).
+  void move_gimbal(double pitch_rad, double yaw_rad) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (gimbal_.attitude_pitch_rad) *gimbal_.attitude_pitch_rad += pitch_rad - gimbal_.pitch_rad;
+    if (gimbal_.attitude_yaw_rad) *gimbal_.attitude_yaw_rad += yaw_rad - gimbal_.yaw_rad;
+    gimbal_.pitch_rad = pitch_rad;
+    gimbal_.yaw_rad = yaw_rad;
+  }
   PodCall log(const std::string& call) {
     wait_gate();
     std::lock_guard<std::mutex> lock(mutex_);
@@ -231,7 +245,8 @@ class FakePod : public PodPort {
 struct Rig {
   explicit Rig(const Credentials& payload_credentials = kCredentials,
                double photo_storing_s = BridgeOptions{}.photo_storing_s,
-               const std::function<void(BridgeOptions&)>& tweak = nullptr) {
+               const std::function<void(BridgeOptions&)>& tweak = nullptr,
+               psdk::sim::PayloadReading reading = psdk::sim::PayloadReading::kDjiHeaders) {
     auto adapter_link = std::make_unique<FakeLink>();
     auto payload_link = std::make_unique<FakeLink>();
     FakeLink::pair(*adapter_link, *payload_link);
@@ -245,6 +260,7 @@ struct Rig {
     bridge = std::make_unique<SkyportBridge>(*payload, pod, bridge_options, nullptr, nullptr);
     AdapterOptions adapter_options;
     adapter_options.credentials = kCredentials;
+    adapter_options.reading = reading;
     adapter_options.encryption = payload_credentials.app_key == kCredentials.app_key;
     adapter = std::make_unique<AdapterSimulator>(std::move(adapter_link), adapter_options);
     EXPECT_TRUE(payload->start());

@@ -128,5 +128,36 @@ TEST(SkyportGimbalFrame, JointLayoutDrivesTheJointsAsGiven) {
   EXPECT_NEAR(state_angles(rig).yaw_deg, 20, 0.1);  // the joint, not the attitude's 110
 }
 
+// skyport_sim's own gimbal check (set the angle, poll the state, return head, poll again) passes
+// with the bridge and the adapter agreeing on either layout. The adapter's flight heads north
+// while it climbs (these checks end well within its 10 s), so the pod heads north too.
+TEST(SkyportGimbalFrame, TheAdaptersCheckPassesInEitherLayout) {
+  for (const auto& [layout, reading] :
+       {std::pair{PsdkLayout::kDjiHeaders, psdk::sim::PayloadReading::kDjiHeaders},
+        std::pair{PsdkLayout::kDocument, psdk::sim::PayloadReading::kDocument}}) {
+    Rig rig(
+        kCredentials, BridgeOptions{}.photo_storing_s,
+        [layout = layout](BridgeOptions& o) {
+          o.gimbal_angle_layout = o.gimbal_mode_layout = layout;
+        },
+        reading);
+    rig.pod.set_gimbal(0, 0, 0, 0);
+    const psdk::sim::CheckReport report = rig.adapter->check_gimbal();
+    EXPECT_TRUE(report.passed()) << to_string(layout) << ": " << report.summary();
+  }
+}
+
+// A pod whose attitude says the aircraft heads east while the adapter's flies north: the NED
+// state is 90 degrees off what the adapter set, and its check says so (it can fail).
+TEST(SkyportGimbalFrame, TheAdaptersCheckFailsOnAHeadingItsFlightDoesNotHave) {
+  Rig rig = rig_with_angles(PsdkLayout::kDjiHeaders);
+  // Joints 0, attitude yaw 90 right (REP 103: -90 deg).
+  rig.pod.set_gimbal(0, 0, 0, -M_PI / 2);
+  const psdk::sim::CheckReport report = rig.adapter->check_gimbal();
+  EXPECT_FALSE(report.passed());
+  EXPECT_NE(report.summary().find("FAIL gimbal_returns_to_centre"), std::string::npos)
+      << report.summary();
+}
+
 }  // namespace
 }  // namespace k40t::driver::skyport
