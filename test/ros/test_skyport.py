@@ -77,6 +77,11 @@ def manager_rss_kb():
     raise AssertionError("no VmRSS for pid %d" % pid)
 
 
+def wrap_deg(deg):
+    """An angle in degrees brought into [-180, 180)."""
+    return (deg + 180.0) % 360.0 - 180.0
+
+
 def pod_status_number(status, key):
     """A number after `key` in k40t_sim's status line ('... yaw 12.3 pitch -4 zoom 2x ...')."""
     words = status.replace("|", " ").split()
@@ -359,19 +364,45 @@ class Skyport(unittest.TestCase):
 
     # --- gimbal ----------------------------------------------------------------------------------
 
-    def test_gimbal_angle(self):
-        # DJI signs: pitch -30 = 30 degrees down, yaw +20 = 20 degrees right.
-        self.command_ok("gimbal -30 0 20")
-        reached = lambda: (abs(pod_status_number(self.pod_status(), "pitch") + 30) < 1.0 and
-                           abs(pod_status_number(self.pod_status(), "yaw") - 20) < 1.0)
-        self.assertTrue(wait_until(reached, 20.0), self.pod_status())
+    def pod_heading(self):
+        """The aircraft heading k40t_sim uses (degrees from north, clockwise), once it has held for
+        0.3 s: the bridge's view of the pod's attitude lags the pod by a fraction of that."""
+        heading = pod_status_number(self.pod.ok("truth"), "heading")
+        for _ in range(10):
+            time.sleep(0.3)
+            again = pod_status_number(self.pod.ok("truth"), "heading")
+            if again == heading:
+                return heading
+            heading = again
+        return heading
 
+    def test_gimbal_angle(self):
+        # NED (gimbal_angle_layout dji_headers, the default; docs/psdk.md P28): pitch -30 = 30
+        # degrees down, yaw +20 = 20 degrees right of north. The bridge aims the pod's joints at
+        # 20 minus the heading the pod knows (fed once a second from the circling flight), so the
+        # joint yaw k40t_sim reports ends at 20 minus a heading between those read before and after.
+        before = self.pod_heading()
+        self.command_ok("gimbal -30 0 20")
+        after = pod_status_number(self.pod.ok("truth"), "heading")
+        turned = wrap_deg(after - before)  # the flight turns clockwise: >= 0
+
+        def joints_there():
+            status = self.pod_status()
+            offset = wrap_deg(20 - pod_status_number(status, "yaw") - before)
+            return (abs(pod_status_number(status, "pitch") + 30) < 1.0 and
+                    -1.0 < offset < turned + 1.0)
+        self.assertTrue(wait_until(joints_there, 20.0),
+                        "%s (heading %.1f..%.1f)" % (self.pod_status(), before, after))
+
+        # The state reads the NED attitude: the joint yaw plus the heading the pod knows now.
         def state_reached():
             code, data = self.command("gimbal_state")
             if code != 0:
                 return False
             pitch, roll, yaw = struct.unpack("<hhh", data[2:8])
-            return abs(pitch / 10.0 + 30) < 1.5 and abs(yaw / 10.0 - 20) < 1.5
+            status = self.pod_status()
+            ned_yaw = pod_status_number(status, "yaw") + pod_status_number(self.pod.ok("truth"), "heading")
+            return abs(pitch / 10.0 + 30) < 1.5 and abs(wrap_deg(yaw / 10.0 - ned_yaw)) < 1.5
         self.assertTrue(wait_until(state_reached, 10.0), "gimbal state: %s" % self.skyport("gimbal_state"))
         code, _ = self.command("gimbal 0 10 0")  # the pod takes no roll command
         self.assertEqual(code, 0x01)

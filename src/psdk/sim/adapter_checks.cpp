@@ -7,6 +7,7 @@
 
 #include "k40t_driver/psdk/sim/adapter_simulator.h"
 #include "k40t_driver/psdk/sim/adapter_table.h"
+#include "k40t_driver/psdk/sim/gimbal_expectation.h"
 #include "k40t_driver/psdk/sim/payload_reading.h"
 
 namespace k40t::psdk::sim {
@@ -108,6 +109,10 @@ constexpr CommandKey kGimbalState{0x05, 0x01}, kGimbalMode{0x05, 0x02}, kReturnH
 std::string angles_text(const GimbalStateReading& a) {
   return "pitch " + std::to_string(a.pitch_deg) + ", roll " + std::to_string(a.roll_deg) +
          ", yaw " + std::to_string(a.yaw_deg) + " deg";
+}
+
+std::string expected_text(const ExpectedYaw& e) {
+  return "yaw expected " + std::to_string(e.yaw_deg) + " +- " + std::to_string(e.tolerance_deg);
 }
 
 // The gimbal state read with the adapter's own table (payload_reading.h).
@@ -331,18 +336,26 @@ CheckReport AdapterSimulator::check_gimbal() {
     report.add("set_gimbal_mode", answered,
                "mode: free: " + (r.received ? ack_code_text(r.code()) : r.message));
   }
-  // 3.5.5: floats in degrees, pitch, roll, yaw.
+  // 3.5.5: floats in degrees, pitch, roll, yaw; in the payload's frame (P28): read back as set
+  // with joint angles, with the heading's turn since the command in NED (gimbal_expectation.h).
+  // The simulated pod is level: its NED pitch is its joint pitch.
+  const GimbalExpectation expect(flight_, options_.reading == PayloadReading::kDjiHeaders, 2.0);
+  const double command_s = elapsed_s();
   exchange(s, report, kGimbalAngle, Request().f32(-30.0f).f32(0.0f).f32(20.0f),
            "angle pitch -30, yaw 20 deg");
   GimbalStateReading last;
   std::string why;
   const bool reached = poll_gimbal(
       s, options_.reading,
-      [](const GimbalStateReading& a) {
-        return std::abs(a.pitch_deg + 30.0) <= 2.0 && std::abs(a.yaw_deg - 20.0) <= 2.0;
+      [&](const GimbalStateReading& a) {
+        return std::abs(a.pitch_deg + 30.0) <= 2.0 &&
+               expect.after_angle(20.0, command_s, elapsed_s()).holds(a.yaw_deg);
       },
       &last, &why);
-  report.add("gimbal_reaches_angle", reached, angles_text(last) + (reached ? "" : ", " + why));
+  report.add("gimbal_reaches_angle", reached,
+             angles_text(last) + ", " +
+                 expected_text(expect.after_angle(20.0, command_s, elapsed_s())) +
+                 (reached ? "" : ", " + why));
 
   // 3.5.4: int16 rates in 0.1 deg/s (pitch, roll, yaw), then the action (1 control, 0 stop).
   exchange(s, report, kGimbalSpeed, Request().i16(0).i16(0).i16(100).u8(1), "yaw at 10 deg/s");
@@ -351,11 +364,13 @@ CheckReport AdapterSimulator::check_gimbal() {
   exchange(s, report, kReturnHead, Request(), "return head");
   const bool centred = poll_gimbal(
       s, options_.reading,
-      [](const GimbalStateReading& a) {
-        return std::abs(a.pitch_deg) <= 2.0 && std::abs(a.yaw_deg) <= 2.0;
+      [&](const GimbalStateReading& a) {
+        return std::abs(a.pitch_deg) <= 2.0 && expect.centred(elapsed_s()).holds(a.yaw_deg);
       },
       &last, &why);
-  report.add("gimbal_returns_to_centre", centred, angles_text(last) + (centred ? "" : ", " + why));
+  report.add("gimbal_returns_to_centre", centred,
+             angles_text(last) + ", " + expected_text(expect.centred(elapsed_s())) +
+                 (centred ? "" : ", " + why));
 
   exchange(s, report, kCalibrate, Request(), "calibration");
   exchange(s, report, kCalibrationProgress, Request(), "calibration progress",

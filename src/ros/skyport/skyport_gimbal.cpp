@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "k40t_driver/ros/skyport/gimbal_frame.h"
 #include "k40t_driver/ros/skyport/skyport_bridge.h"
 
 namespace k40t::driver::skyport {
@@ -100,8 +101,20 @@ void SkyportBridge::register_gimbal() {
                      " deg, but the pod's roll only stabilises");
     return pod_code(pod_.set_angle(-pitch_deg / kDegPerRad, -yaw_deg / kDegPerRad), "angle");
   };
-  deferred<ControlGimbalAngle>(
-      [angle](const ControlGimbalAngle& c) { return angle(c.pitch_deg, c.roll_deg, c.yaw_deg); });
+  // 3.5.5 names angles in the state's frame (P28): NED with `dji_headers`, converted to the
+  // joint target with the pod's offset now; joint angles with `document`.
+  deferred<ControlGimbalAngle>([this, angle](const ControlGimbalAngle& c) {
+    if (options_.gimbal_angle_layout != PsdkLayout::kDjiHeaders)
+      return angle(c.pitch_deg, c.roll_deg, c.yaw_deg);
+    const std::optional<GimbalTargetDeg> joint =
+        joint_target_from_ned({c.pitch_deg, c.yaw_deg}, pod_.snapshot());
+    if (!joint)
+      return invalid(
+          "gimbal angle: NED angles (gimbal_angle_layout dji_headers) need the pod's attitude "
+          "and joint angles, and the pod has not reported both yet");
+    return angle(joint->pitch_deg, c.roll_deg, joint->yaw_deg);
+  });
+  // 3.5.6: joint angles in either layout. Return head: the joints' centre in either layout.
   deferred<ControlGimbalJointAngle>([angle](const ControlGimbalJointAngle& c) {
     return angle(c.angles.pitch_deg, c.angles.roll_deg, c.angles.yaw_deg);
   });

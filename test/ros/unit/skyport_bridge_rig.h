@@ -9,6 +9,7 @@
 #include <condition_variable>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -50,6 +51,12 @@ class FakePod : public PodPort {
     state_.recording = recording;
   }
   void refuse(bool refuse) { refuse_ = refuse; }
+  // The gimbal's joints and attitude, REP 103 radians (pod_port.h); no attitude with nullopt.
+  void set_gimbal(double pitch_rad, double yaw_rad, std::optional<double> attitude_pitch_rad,
+                  std::optional<double> attitude_yaw_rad) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    gimbal_ = {pitch_rad, yaw_rad, attitude_pitch_rad, attitude_yaw_rad};
+  }
   // Every pod call waits until release() (a pod that takes long, or an unplugged one whose
   // driver waits for its timeout); `held()` counts the calls waiting now.
   void hold() {
@@ -151,14 +158,20 @@ class FakePod : public PodPort {
   PodCall set_angle(double pitch, double yaw) override {
     char text[64];
     std::snprintf(text, sizeof text, "angle %.4f %.4f", pitch, yaw);
-    return log(text);
+    const PodCall r = log(text);
+    if (r.ok) move_gimbal(pitch, yaw);
+    return r;
   }
   PodCall set_rate(double pitch, double yaw) override {
     char text[64];
     std::snprintf(text, sizeof text, "rate %.4f %.4f", pitch, yaw);
     return log(text);
   }
-  PodCall center() override { return log("center"); }
+  PodCall center() override {
+    const PodCall r = log("center");
+    if (r.ok) move_gimbal(0, 0);
+    return r;
+  }
   PodCall calibrate() override { return log("calibrate"); }
   PodCall set_palette(int p) override { return log("palette " + std::to_string(p)); }
   PodCall set_image_mode(int m) override { return log("image mode " + std::to_string(m)); }
@@ -169,16 +182,24 @@ class FakePod : public PodPort {
   PodSnapshot snapshot() const override {
     std::lock_guard<std::mutex> lock(mutex_);
     PodSnapshot s = state_;
-    s.have_joints = s.have_camera = s.have_visible = s.have_attitude = true;
-    s.pitch_rad = 30 * M_PI / 180;  // REP 103: looking 30 degrees down
-    s.yaw_rad = -20 * M_PI / 180;   // turned 20 degrees right
-    // The attitude: the aircraft heads 90 degrees east, so the pod looks 110 degrees from north.
-    s.attitude_pitch_rad = s.pitch_rad;
-    s.attitude_yaw_rad = -110 * M_PI / 180;
+    s.have_joints = s.have_camera = s.have_visible = true;
+    s.pitch_rad = gimbal_.pitch_rad;
+    s.yaw_rad = gimbal_.yaw_rad;
+    s.have_attitude = gimbal_.attitude_pitch_rad && gimbal_.attitude_yaw_rad;
+    s.attitude_pitch_rad = gimbal_.attitude_pitch_rad.value_or(0);
+    s.attitude_yaw_rad = gimbal_.attitude_yaw_rad.value_or(0);
     return s;
   }
 
  private:
+  // The joints arrive at once; the attitude keeps its offset from them (the aircraft's heading).
+  void move_gimbal(double pitch_rad, double yaw_rad) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (gimbal_.attitude_pitch_rad) *gimbal_.attitude_pitch_rad += pitch_rad - gimbal_.pitch_rad;
+    if (gimbal_.attitude_yaw_rad) *gimbal_.attitude_yaw_rad += yaw_rad - gimbal_.yaw_rad;
+    gimbal_.pitch_rad = pitch_rad;
+    gimbal_.yaw_rad = yaw_rad;
+  }
   PodCall log(const std::string& call) {
     wait_gate();
     std::lock_guard<std::mutex> lock(mutex_);
@@ -207,6 +228,13 @@ class FakePod : public PodPort {
   std::chrono::steady_clock::time_point storing_until_{};
   std::vector<std::string> calls_;
   PodSnapshot state_;
+  struct Gimbal {
+    double pitch_rad, yaw_rad;
+    std::optional<double> attitude_pitch_rad, attitude_yaw_rad;
+  };
+  // REP 103: looking 30 degrees down, turned 20 degrees right; the aircraft heads 90 degrees
+  // east, so the pod looks 110 degrees from north, 30 degrees down.
+  Gimbal gimbal_{30 * M_PI / 180, -20 * M_PI / 180, 30 * M_PI / 180, -110 * M_PI / 180};
   std::atomic<bool> refuse_{false};
   std::mutex gate_mutex_;
   std::condition_variable gate_;
@@ -217,7 +245,8 @@ class FakePod : public PodPort {
 struct Rig {
   explicit Rig(const Credentials& payload_credentials = kCredentials,
                double photo_storing_s = BridgeOptions{}.photo_storing_s,
-               const std::function<void(BridgeOptions&)>& tweak = nullptr) {
+               const std::function<void(BridgeOptions&)>& tweak = nullptr,
+               psdk::sim::PayloadReading reading = psdk::sim::PayloadReading::kDjiHeaders) {
     auto adapter_link = std::make_unique<FakeLink>();
     auto payload_link = std::make_unique<FakeLink>();
     FakeLink::pair(*adapter_link, *payload_link);
@@ -231,6 +260,7 @@ struct Rig {
     bridge = std::make_unique<SkyportBridge>(*payload, pod, bridge_options, nullptr, nullptr);
     AdapterOptions adapter_options;
     adapter_options.credentials = kCredentials;
+    adapter_options.reading = reading;
     adapter_options.encryption = payload_credentials.app_key == kCredentials.app_key;
     adapter = std::make_unique<AdapterSimulator>(std::move(adapter_link), adapter_options);
     EXPECT_TRUE(payload->start());

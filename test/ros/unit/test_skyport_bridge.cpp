@@ -99,7 +99,9 @@ TEST(SkyportBridge, CameraCheckPassesAgainstAPodStoringItsPhoto) {
 }
 
 TEST(SkyportBridge, GimbalAnglesAreConvertedToRep103) {
-  Rig rig;
+  // Joint angles (`document`): 3.5.5 drives the joints as given (NED: gimbal_frame tests).
+  Rig rig(kCredentials, BridgeOptions{}.photo_storing_s,
+          [](BridgeOptions& o) { o.gimbal_angle_layout = PsdkLayout::kDocument; });
   ControlGimbalAngle angle;  // DJI: pitch -30 = down, yaw +20 = right
   angle.pitch_deg = -30;
   angle.yaw_deg = 20;

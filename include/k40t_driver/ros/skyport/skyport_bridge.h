@@ -48,10 +48,11 @@ struct BridgeOptions {
   psdk::PsdkLayout gimbal_mode_layout = psdk::PsdkLayout::kDjiHeaders;
   psdk::PsdkLayout sd_card_layout = psdk::PsdkLayout::kDjiHeaders;
   psdk::PsdkLayout interval_layout = psdk::PsdkLayout::kDjiHeaders;
-  // 3.5.1's angles: the pod's attitude in NED (DJI's headers; kDjiHeaders) or its joint angles
-  // (kDocument: the document does not say which). Joint by default: the angle commands (3.5.5,
-  // 3.5.6) drive the joints, and the state must read back what they set (docs/psdk.md P28).
-  psdk::PsdkLayout gimbal_angle_layout = psdk::PsdkLayout::kDocument;
+  // 3.5.1's and 3.5.5's angles: the pod's attitude in NED (DJI's headers; kDjiHeaders, the
+  // default: both sources favour it, docs/psdk.md P28), 3.5.5 converted to the joint target with
+  // the pod's attitude-minus-joint offset (gimbal_frame.h); or joint angles (kDocument). 3.5.6 is
+  // joint angles either way.
+  psdk::PsdkLayout gimbal_angle_layout = psdk::PsdkLayout::kDjiHeaders;
   // Pod commands waiting for the worker at most; more are answered "busy" (0x01) at once.
   size_t max_queued_jobs = 8;
   // After the pod accepted a calibration, how long its repair report (0x000008) may stay away
