@@ -18,7 +18,8 @@ from k40t_driver.msg import (Frame, FormatSdAction, FormatSdGoal, GimbalCalibrat
                              GimbalMoveToAction, GimbalMoveToGoal, PreciseReshootAction, PreciseReshootGoal,
                              TfUpgradeAction, TfUpgradeGoal, VisibleStatus, ZoomToAction, ZoomToGoal)
 from k40t_driver.srv import SetZoom
-from k40t_test_support import BACKGROUND_IDS, Recorder, Run, SimControl, frame_id, name, service, wait_until
+from k40t_test_support import (BACKGROUND_IDS, Recorder, Run, SimControl, frame_id, ids_sent_since, name, service,
+                               wait_until)
 
 PKG = "k40t_driver"
 
@@ -66,14 +67,13 @@ class Actions(unittest.TestCase):
         # Python client with goals that end at once; the server's refusal is what is checked here.
         client = actionlib.SimpleActionClient(name(action), self.specs[action])
         self.assertTrue(client.wait_for_server(rospy.Duration(10.0)), "no action server " + action)
-        before = self.raw_tx.count()
+        start = rospy.Time.now()
         state, result = Run(client, goal).wait(5.0)
         time.sleep(0.2)  # anything sent would be on raw/tx by now
         self.assertEqual(state, GoalStatus.ABORTED, "%s accepted %s" % (action, goal))
         self.assertFalse(result.success)
         self.assertIn(field, result.message, "%s: the reason does not name '%s': %s" % (action, field, result.message))
-        sent = [frame_id(f.data) for f in self.raw_tx.messages()[before:]]
-        unexpected = [i for i in sent if i not in BACKGROUND_IDS]
+        unexpected = [i for i in ids_sent_since(self.raw_tx, start) if i not in BACKGROUND_IDS]
         self.assertEqual(unexpected, [], "%s sent %s for a bad goal" % (action, ["0x%06X" % i for i in unexpected]))
 
     def cancel_after(self, action, goal, seconds):
