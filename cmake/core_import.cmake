@@ -1,6 +1,6 @@
 # The ROS build on top of a finished ROS-free build (K40T_CORE_BUILD_DIR, written by
-# cmake/core_export.cmake): the same targets (k40t_core, k40t_psdk, k40t_video, k40t_sim_model and
-# the programs), imported rather than compiled again. What those targets link publicly is found
+# cmake/core_export.cmake): the same targets (k40t_core, k40t_psdk, k40t_skyport_bridge,
+# k40t_video, k40t_sim_model and the programs), imported rather than compiled again. What those targets link publicly is found
 # here first, as the ROS-free build found it.
 set(K40T_TARGETS_FILE ${K40T_CORE_BUILD_DIR}/k40t_targets.cmake)
 if(NOT EXISTS ${K40T_TARGETS_FILE})

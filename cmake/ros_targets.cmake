@@ -3,7 +3,8 @@
 #                     others share (parameters, conversions); no OpenCV, GStreamer or OpenSSL;
 #   k40t_ros_video    src/ros/video/: VideoNodelet, k40t_video_node (OpenCV, GStreamer,
 #                     image_transport, camera_info_manager; cmake/video_ros.cmake);
-#   k40t_ros_skyport  src/ros/skyport/: SkyportNodelet, k40t_skyport_node (the PSDK layer, OpenSSL);
+#   k40t_ros_skyport  src/ros/skyport/: SkyportNodelet, k40t_skyport_node, the ROS glue of the
+#                     ROS-free bridge k40t_skyport_bridge (src/skyport/; the PSDK layer, OpenSSL);
 #   k40t_rviz_panel   src/rviz/: the rviz panel PodPanel (Qt; cmake/rviz_panel.cmake).
 # The standalone nodes, k40t_manager and the rostest programs under test/ros/ link them.
 file(GLOB K40T_ROS_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/*.cpp)
@@ -17,7 +18,7 @@ target_link_libraries(k40t_ros PUBLIC k40t_core k40t_geo ${catkin_LIBRARIES})
 add_dependencies(k40t_ros ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg)
 
 add_library(k40t_ros_skyport SHARED ${K40T_ROS_SKYPORT_SOURCES})
-target_link_libraries(k40t_ros_skyport PUBLIC k40t_ros k40t_psdk)
+target_link_libraries(k40t_ros_skyport PUBLIC k40t_ros k40t_skyport_bridge)
 include(cmake/video_ros.cmake)  # k40t_ros_video
 include(cmake/bag.cmake)        # k40t_ros_bag, k40t_bag (`k40t bag`)
 include(cmake/rviz_panel.cmake)  # k40t_rviz_panel (Qt)
@@ -86,7 +87,7 @@ add_executable(k40t_service_rtt ${PROJECT_SOURCE_DIR}/bench/ros/service_rtt.cpp)
 target_link_libraries(k40t_service_rtt PRIVATE k40t_ros)
 # The SKYPORT bridge's getter ACK latency while a pod call is blocked (no ROS master needed).
 add_executable(k40t_skyport_getter_latency ${PROJECT_SOURCE_DIR}/bench/ros/skyport_getter_latency.cpp)
-target_link_libraries(k40t_skyport_getter_latency PRIVATE k40t_ros_skyport)
+target_link_libraries(k40t_skyport_getter_latency PRIVATE k40t_skyport_bridge)
 install(TARGETS k40t_bench_nodelets k40t_video_bench k40t_latency_probe k40t_service_rtt
                 k40t_skyport_getter_latency
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}

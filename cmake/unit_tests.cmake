@@ -10,6 +10,9 @@ endif()
 if(TARGET k40t_psdk)
   target_link_libraries(k40t_unit_tests PRIVATE k40t_psdk)
 endif()
+if(TARGET k40t_skyport_bridge)
+  target_link_libraries(k40t_unit_tests PRIVATE k40t_skyport_bridge)
+endif()
 target_compile_definitions(k40t_unit_tests PRIVATE
   K40T_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/test/data"
   K40T_BINARY_DIR="${CMAKE_RUNTIME_OUTPUT_DIRECTORY}")

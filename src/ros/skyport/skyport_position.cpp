@@ -5,8 +5,8 @@
 
 #include <ros/console.h>
 
-#include "k40t_driver/ros/skyport/position_request.h"
 #include "k40t_driver/ros/skyport/skyport_ros.h"
+#include "k40t_driver/skyport/position_request.h"
 
 namespace k40t::driver::skyport {
 

@@ -19,9 +19,9 @@
 #include "k40t_driver/geo/geodesy.h"
 #include "k40t_driver/psdk/commands/all.h"
 #include "k40t_driver/psdk/commands/header_variants.h"
-#include "k40t_driver/ros/skyport/position_request.h"
-#include "k40t_driver/ros/skyport/pps_rule.h"
 #include "k40t_driver/ros/skyport/skyport_ros.h"
+#include "k40t_driver/skyport/position_request.h"
+#include "k40t_driver/skyport/pps_rule.h"
 
 namespace k40t::driver::skyport {
 

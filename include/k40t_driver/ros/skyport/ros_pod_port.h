@@ -24,8 +24,8 @@
 #include "k40t_driver/PhotoStatus.h"
 #include "k40t_driver/RecordStatus.h"
 #include "k40t_driver/VisibleStatus.h"
-#include "k40t_driver/ros/skyport/commanded_value.h"
-#include "k40t_driver/ros/skyport/pod_port.h"
+#include "k40t_driver/skyport/commanded_value.h"
+#include "k40t_driver/skyport/pod_port.h"
 
 namespace k40t::driver::skyport {
 

@@ -22,10 +22,10 @@
 #include "k40t_driver/GetPosition.h"
 #include "k40t_driver/protocol/result.h"
 #include "k40t_driver/psdk/session.h"
-#include "k40t_driver/ros/skyport/pps_rule.h"
 #include "k40t_driver/ros/skyport/ros_pod_port.h"
-#include "k40t_driver/ros/skyport/skyport_bridge.h"
 #include "k40t_driver/ros/skyport/skyport_config.h"
+#include "k40t_driver/skyport/pps_rule.h"
+#include "k40t_driver/skyport/skyport_bridge.h"
 
 namespace k40t::driver::skyport {
 

@@ -3,7 +3,7 @@
 // solution 0 as no fix.
 #include <gtest/gtest.h>
 
-#include "k40t_driver/ros/skyport/position_request.h"
+#include "k40t_driver/skyport/position_request.h"
 
 namespace k40t::driver::skyport {
 namespace {

@@ -20,10 +20,10 @@
 #include "k40t_driver/psdk/commands/all.h"
 #include "k40t_driver/psdk/commands/header_variants.h"
 #include "k40t_driver/psdk/session.h"
-#include "k40t_driver/ros/skyport/ack_reply.h"
-#include "k40t_driver/ros/skyport/job_queue.h"
-#include "k40t_driver/ros/skyport/photo_progress.h"
-#include "k40t_driver/ros/skyport/pod_port.h"
+#include "k40t_driver/skyport/ack_reply.h"
+#include "k40t_driver/skyport/job_queue.h"
+#include "k40t_driver/skyport/photo_progress.h"
+#include "k40t_driver/skyport/pod_port.h"
 
 namespace k40t::driver::skyport {
 

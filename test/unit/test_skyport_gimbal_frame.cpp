@@ -3,7 +3,7 @@
 // pod's joints to joint = NED - (attitude - joint); with `document`, the joint angles as given.
 // 3.5.6 is joint angles and return head the joints' centre in either layout. Expected pod calls
 // are worked out by hand in the comments (REP 103 radians: pitch down, yaw left positive).
-#include "k40t_driver/ros/skyport/gimbal_frame.h"
+#include "k40t_driver/skyport/gimbal_frame.h"
 #include "skyport_bridge_rig.h"
 
 namespace k40t::driver::skyport {

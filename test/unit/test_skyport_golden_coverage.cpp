@@ -8,9 +8,9 @@
 #include <cstdio>
 #include <memory>
 
-#include "../../unit/psdk_fake_transport.h"
-#include "../../unit/psdk_golden_frames.h"
 #include "k40t_driver/psdk/catalogue.h"
+#include "psdk_fake_transport.h"
+#include "psdk_golden_frames.h"
 #include "skyport_bridge_rig.h"
 
 namespace k40t::driver::skyport {

@@ -1,4 +1,4 @@
-#include "k40t_driver/ros/skyport/job_queue.h"
+#include "k40t_driver/skyport/job_queue.h"
 
 namespace k40t::driver::skyport {
 

@@ -1,4 +1,4 @@
-#include "k40t_driver/ros/skyport/position_request.h"
+#include "k40t_driver/skyport/position_request.h"
 
 #include <ctime>
 

@@ -1,7 +1,7 @@
 // The UTC push's 500 ms rule (pps_rule.h, 3.3.10).
 #include <gtest/gtest.h>
 
-#include "k40t_driver/ros/skyport/pps_rule.h"
+#include "k40t_driver/skyport/pps_rule.h"
 
 namespace k40t::driver::skyport {
 namespace {

@@ -2,7 +2,7 @@
 // the pod's last (1 Hz) report from before it.
 #include <gtest/gtest.h>
 
-#include "k40t_driver/ros/skyport/commanded_value.h"
+#include "k40t_driver/skyport/commanded_value.h"
 
 namespace k40t::driver::skyport {
 namespace {

@@ -2,7 +2,7 @@
 // the pod from the worker; getters answer on the session thread from the pod's latest state.
 #include <algorithm>
 
-#include "k40t_driver/ros/skyport/skyport_bridge.h"
+#include "k40t_driver/skyport/skyport_bridge.h"
 
 namespace k40t::driver::skyport {
 

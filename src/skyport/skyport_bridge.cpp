@@ -1,7 +1,7 @@
-#include "k40t_driver/ros/skyport/skyport_bridge.h"
+#include "k40t_driver/skyport/skyport_bridge.h"
 
 #include "k40t_driver/psdk/identity.h"
-#include "k40t_driver/ros/skyport/ack_reply.h"
+#include "k40t_driver/skyport/ack_reply.h"
 
 namespace k40t::driver::skyport {
 

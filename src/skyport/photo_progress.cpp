@@ -1,4 +1,4 @@
-#include "k40t_driver/ros/skyport/photo_progress.h"
+#include "k40t_driver/skyport/photo_progress.h"
 
 #include <algorithm>
 

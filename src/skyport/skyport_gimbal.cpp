@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "k40t_driver/ros/skyport/gimbal_frame.h"
-#include "k40t_driver/ros/skyport/skyport_bridge.h"
+#include "k40t_driver/skyport/gimbal_frame.h"
+#include "k40t_driver/skyport/skyport_bridge.h"
 
 namespace k40t::driver::skyport {
 

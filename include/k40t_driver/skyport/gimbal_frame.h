@@ -8,7 +8,7 @@
 #include <cmath>
 #include <optional>
 
-#include "k40t_driver/ros/skyport/pod_port.h"
+#include "k40t_driver/skyport/pod_port.h"
 
 namespace k40t::driver::skyport {
 

@@ -16,7 +16,7 @@
 #include <mutex>
 
 #include "k40t_driver/psdk/commands/camera_capture.h"
-#include "k40t_driver/ros/skyport/pod_port.h"
+#include "k40t_driver/skyport/pod_port.h"
 
 namespace k40t::driver::skyport {
 

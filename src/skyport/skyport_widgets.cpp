@@ -16,7 +16,7 @@
 #include <string>
 
 #include "k40t_driver/protocol/messages/thermal.h"
-#include "k40t_driver/ros/skyport/skyport_bridge.h"
+#include "k40t_driver/skyport/skyport_bridge.h"
 
 namespace k40t::driver::skyport {
 

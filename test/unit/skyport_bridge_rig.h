@@ -16,9 +16,9 @@
 
 #include <gtest/gtest.h>
 
-#include "../../unit/psdk_fake_transport.h"
 #include "k40t_driver/psdk/sim/adapter_simulator.h"
-#include "k40t_driver/ros/skyport/skyport_bridge.h"
+#include "k40t_driver/skyport/skyport_bridge.h"
+#include "psdk_fake_transport.h"
 
 namespace k40t::driver::skyport::bridge_testing {
 
