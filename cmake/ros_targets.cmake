@@ -61,8 +61,7 @@ if(CATKIN_ENABLE_TESTING)
     add_executable(k40t_ros_unit_tests ${K40T_ROS_UNIT_SOURCES})
     target_link_libraries(k40t_ros_unit_tests PRIVATE k40t_ros k40t_ros_skyport k40t_ros_bag GTest::gtest
                                                       GTest::gtest_main)
-    # test_skyport_golden_coverage.cpp reads test/data/psdk_golden; the settings table's test
-    # checks docs/ros_interface.md and cfg/ against the table.
+    # The settings table's test checks docs/ros_interface.md and cfg/ against the table.
     target_compile_definitions(k40t_ros_unit_tests PRIVATE
                                K40T_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/test/data"
                                K40T_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

@@ -5,6 +5,7 @@
 
 #include <ros/console.h>
 
+#include "k40t_driver/ros/skyport/push_conversions.h"
 #include "k40t_driver/ros/skyport/skyport_ros.h"
 #include "k40t_driver/skyport/position_request.h"
 
@@ -49,21 +50,11 @@ bool SkyportRos::on_get_position(k40t_driver::GetPosition::Request& req,
   const auto matched = match_positions(request.value(), ack.value());
   size_t missing = 0;
   for (size_t i = 0; i < matched.size(); ++i) {
-    sensor_msgs::NavSatFix fix;
-    fix.header.frame_id = config_.world_frame;
-    fix.status.service = sensor_msgs::NavSatStatus::SERVICE_GPS;
-    fix.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN;
-    fix.header.stamp.fromNSec(static_cast<uint64_t>(
-        position_time_ns(request.value(), request->points[i].time_offset_us)));
     const std::optional<TargetPosition>& p = matched[i];
     if (!p) ++missing;
-    const bool fix_ok = p && is_fix(p->solution);
-    fix.status.status =
-        fix_ok ? sensor_msgs::NavSatStatus::STATUS_FIX : sensor_msgs::NavSatStatus::STATUS_NO_FIX;
-    fix.latitude = fix_ok ? p->latitude_deg : std::nan("");
-    fix.longitude = fix_ok ? p->longitude_deg : std::nan("");
-    fix.altitude = fix_ok ? p->height_m : std::nan("");
-    res.positions.push_back(fix);
+    res.positions.push_back(
+        position_fix(p, position_time_ns(request.value(), request->points[i].time_offset_us),
+                     config_.world_frame));
     res.solutions.push_back(p ? static_cast<uint8_t>(p->solution) : 0);
   }
   res.success = missing == 0;

@@ -20,6 +20,8 @@
 #include "k40t_driver/UavState.h"
 #include "k40t_driver/psdk/commands/all.h"
 #include "k40t_driver/ros/pod_driver.h"
+#include "k40t_driver/ros/skyport/push_conversions.h"
+#include "k40t_driver/skyport/transparent_chunks.h"
 #include "k40t_driver/transport/transport.h"
 
 namespace k40t::driver::skyport {
@@ -65,14 +67,7 @@ SkyportRos::SkyportRos(ros::NodeHandle nh, ros::NodeHandle private_nh, SkyportCo
   bridge_ = std::make_unique<SkyportBridge>(
       *session_, *pod_, config_.bridge,
       [this](const BatteryInfoPush& push) {
-        sensor_msgs::BatteryState battery;
-        battery.header.stamp = ros::Time::now();
-        battery.percentage = push.percentage / 100.0f;
-        battery.voltage = battery.current = battery.charge = battery.capacity = std::nanf("");
-        battery.design_capacity = std::nanf("");
-        battery.present = true;
-        battery.power_supply_status = sensor_msgs::BatteryState::POWER_SUPPLY_STATUS_DISCHARGING;
-        battery_.publish(battery);
+        battery_.publish(battery_state(push, ros::Time::now()));
         std::lock_guard<std::mutex> lock(mutex_);
         if (!power_off_soon_ || *power_off_soon_ != push.power_off_soon) {
           power_off_soon_ = push.power_off_soon;
@@ -168,12 +163,11 @@ void SkyportRos::register_transparent() {
 }
 
 namespace {
-// Sends `bytes` in pieces of at most `chunk` (the command's DATA limit).
+// Sends `bytes` in pieces of at most `chunk` (the command's DATA limit; transparent_chunks.h).
 void send_chunks(Session& session, CommandKey key, const std::vector<uint8_t>& bytes,
                  size_t chunk) {
-  for (size_t at = 0; at < bytes.size(); at += chunk) {
-    const Status sent =
-        session.send_raw(key, bytes.data() + at, std::min(chunk, bytes.size() - at));
+  for (const ByteSpan piece : transparent_chunks(bytes.size(), chunk)) {
+    const Status sent = session.send_raw(key, bytes.data() + piece.offset, piece.size);
     if (!sent) {
       ROS_WARN_THROTTLE(5.0, "SKYPORT transparent data: %s", sent.message().c_str());
       return;
