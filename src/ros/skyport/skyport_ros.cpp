@@ -21,6 +21,7 @@
 #include "k40t_driver/psdk/commands/all.h"
 #include "k40t_driver/ros/pod_driver.h"
 #include "k40t_driver/ros/skyport/push_conversions.h"
+#include "k40t_driver/skyport/link_health.h"
 #include "k40t_driver/skyport/transparent_chunks.h"
 #include "k40t_driver/transport/transport.h"
 
@@ -195,25 +196,20 @@ void SkyportRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - *last_frame_).count();
   }
   const double pod_age_s = pod_->snapshot().state_age_s;
-  const bool pod_stale = pod_age_s < 0 || pod_age_s > config_.pod_stale_s;
   const transport::LinkState link = session_->link_state();
-  if (link != transport::LinkState::kConnected) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::ERROR,
-                   std::string("link ") + transport::to_string(link));
-  } else if (silent_s < 0 || silent_s > config_.silence_timeout_s) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "the SKYPORT adapter is silent");
-  } else if (b.identity_requests == 0) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no identity verification yet");
-  } else if (b.identity_refused > 0 && b.identity_refused == b.identity_requests) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "identity verification refused");
-  } else if (b.power_off_announced) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "the aircraft announces power-off");
-  } else if (pod_stale) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
-                   "the pod's state is stale: getters answer from the last known state");
-  } else {
-    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "pushes arriving, identity answered");
-  }
+  LinkHealthInput in;
+  in.link = link;
+  in.silent_s = silent_s;
+  in.silence_timeout_s = config_.silence_timeout_s;
+  in.bridge = b;
+  in.pod_age_s = pod_age_s;
+  in.pod_stale_s = config_.pod_stale_s;
+  const LinkHealth health = link_health(in);
+  const bool pod_stale = health.pod_stale;
+  status.summary(health.level == HealthLevel::kError  ? diagnostic_msgs::DiagnosticStatus::ERROR
+                 : health.level == HealthLevel::kWarn ? diagnostic_msgs::DiagnosticStatus::WARN
+                                                      : diagnostic_msgs::DiagnosticStatus::OK,
+                 health.summary);
   status.add("link", transport::to_string(link));
   status.add("seconds since last frame", silent_s);
   status.add("identity verifications answered", b.identity_requests);
