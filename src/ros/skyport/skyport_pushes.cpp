@@ -103,10 +103,7 @@ void SkyportRos::register_pushes() {
       }
       edge_stamp = *edge;
     }
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      newest_utc_ns_ = static_cast<int64_t>(utc.toNSec());
-    }
+    positions_.synchronised(static_cast<int64_t>(utc.toNSec()));
     const sensor_msgs::TimeReference out = utc_time(p, edge_stamp);
     utc_time_.publish(out);
     if (config_.feed_pod) feed_time_.publish(out);

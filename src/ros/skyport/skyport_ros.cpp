@@ -55,6 +55,7 @@ SkyportRos::SkyportRos(ros::NodeHandle nh, ros::NodeHandle private_nh, SkyportCo
       private_nh_(private_nh),
       config_(std::move(config)),
       session_(std::move(session)),
+      positions_(*session_, config_.position_min_interval_s),
       diagnostics_(nh, private_nh) {
   advertise();
   pod_ = std::make_unique<RosPodPort>(nh_, config_.reconfigure, config_.service_timeout_s,
