@@ -60,9 +60,9 @@ Result<std::array<double, 2>> pixel_to_normalised(const CameraModel& camera, dou
     case Model::kPinholeFamily:
       // More iterations than the default 5: strong barrel distortion at the image corners
       // converges slowly, and the ray should not carry the solver's residual.
-      cv::undistortPoints(in, out, camera_matrix(camera), camera.D, cv::noArray(), cv::noArray(),
-                          cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100,
-                                           1e-12));
+      cv::undistortPoints(
+          in, out, camera_matrix(camera), camera.D, cv::noArray(), cv::noArray(),
+          cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-12));
       break;
     case Model::kFisheye:
       cv::fisheye::undistortPoints(in, out, camera_matrix(camera), camera.D);

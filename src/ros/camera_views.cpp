@@ -19,8 +19,7 @@ CameraViews::CameraViews(ros::NodeHandle nh) {
         std::lock_guard<std::mutex> lock(mutex_);
         image_ = *msg;
       });
-  const std::array<const char*, 2> topics{"split/visible/camera_info",
-                                          "split/thermal/camera_info"};
+  const std::array<const char*, 2> topics{"split/visible/camera_info", "split/thermal/camera_info"};
   for (size_t i = 0; i < topics.size(); ++i) {
     subscribers_[i + 1] = nh.subscribe<sensor_msgs::CameraInfo>(
         topics[i], 1, [this, i](const sensor_msgs::CameraInfo::ConstPtr& msg) {

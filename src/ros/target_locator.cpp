@@ -153,7 +153,8 @@ bool TargetLocator::locate_pixel(k40t_driver::LocatePixel::Request& req,
     const Result<std::array<double, 2>> spot =
         laser ? camera::project_ray(lens, laser->direction)
               : Result<std::array<double, 2>>::fail(laser.error());
-    if (spot) on_axis = std::hypot((*spot)[0] - req.u, (*spot)[1] - req.v) <= laser_axis_tolerance_px_;
+    if (spot)
+      on_axis = std::hypot((*spot)[0] - req.u, (*spot)[1] - req.v) <= laser_axis_tolerance_px_;
   }
   Result<geo::Located> located = Result<geo::Located>::fail("not located");
   if (on_axis) {

@@ -35,8 +35,8 @@ std::array<double, 2> equidistant_pixel(const std::vector<double>& d, double x, 
   const double r = std::hypot(x, y);
   const double t = std::atan(r);
   const double t2 = t * t;
-  const double td = t * (1 + d[0] * t2 + d[1] * t2 * t2 + d[2] * t2 * t2 * t2 +
-                         d[3] * t2 * t2 * t2 * t2);
+  const double td =
+      t * (1 + d[0] * t2 + d[1] * t2 * t2 + d[2] * t2 * t2 * t2 + d[3] * t2 * t2 * t2 * t2);
   const double s = r > 0 ? td / r : 1;
   return {kFx * x * s + kCx, kFy * y * s + kCy};
 }
@@ -61,9 +61,10 @@ TEST(PixelRay, AHandComputedBarrelDistortionIsUndone) {
   EXPECT_NEAR((*n)[0], 0.3, 1e-9);
   EXPECT_NEAR((*n)[1], 0.2, 1e-9);
   // The pinhole alone would be 2.7 % off: the distortion is not ignored.
-  EXPECT_GT(std::abs(pixel_to_normalised(model("plumb_bob", {0, 0, 0, 0, 0}), 932.7, 556.248)
-                         .value()[0] - 0.3),
-            0.007);
+  EXPECT_GT(
+      std::abs(pixel_to_normalised(model("plumb_bob", {0, 0, 0, 0, 0}), 932.7, 556.248).value()[0] -
+               0.3),
+      0.007);
   const auto p = project_ray(m, {0.6, 0.4, 2.0});  // the same ray, not unit length
   ASSERT_TRUE(p) << p.error();
   EXPECT_NEAR((*p)[0], 932.7, 1e-9);
@@ -101,8 +102,8 @@ TEST(PixelRay, RationalPolynomialTakesEightCoefficients) {
 TEST(PixelRay, EquidistantIsOpenCVsFisheye) {
   const std::vector<double> d{0.05, -0.01, 0.002, -0.0005};
   const CameraModel m = model("equidistant", d);
-  for (const auto& [x, y] : std::vector<std::pair<double, double>>{{0.0, 0.0}, {0.5, -0.3},
-                                                                     {-0.8, 0.6}}) {
+  for (const auto& [x, y] :
+       std::vector<std::pair<double, double>>{{0.0, 0.0}, {0.5, -0.3}, {-0.8, 0.6}}) {
     const auto pixel = equidistant_pixel(d, x, y);
     const auto n = pixel_to_normalised(m, pixel[0], pixel[1]);
     ASSERT_TRUE(n) << n.error();

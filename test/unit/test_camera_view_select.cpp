@@ -58,9 +58,9 @@ TEST(ViewSelect, PanelsOfAnEndedSplitScreenAreIgnored) {
   ASSERT_TRUE(chosen);
   EXPECT_FALSE(chosen.value());
   // A panel one frame older than the image still counts (separate topics arrive in any order).
-  EXPECT_EQ(select_view(5 * kSecond + kSecond / 30, split_at(5 * kSecond), 1439.5, 539.5, kSkew)
-                .value(),
-            std::optional<size_t>(1));
+  EXPECT_EQ(
+      select_view(5 * kSecond + kSecond / 30, split_at(5 * kSecond), 1439.5, 539.5, kSkew).value(),
+      std::optional<size_t>(1));
 }
 
 }  // namespace

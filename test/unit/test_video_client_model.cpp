@@ -136,9 +136,9 @@ TEST(Intrinsics, TheThermalImageInTheSplitScreensRightPanel) {
   const SplitLayout layout = split_layout({1920, 1080});
   ASSERT_EQ(layout.thermal, cv::Rect(960, 156, 960, 768));
   const Intrinsics out = in_panel(thermal, layout.thermal, {1920, 1080});
-  EXPECT_NEAR(out.K[0], 1500, 1e-9);           // x 1.5
+  EXPECT_NEAR(out.K[0], 1500, 1e-9);  // x 1.5
   EXPECT_NEAR(out.K[4], 1500, 1e-9);
-  EXPECT_NEAR(out.K[2], 960 + 479.5, 1e-9);    // the panel's centre, pixel centres at integers
+  EXPECT_NEAR(out.K[2], 960 + 479.5, 1e-9);  // the panel's centre, pixel centres at integers
   EXPECT_NEAR(out.K[5], 156 + 383.5, 1e-9);
   EXPECT_EQ(out.width, 1920);
   EXPECT_EQ(out.height, 1080);

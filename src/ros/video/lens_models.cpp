@@ -73,7 +73,7 @@ video::Intrinsics LensModels::at_1x(video::Lens lens, cv::Size frame) const {
 
 video::Intrinsics LensModels::zoomed(video::Lens lens, cv::Size image,
                                      const ZoomState& zoom) const {
-  const auto& manager = *managers_[static_cast<size_t>(lens)];
+  auto& manager = *managers_[static_cast<size_t>(lens)];
   video::Intrinsics in = at_1x(lens, image);
   switch (lens) {
     case video::Lens::kTele: {
@@ -92,7 +92,7 @@ video::Intrinsics LensModels::zoomed(video::Lens lens, cv::Size image,
 
 sensor_msgs::CameraInfo LensModels::to_message(video::Lens lens,
                                                const video::Intrinsics& in) const {
-  const auto& manager = *managers_[static_cast<size_t>(lens)];
+  auto& manager = *managers_[static_cast<size_t>(lens)];
   sensor_msgs::CameraInfo info;
   if (manager.isCalibrated()) {
     const sensor_msgs::CameraInfo calibrated = manager.getCameraInfo();
@@ -128,9 +128,9 @@ std::array<sensor_msgs::CameraInfo, 2> LensModels::split_panels(cv::Size frame,
   std::array<sensor_msgs::CameraInfo, 2> out{
       to_message(video::Lens::kTele,
                  video::in_panel(zoomed(video::Lens::kTele, frame, zoom), layout.visible, frame)),
-      to_message(video::Lens::kThermal,
-                 video::in_panel(zoomed(video::Lens::kThermal, thermal, zoom), layout.thermal,
-                                 frame))};
+      to_message(
+          video::Lens::kThermal,
+          video::in_panel(zoomed(video::Lens::kThermal, thermal, zoom), layout.thermal, frame))};
   const std::array<cv::Rect, 2> panels{layout.visible, layout.thermal};
   for (size_t i = 0; i < out.size(); ++i) {
     out[i].roi.x_offset = static_cast<uint32_t>(panels[i].x);
