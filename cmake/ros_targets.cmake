@@ -1,6 +1,7 @@
 # The ROS layer, one shared library per nodelet so that each loads only what it uses:
 #   k40t_ros          src/ros/*.cpp: the pod driver (PodNodelet, k40t_node) and the glue the
-#                     others share (parameters, conversions); no OpenCV, GStreamer or OpenSSL;
+#                     others share (parameters, conversions); no GStreamer or OpenSSL, and of
+#                     OpenCV only calib3d (k40t_camera: locate_pixel's lens distortion);
 #   k40t_ros_video    src/ros/video/: VideoNodelet, k40t_video_node (OpenCV, GStreamer,
 #                     image_transport, camera_info_manager; cmake/video_ros.cmake);
 #   k40t_ros_skyport  src/ros/skyport/: SkyportNodelet, k40t_skyport_node, the ROS glue of the
@@ -13,7 +14,7 @@ file(GLOB K40T_ROS_SKYPORT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/r
 add_library(k40t_ros SHARED ${K40T_ROS_SOURCES})
 target_include_directories(k40t_ros PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_include_directories(k40t_ros SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
-target_link_libraries(k40t_ros PUBLIC k40t_core k40t_geo ${catkin_LIBRARIES})
+target_link_libraries(k40t_ros PUBLIC k40t_core k40t_geo k40t_camera ${catkin_LIBRARIES})
 # Generated message/service headers and the dynamic_reconfigure K40tConfig.h.
 add_dependencies(k40t_ros ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg)
 
