@@ -7,6 +7,7 @@
 #include <future>
 #include <thread>
 
+#include "eventually.h"
 #include "k40t_driver/psdk/commands/all.h"
 #include "k40t_driver/psdk/parser.h"
 #include "k40t_driver/psdk/session.h"
@@ -25,15 +26,7 @@ using testing::kGetVersionAck;
 const AesKey kKey = {0x71, 0xc6, 0x82, 0xc7, 0xe3, 0x73, 0x20, 0x53,
                      0xf0, 0x05, 0xc0, 0xdd, 0x78, 0xd0, 0x1e, 0x5e};
 
-// Polls until `condition` holds or a generous deadline passes (never a timing assertion).
-bool eventually(const std::function<bool()>& condition) {
-  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-  while (!condition()) {
-    if (std::chrono::steady_clock::now() > until) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  return true;
-}
+using k40t::test::eventually;
 
 struct Endpoint {
   FakeLink* link = nullptr;
