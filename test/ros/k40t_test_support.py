@@ -7,6 +7,7 @@ import time
 
 import rospy
 from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
+from sensor_msgs.msg import JointState
 
 DRIVER_NS = "/k40t"
 
@@ -211,6 +212,24 @@ class Run:
         if not self.client.wait_for_result(rospy.Duration(timeout)):
             raise AssertionError("no result within %.0f s" % timeout)
         return self.client.get_state(), self.client.get_result()
+
+
+def record(owner, **topics):
+    """Sets owner.ATTR to a Recorder of the driver's topic for each ATTR=(relative topic, type)."""
+    for attr, (topic, msg_type) in topics.items():
+        setattr(owner, attr, Recorder(name(topic), msg_type))
+
+
+def start_driver_test(cls, node_name, diagnostics=False, **topics):
+    """setUpClass of a rostest node against the driver and k40t_sim: the node, cls.sim (the
+    simulator's control socket, ~control), cls.joints and the Recorders of `topics` (see record()),
+    cls.diagnostics if asked; returns once the driver publishes telemetry."""
+    rospy.init_node(node_name)
+    cls.sim = SimControl(rospy.get_param("~control"))
+    record(cls, joints=("joint_states", JointState), **topics)
+    if diagnostics:
+        cls.diagnostics = Diagnostics()
+    assert cls.joints.wait_for(3, timeout=20.0), "no telemetry from the driver"
 
 
 def service(relative, srv_type, timeout=15.0):

@@ -11,18 +11,15 @@ import threading
 import time
 import unittest
 
-import rospy
 import rostest
 from dynamic_reconfigure.client import Client as ReconfigureClient
-from sensor_msgs.msg import JointState
 from std_srvs.srv import Trigger
 
 from k40t_driver.msg import (CameraUpgradeStatus, Frame, PreciseReshootStatus, SdFormatStatus, TfCardUpgradeStatus, VisibleStatus,
                              ZoomStatus)
 from k40t_driver.srv import (Focus, FocusRequest, GetSbus, PreciseReshoot, PreciseReshootRequest, Send, SetPalette, SetPhotoMode,
                              SetPhotoModeRequest, SetSbus, SetZoom)
-from k40t_test_support import (Recorder, SimControl, assert_rejected_without_sending, frame_id, name, service,
-                               wait_until)
+from k40t_test_support import assert_rejected_without_sending, frame_id, name, service, start_driver_test, wait_until
 
 PKG = "k40t_driver"
 SBUS_CHANNELS = dict(stream_channel=8, zoom_channel=9, photo_channel=10, record_channel=11, pitch_channel=12,
@@ -32,17 +29,11 @@ SBUS_CHANNELS = dict(stream_channel=8, zoom_channel=9, photo_channel=10, record_
 class PodJobs(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        rospy.init_node("test_pod_jobs")
-        cls.sim = SimControl(rospy.get_param("~control"))
-        cls.raw_tx = Recorder(name("raw/tx"), Frame)
-        cls.joints = Recorder(name("joint_states"), JointState)
-        cls.visible = Recorder(name("visible/status"), VisibleStatus)
-        cls.zoom = Recorder(name("zoom/status"), ZoomStatus)
-        cls.reshoot = Recorder(name("reshoot/status"), PreciseReshootStatus)
-        cls.tf_upgrade = Recorder(name("tf_card_upgrade/status"), TfCardUpgradeStatus)
-        cls.sd_format = Recorder(name("sd_format/status"), SdFormatStatus)
-        cls.camera_upgrade = Recorder(name("camera/upgrade_status"), CameraUpgradeStatus)
-        assert cls.joints.wait_for(3, timeout=20.0), "no telemetry from the driver"
+        start_driver_test(cls, "test_pod_jobs", raw_tx=("raw/tx", Frame), visible=("visible/status", VisibleStatus),
+                          zoom=("zoom/status", ZoomStatus), reshoot=("reshoot/status", PreciseReshootStatus),
+                          tf_upgrade=("tf_card_upgrade/status", TfCardUpgradeStatus),
+                          sd_format=("sd_format/status", SdFormatStatus),
+                          camera_upgrade=("camera/upgrade_status", CameraUpgradeStatus))
         cls.client = ReconfigureClient(name("driver"), timeout=15.0)
         time.sleep(1.5)  # the read-back that follows the pod coming online
 
