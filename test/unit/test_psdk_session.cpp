@@ -20,6 +20,7 @@ namespace {
 using testing::FakeLink;
 
 using testing::Bytes;
+using testing::command_frame;
 using testing::kGetVersion;
 using testing::kGetVersionAck;
 
@@ -32,6 +33,12 @@ struct Endpoint {
   FakeLink* link = nullptr;
   std::unique_ptr<Session> session;
 };
+
+SessionOptions with_ack_timeout(std::chrono::milliseconds timeout) {
+  SessionOptions options;
+  options.ack_timeout = timeout;
+  return options;
+}
 
 Endpoint make_endpoint(SessionOptions options = {}) {
   auto link = std::make_unique<FakeLink>();
@@ -55,17 +62,6 @@ struct LinkedPair {
   Endpoint adapter;
   Endpoint payload;
 };
-
-Bytes command_frame(CommandKey key, uint16_t sequence, const Bytes& data,
-                    AckRequest ack = AckRequest::kAfterExecution,
-                    const Aes128Ecb* cipher = nullptr) {
-  FrameHeader h;
-  h.command = key;
-  h.sequence = sequence;
-  h.ack_request = ack;
-  h.encryption = cipher ? Encryption::kAes : Encryption::kNone;
-  return testing::make_frame(h, data, cipher);
-}
 
 Bytes ack_frame(CommandKey key, uint16_t sequence, const Bytes& data) {
   FrameHeader h;
@@ -208,9 +204,7 @@ TEST(PsdkSession, EncryptedCommandWithoutKeyIsCountedAndDropped) {
 }
 
 TEST(PsdkSession, RequestsAreMatchedOnSequenceSetAndId) {
-  SessionOptions options;
-  options.ack_timeout = std::chrono::milliseconds(300);
-  Endpoint payload = make_endpoint(options);
+  Endpoint payload = make_endpoint(with_ack_timeout(std::chrono::milliseconds(300)));
   ASSERT_TRUE(payload.session->start());
 
   AckResult result;
@@ -379,9 +373,7 @@ TEST(PsdkSession, FailuresComeBackAsMessages) {
 }
 
 TEST(PsdkSession, StopCompletesOutstandingRequests) {
-  SessionOptions options;
-  options.ack_timeout = std::chrono::seconds(30);
-  Endpoint payload = make_endpoint(options);
+  Endpoint payload = make_endpoint(with_ack_timeout(std::chrono::seconds(30)));
   ASSERT_TRUE(payload.session->start());
   std::promise<AckResult> done;
   payload.session->request_async(GetPosition::key(), Data{},
