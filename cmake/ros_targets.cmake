@@ -12,7 +12,7 @@ file(GLOB K40T_ROS_SKYPORT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/r
 add_library(k40t_ros SHARED ${K40T_ROS_SOURCES})
 target_include_directories(k40t_ros PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_include_directories(k40t_ros SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
-target_link_libraries(k40t_ros PUBLIC k40t_core k40t_geo ${catkin_LIBRARIES})
+target_link_libraries(k40t_ros PUBLIC k40t_driver_core k40t_core k40t_geo ${catkin_LIBRARIES})
 # Generated message/service headers and the dynamic_reconfigure K40tConfig.h.
 add_dependencies(k40t_ros ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg)
 

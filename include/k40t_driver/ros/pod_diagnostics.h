@@ -24,11 +24,11 @@
 #include <ros/node_handle.h>
 #include <ros/steady_timer.h>
 
+#include "k40t_driver/driver/pod_driver.h"
+#include "k40t_driver/driver/pod_queries.h"
 #include "k40t_driver/protocol/messages/camera_reports.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/protocol/messages/thermal.h"
-#include "k40t_driver/ros/pod_driver.h"
-#include "k40t_driver/ros/pod_queries.h"
 #include "k40t_driver/ros/ros_params.h"
 #include "k40t_driver/ros/settings_sync.h"
 

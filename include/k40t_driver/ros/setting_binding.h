@@ -11,12 +11,12 @@
 #include <vector>
 
 #include "k40t_driver/K40tConfig.h"
+#include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/protocol/message_id.h"
 #include "k40t_driver/protocol/messages/camera_reports.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/protocol/messages/thermal.h"
 #include "k40t_driver/protocol/messages/visible.h"
-#include "k40t_driver/ros/pod_driver.h"
 
 namespace k40t::driver {
 

@@ -24,10 +24,10 @@
 #include <ros/node_handle.h>
 #include <boost/thread/recursive_mutex.hpp>
 
+#include "k40t_driver/driver/pod_driver.h"
+#include "k40t_driver/driver/pod_queries.h"
 #include "k40t_driver/protocol/messages/camera_reports.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
-#include "k40t_driver/ros/pod_driver.h"
-#include "k40t_driver/ros/pod_queries.h"
 #include "k40t_driver/ros/setting_binding.h"
 
 namespace k40t::driver {

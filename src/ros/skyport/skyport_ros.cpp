@@ -18,8 +18,8 @@
 #include "k40t_driver/LinkBandwidth.h"
 #include "k40t_driver/OtherPayload.h"
 #include "k40t_driver/UavState.h"
+#include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/psdk/commands/all.h"
-#include "k40t_driver/ros/pod_driver.h"
 #include "k40t_driver/transport/transport.h"
 
 namespace k40t::driver::skyport {
