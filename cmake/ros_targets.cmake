@@ -49,7 +49,7 @@ install(DIRECTORY launch config urdf rviz DESTINATION ${CATKIN_PACKAGE_SHARE_DES
 install(PROGRAMS scripts/k40t_urdf.py DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/scripts)
 
 # rostest programs, run by scripts/run_tests.sh through test/ros/*.test:
-#   test/ros/unit/*.cpp  gtest of the ROS layer's own logic (conversions, rate dead-man...), one
+#   test/ros/unit/*.cpp  gtest of what needs ROS types (conversions, the settings table...), one
 #                        binary k40t_ros_unit_tests;
 #   test/ros/*.cpp       gtest nodes, one executable each;
 #   test/ros/*.py        Python test nodes (/usr/bin/python3, rospy + unittest).
