@@ -14,7 +14,7 @@ file(GLOB K40T_ROS_SKYPORT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/r
 add_library(k40t_ros SHARED ${K40T_ROS_SOURCES})
 target_include_directories(k40t_ros PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_include_directories(k40t_ros SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
-target_link_libraries(k40t_ros PUBLIC k40t_core k40t_geo k40t_camera ${catkin_LIBRARIES})
+target_link_libraries(k40t_ros PUBLIC k40t_driver_core k40t_core k40t_geo k40t_camera ${catkin_LIBRARIES})
 # Generated message/service headers and the dynamic_reconfigure K40tConfig.h.
 add_dependencies(k40t_ros ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg)
 
@@ -51,7 +51,7 @@ install(DIRECTORY launch config urdf rviz DESTINATION ${CATKIN_PACKAGE_SHARE_DES
 install(PROGRAMS scripts/k40t_urdf.py DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/scripts)
 
 # rostest programs, run by scripts/run_tests.sh through test/ros/*.test:
-#   test/ros/unit/*.cpp  gtest of the ROS layer's own logic (conversions, rate dead-man...), one
+#   test/ros/unit/*.cpp  gtest of what needs ROS types (conversions, the settings table...), one
 #                        binary k40t_ros_unit_tests;
 #   test/ros/*.cpp       gtest nodes, one executable each;
 #   test/ros/*.py        Python test nodes (/usr/bin/python3, rospy + unittest).

@@ -28,10 +28,10 @@
 #include <tf2_ros/transform_listener.h>
 
 #include "k40t_driver/LocatePixel.h"
+#include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/geo/ray_locator.h"
 #include "k40t_driver/ros/camera_views.h"
 #include "k40t_driver/ros/pod_diagnostics.h"
-#include "k40t_driver/ros/pod_driver.h"
 #include "k40t_driver/ros/ros_params.h"
 
 namespace k40t::driver {

@@ -4,8 +4,8 @@
 #include <chrono>
 #include <cmath>
 
+#include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/geo/geodesy.h"
-#include "k40t_driver/ros/pod_driver.h"
 
 namespace k40t::driver {
 

@@ -3,12 +3,14 @@
 // very uint16 the report carried, and bad arguments fail naming the field.
 #include <gtest/gtest.h>
 
-#include "k40t_driver/ros/job_services.h"
+#include "k40t_driver/operations/camera_operations.h"
 
 namespace k40t::driver {
 namespace {
 
 namespace p = protocol;
+using operations::reshoot_request;
+using operations::ReshootArgs;
 
 ReshootArgs visible_4000x3000() {
   ReshootArgs args;

@@ -1,4 +1,4 @@
-#include "k40t_driver/ros/pod_queries.h"
+#include "k40t_driver/driver/pod_queries.h"
 
 #include "k40t_driver/protocol/messages/camera_system.h"
 #include "k40t_driver/protocol/messages/gimbal.h"

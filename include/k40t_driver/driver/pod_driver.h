@@ -29,11 +29,11 @@
 #include <thread>
 #include <vector>
 
+#include "k40t_driver/driver/driver_options.h"
+#include "k40t_driver/driver/rate_commander.h"
+#include "k40t_driver/driver/vehicle_state.h"
 #include "k40t_driver/geo/state_history.h"
 #include "k40t_driver/protocol/frame.h"
-#include "k40t_driver/ros/driver_options.h"
-#include "k40t_driver/ros/rate_commander.h"
-#include "k40t_driver/ros/vehicle_state.h"
 #include "k40t_driver/session/dispatcher.h"
 #include "k40t_driver/session/session.h"
 

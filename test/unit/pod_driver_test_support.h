@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "fake_pod.h"
+#include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/protocol/messages/camera_system.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
-#include "k40t_driver/ros/pod_driver.h"
 
 namespace k40t::driver::testing {
 

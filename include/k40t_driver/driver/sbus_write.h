@@ -7,8 +7,8 @@
 
 #include <string>
 
+#include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/protocol/messages/sbus.h"
-#include "k40t_driver/ros/pod_driver.h"
 
 namespace k40t::driver {
 

@@ -5,9 +5,9 @@
 #include <optional>
 #include <string>
 
+#include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/protocol/messages/thermal.h"
 #include "k40t_driver/protocol/messages/visible.h"
-#include "k40t_driver/ros/pod_driver.h"
 
 namespace k40t::driver {
 

@@ -1,4 +1,4 @@
-#include "k40t_driver/ros/pod_driver.h"
+#include "k40t_driver/driver/pod_driver.h"
 
 #include <algorithm>
 #include <cmath>

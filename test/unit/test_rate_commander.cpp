@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "k40t_driver/ros/rate_commander.h"
+#include "k40t_driver/driver/rate_commander.h"
 
 namespace k40t::driver {
 namespace {

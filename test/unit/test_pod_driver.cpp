@@ -8,10 +8,10 @@
 #include <optional>
 
 #include "fake_pod.h"
+#include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/protocol/messages/camera_system.h"
 #include "k40t_driver/protocol/messages/flight_controller.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
-#include "k40t_driver/ros/pod_driver.h"
 #include "pod_driver_test_support.h"
 
 namespace k40t::driver {

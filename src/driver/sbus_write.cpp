@@ -1,4 +1,4 @@
-#include "k40t_driver/ros/sbus_write.h"
+#include "k40t_driver/driver/sbus_write.h"
 
 namespace k40t::driver {
 

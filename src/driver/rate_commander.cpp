@@ -1,4 +1,4 @@
-#include "k40t_driver/ros/rate_commander.h"
+#include "k40t_driver/driver/rate_commander.h"
 
 #include <algorithm>
 #include <cmath>
