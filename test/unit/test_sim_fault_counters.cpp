@@ -187,7 +187,7 @@ TEST(SimFaultCounters, ControlSocketDrivesTheFaults) {
   EXPECT_NE(status.find("seq-jumps=1"), std::string::npos) << status;
   // The settings the rviz panel's test reads back (docs/simulator.md, control socket `status`).
   link.server().with_model([](PodModel& pod) {
-    pod.thermal().settings().palette = 13;
+    pod.thermal().settings().reported.palette = protocol::Palette::kIceFire;  // 13
     pod.camera().settings().image_mode = 7;
   });
   const std::string settings = control(link.server().control_port(), "status");

@@ -105,7 +105,7 @@ TEST(SimThermal, SpotReadsThePixelItIsSetOn) {
   const ThermalStats spot = thermal.measure(world, aim.yaw_deg + 5, aim.pitch_deg);
   EXPECT_NEAR(spot.spot_degC, overview.max_degC, 1.0);
   EXPECT_EQ(spot.spot_at.x, overview.max_at.x);
-  EXPECT_EQ(thermal.settings().measurement_type, MeasurementType::kPoint);
+  EXPECT_EQ(thermal.settings().reported.measurement_type, MeasurementType::kPoint);
   EXPECT_EQ(thermal.set_spot(100, 500), Outcome::kFailure);  // on the black border
 }
 
@@ -164,9 +164,9 @@ TEST(SimThermal, HighGainSaturatesWhereLowGainMeasures) {
   const Aim aim = aim_at(world.hot_object_centre());
   EXPECT_DOUBLE_EQ(thermal.measure(world, aim.yaw_deg, aim.pitch_deg).max_degC,
                    gain_range(GainMode::kHigh).max_degC);
-  thermal.settings().gain = GainMode::kLow;
+  thermal.settings().reported.gain_mode = GainMode::kLow;
   EXPECT_NEAR(thermal.measure(world, aim.yaw_deg, aim.pitch_deg).max_degC, 300, 1);
-  thermal.settings().gain = GainMode::kAuto;
+  thermal.settings().reported.gain_mode = GainMode::kAuto;
   EXPECT_NEAR(thermal.measure(world, aim.yaw_deg, aim.pitch_deg).max_degC, 300, 1);
 }
 

@@ -2,8 +2,6 @@
 
 #include <string>
 
-#include "k40t_driver/protocol/catalogue.h"
-
 namespace k40t::protocol {
 
 // ---- 0x000500 -------------------------------------------------------------------------------
@@ -100,14 +98,6 @@ Status SbusConfigAck::decode(ByteReader& r, const CodecOptions& o) {
   range.read_values(r, o.ack_byte_order);
   channels.read_channels(r);
   return Status::ok();
-}
-
-// ---- catalogue ------------------------------------------------------------------------------
-void add_sbus_messages(std::vector<MessageInfo>& out) {
-  out.push_back(info_of<SbusRangeRequest>());
-  out.push_back(info_of<SbusChannelsRequest>());
-  out.push_back(info_of<SbusConfigRequest>());
-  out.push_back(info_of<SbusConfigAck>());
 }
 
 }  // namespace k40t::protocol

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/simple_requests.h"
 
@@ -74,5 +75,10 @@ struct LaserPeriodicRangeStatus : LaserDistancePayload<&CodecOptions::laser_stat
   static constexpr const char* kSection = "3.2.5.2";
   static constexpr size_t kMinSize = 4;
 };
+
+// Every message struct of the laser family: the catalogue, the catalogue tests and the fuzz target
+// take their entries from this list (message_list.h).
+using LaserMessages = MessageList<LaserRangeRequest, LaserRangeAck, LaserPeriodicRangeRequest,
+                                  LaserPeriodicRangeStatus>;
 
 }  // namespace k40t::protocol
