@@ -9,13 +9,11 @@ import sys
 import time
 import unittest
 
-import rospy
 import rostest
 from dynamic_reconfigure.client import Client as ReconfigureClient
-from sensor_msgs.msg import JointState
 
 from k40t_driver.srv import Send
-from k40t_test_support import WARN, Diagnostics, Recorder, SimControl, name, service, wait_until
+from k40t_test_support import WARN, name, service, start_driver_test, wait_until
 
 PKG = "k40t_driver"
 
@@ -81,11 +79,7 @@ WRITE_ONLY_NAMES = write_only_parameters()
 class Reconfigure(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        rospy.init_node("test_reconfigure")
-        cls.sim = SimControl(rospy.get_param("~control"))
-        cls.joints = Recorder(name("joint_states"), JointState)
-        cls.diagnostics = Diagnostics()
-        assert cls.joints.wait_for(3, timeout=20.0), "no telemetry from the driver"
+        start_driver_test(cls, "test_reconfigure", diagnostics=True)
         cls.client = ReconfigureClient(name("driver"), timeout=15.0)
         # Wait for the read-back that follows the pod coming online.
         assert wait_until(lambda: cls.diagnostics.value("settings", "read-backs") not in (None, "0"), 10.0)
