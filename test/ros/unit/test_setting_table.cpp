@@ -182,9 +182,11 @@ TEST(SettingTable, DocsProtocolRowsAreTheOnesTheTableGives) {
   ASSERT_FALSE(docs.empty()) << "no reconfigure column in docs/protocol/*.md";
   for (const SettingBinding& binding : setting_bindings()) {
     const std::string id = hex_id(binding.request);
-    ASSERT_EQ(docs.count(id), 1u) << "docs/protocol/*.md: the row of " << id
-                                  << " needs this reconfigure cell: "
-                                  << settings_docs_cell(binding);
+    if (docs.count(id) == 0) {
+      ADD_FAILURE() << "docs/protocol/*.md: the row of " << id
+                    << " needs this reconfigure cell: " << settings_docs_cell(binding);
+      continue;
+    }
     EXPECT_EQ(docs[id], settings_docs_cell(binding)) << where[id];
     docs.erase(id);
   }
