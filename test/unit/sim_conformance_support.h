@@ -13,6 +13,8 @@
 
 namespace k40t::sim::testing {
 
+using k40t::testing::request_with;
+
 using protocol::ResponseCode;
 
 inline bool near(double a, double b, double tolerance) {

@@ -16,6 +16,8 @@
 
 namespace k40t::sim::testing {
 
+using k40t::testing::request_with;
+
 class PodHarness {
  public:
   explicit PodHarness(const PodConfig& config = {}, protocol::CodecOptions codec = {})

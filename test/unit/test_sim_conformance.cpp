@@ -19,7 +19,6 @@ namespace {
 
 namespace p = protocol;
 using namespace testing;  // SimLink, quick_pod, near, aim, angles, ResponseCode
-using k40t::testing::request_with;
 using namespace std::chrono_literals;
 
 // ---- common camera part (3.2.4) -------------------------------------------------------------

@@ -13,7 +13,6 @@ namespace {
 
 namespace p = protocol;
 using namespace testing;  // SimLink, quick_pod, near, aim, angles, ResponseCode
-using k40t::testing::request_with;
 using namespace std::chrono_literals;
 
 // ---- gimbal (3.1) ---------------------------------------------------------------------------

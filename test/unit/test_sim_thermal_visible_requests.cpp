@@ -11,7 +11,7 @@ namespace k40t::sim {
 namespace {
 
 namespace p = protocol;
-using k40t::testing::request_with;
+using testing::request_with;
 using p::ResponseCode;
 using testing::PodHarness;
 
