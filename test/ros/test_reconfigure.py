@@ -114,7 +114,7 @@ class Reconfigure(unittest.TestCase):
                 self.assertTrue(d["min"] <= value <= d["max"], "%s: %r outside the cfg range" % (key, value))
             if enum_values(d) is not None:
                 self.assertIn(value, enum_values(d), key)
-        self.assertTrue(self.write_only, "the docs' settings table lists no write-only setting")
+        self.assertTrue(self.write_only, "no reconfigure cell of docs/protocol/*.md says write-only")
 
     def test_every_parameter_round_trips_through_the_pod(self):
         # One at a time, so a refusal names its parameter.
