@@ -11,7 +11,7 @@ add_library(k40t_ros_bag SHARED ${K40T_ROS_BAG_SOURCES}
 target_include_directories(k40t_ros_bag PUBLIC ${PROJECT_SOURCE_DIR}/tools/k40t)
 target_include_directories(k40t_ros_bag SYSTEM PUBLIC ${rosbag_storage_INCLUDE_DIRS}
                                                       ${YAML_CPP_INCLUDE_DIR})
-target_link_libraries(k40t_ros_bag PUBLIC k40t_ros ${rosbag_storage_LIBRARIES} ${YAML_CPP_LIBRARIES})
+target_link_libraries(k40t_ros_bag PUBLIC k40t_pod_nodelet ${rosbag_storage_LIBRARIES} ${YAML_CPP_LIBRARIES})
 
 add_executable(k40t_bag ${PROJECT_SOURCE_DIR}/tools/k40t_bag/main.cpp
                         ${PROJECT_SOURCE_DIR}/tools/k40t_bag/progress_bar.cpp)

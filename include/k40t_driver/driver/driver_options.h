@@ -5,6 +5,7 @@
 #include <string>
 
 #include "k40t_driver/session/session.h"
+#include "k40t_driver/transport/device_url.h"
 
 namespace k40t::driver {
 
@@ -48,8 +49,6 @@ struct DriverOptions {
   double silence_timeout_s = 0.5;
 };
 
-// The device URL with the baud rate applied: serial URLs without "baud=" get "?baud=N" (or
-// "&baud=N"); other URLs are returned unchanged.
-std::string device_url_with_baud(const std::string& url, int baud);
+using transport::device_url_with_baud;  // the ~device URL with ~baud applied
 
 }  // namespace k40t::driver
