@@ -19,15 +19,21 @@ Result<geo::VehiclePose> vehicle_pose(const VehicleState& state) {
   return pose;
 }
 
+Result<double> plane_height_ellipsoid(const VehicleState& vehicle, PlaneReference reference,
+                                      double height_m) {
+  if (reference == PlaneReference::kAboveTakeoff)
+    return vehicle.altitude_m - vehicle.relative_altitude_m + height_m;
+  return geo::Geoid::egm96().ellipsoid_from_msl(vehicle.latitude_deg, vehicle.longitude_deg,
+                                                height_m);
+}
+
 std::optional<geo::Covariance3> laser_target_covariance(const geo::Geodetic& target,
                                                         const VehicleState& vehicle,
                                                         const geo::RayUncertainty& u) {
   if (!vehicle.has_fix) return std::nullopt;
-  const Result<geo::LocalFrame> frame =
-      geo::LocalFrame::at({vehicle.latitude_deg, vehicle.longitude_deg, vehicle.altitude_m});
-  if (!frame) return std::nullopt;
-  const geo::Enu d = frame->to_enu(target);
-  const double slant = std::sqrt(d.east * d.east + d.north * d.north + d.up * d.up);
+  const double slant =
+      geo::distance_m({vehicle.latitude_deg, vehicle.longitude_deg, vehicle.altitude_m}, target);
+  if (std::isnan(slant)) return std::nullopt;  // not a position a local frame can be set at
   const double angular = slant * u.attitude_sigma_deg * M_PI / 180.0;
   const double extra = angular * angular + u.range_sigma_m * u.range_sigma_m;
   geo::Covariance3 covariance = vehicle.position_covariance;

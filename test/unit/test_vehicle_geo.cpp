@@ -56,5 +56,17 @@ TEST(VehicleGeo, LaserTargetCovarianceAddsTheAttitudeErrorOverTheSlantRange) {
   EXPECT_FALSE(laser_target_covariance({22.5, 113.9, 10.0}, VehicleState()));  // no fix
 }
 
+TEST(VehicleGeo, PlaneHeightsAreGivenAboveTheTakeoffPointOrSeaLevel) {
+  VehicleState v = vehicle_at(47.1, 8.5, 530.0);
+  v.relative_altitude_m = 30.0;  // took off at 500 m above the ellipsoid
+  const Result<double> takeoff = plane_height_ellipsoid(v, PlaneReference::kAboveTakeoff, 10.0);
+  ASSERT_TRUE(takeoff) << takeoff.error();
+  EXPECT_DOUBLE_EQ(takeoff.value(), 510.0);
+  // The EGM96 geoid is 47.9 m above the ellipsoid at 47.1N 8.5E.
+  const Result<double> msl = plane_height_ellipsoid(v, PlaneReference::kMeanSeaLevel, 100.0);
+  ASSERT_TRUE(msl) << msl.error();
+  EXPECT_NEAR(msl.value(), 147.9, 0.2);
+}
+
 }  // namespace
 }  // namespace k40t::driver
