@@ -4,9 +4,16 @@
 
 namespace k40t::driver {
 
+namespace {
+constexpr double kDegToRad = M_PI / 180.0;
+}  // namespace
+
 Rep103Angles rep103_from_pod(double yaw_deg, double roll_deg, double pitch_deg) {
-  constexpr double kDegToRad = M_PI / 180.0;
   return Rep103Angles{-yaw_deg * kDegToRad, roll_deg * kDegToRad, -pitch_deg * kDegToRad};
+}
+
+PodAngles pod_from_rep103(const Rep103Angles& a) {
+  return PodAngles{-a.yaw / kDegToRad, a.roll / kDegToRad, -a.pitch / kDegToRad};
 }
 
 FrameIds::FrameIds(const std::string& frame_prefix, const std::string& joint_prefix)

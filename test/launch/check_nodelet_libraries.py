@@ -7,6 +7,8 @@
     (readelf -d), followed through the project's own libraries in the devel space, so a library
     that needs libk40t_pod_nodelet.so also loads what that one needs: the pod driver no GStreamer
     or OpenSSL, the video nodelet no OpenSSL, the SKYPORT bridge no OpenCV or GStreamer; none Qt.
+    System libraries' own dependencies are not followed: they are not the project's to choose
+    (PROJ's libcurl brings libcrypto through libssh2, OpenCV's FFmpeg brings libssl).
 Exits 1 naming each failure; --junit writes one test case. Needs no ROS master; run after a ROS
 build (scripts/run_tests.sh's launch tier does)."""
 import argparse

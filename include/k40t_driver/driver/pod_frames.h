@@ -18,6 +18,15 @@ struct Rep103Angles {
 // left-positive, pitch down-positive); roll keeps its sign.
 Rep103Angles rep103_from_pod(double yaw_deg, double roll_deg, double pitch_deg);
 
+// The inverse, for commands (gimbal/cmd_angle, gimbal/cmd_rate): REP 103 radians (per second) ->
+// the pod's degrees (per second).
+struct PodAngles {
+  double yaw_deg = 0;
+  double roll_deg = 0;
+  double pitch_deg = 0;
+};
+PodAngles pod_from_rep103(const Rep103Angles& angles);
+
 // Every frame id the driver uses, from ~frame_prefix; the joint names from ~joint_prefix.
 struct FrameIds {
   explicit FrameIds(const std::string& frame_prefix = "k40t_",
