@@ -38,6 +38,11 @@ include(cmake/video_ros.cmake)  # k40t_video_nodelet
 include(cmake/bag.cmake)        # k40t_ros_bag, k40t_bag (`k40t bag`)
 include(cmake/rviz_panel.cmake)  # k40t_rviz_panel (Qt)
 
+# Every node catches SIGINT/SIGTERM from the start of its process (src/ros/early/: a static
+# library, as only an executable's .preinit_array runs before the shared libraries' initialisers).
+add_library(k40t_early_stop_signals STATIC ${PROJECT_SOURCE_DIR}/src/ros/early/early_stop_signals.cpp)
+target_include_directories(k40t_early_stop_signals PUBLIC ${PROJECT_SOURCE_DIR}/include)
+
 # One executable per src/ros/nodes/*.cpp, each a thin main() over the library it names.
 set(K40T_NODE_LIBRARY_k40t_node k40t_pod_nodelet)
 set(K40T_NODE_LIBRARY_k40t_video_node k40t_video_nodelet)
@@ -50,7 +55,7 @@ foreach(source ${K40T_ROS_NODES})
     message(FATAL_ERROR "src/ros/nodes/${name}.cpp: say which library it links in ros_targets.cmake")
   endif()
   add_executable(${name} ${source})
-  target_link_libraries(${name} PRIVATE ${K40T_NODE_LIBRARY_${name}})
+  target_link_libraries(${name} PRIVATE ${K40T_NODE_LIBRARY_${name}} k40t_early_stop_signals)
   install(TARGETS ${name} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 endforeach()
 

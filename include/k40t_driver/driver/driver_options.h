@@ -20,7 +20,7 @@ struct DriverOptions {
   // how long after the pod's return the topics resume.
   double reconnect_max_delay_s = 1.0;
 
-  // Codec decisions (docs/protocol/decisions.md#a1-A5), ACK timeout and retries.
+  // Codec decisions (docs/protocol/decisions.md#a1 to #a5), ACK timeout and retries.
   session::SessionOptions session;
 
   // Seconds between time syncs (0x00030E, docs/protocol/decisions.md#a8); 0 disables.
