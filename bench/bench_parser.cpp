@@ -187,7 +187,7 @@ void BM_ParseMixedFrameParser(benchmark::State& state) {
   }
   report(state, s.bytes.size(), found, state.iterations());
 }
-BENCHMARK(BM_ParseMixedFrameParser)->Arg(1)->Arg(64)->Arg(4096)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ParseMixedFrameParser)->Arg(1)->Arg(16)->Arg(64)->Arg(4096)->Unit(benchmark::kMillisecond);
 
 void BM_ParseMixedBaseline(benchmark::State& state) {
   const Stream& s = mixed_stream();
@@ -205,7 +205,7 @@ void BM_ParseMixedBaseline(benchmark::State& state) {
   }
   report(state, s.bytes.size(), found, state.iterations());
 }
-BENCHMARK(BM_ParseMixedBaseline)->Arg(1)->Arg(64)->Arg(4096)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ParseMixedBaseline)->Arg(1)->Arg(16)->Arg(64)->Arg(4096)->Unit(benchmark::kMillisecond);
 
 // encode_payload + encode_frame of the most frequent message, the 10 Hz attitude report (the
 // simulator's hot path) and of a request the host sends.
