@@ -147,9 +147,15 @@ size_t FrameParser::parse(const uint8_t* bytes, size_t size, const FrameCallback
   while (pos < size) {
     // Hunt for STX; everything before it is discarded.
     if (bytes[pos] != kStx) {
-      const void* found = std::memchr(bytes + pos, kStx, size - pos);
-      const size_t next =
-          found ? static_cast<size_t>(static_cast<const uint8_t*>(found) - bytes) : size;
+      size_t next = pos + 1;
+      if (size - next < 16) {
+        // A few bytes (a small read, just copied into buffer_): memchr's vector load over bytes
+        // stored a moment ago waits for the stores to complete; a byte loop does not.
+        while (next < size && bytes[next] != kStx) ++next;
+      } else {
+        const void* found = std::memchr(bytes + next, kStx, size - next);
+        next = found ? static_cast<size_t>(static_cast<const uint8_t*>(found) - bytes) : size;
+      }
       stats_.bytes_discarded += next - pos;
       pos = next;
       continue;
