@@ -91,10 +91,14 @@ class FrameParser {
   static constexpr size_t kCopiedReadSize = 512;
   static constexpr size_t kBufferSize = 8 * kCopiedReadSize;
   static_assert(kBufferSize >= kMaxFrameSize + kCopiedReadSize);
-  std::array<uint8_t, kBufferSize> buffer_{};
+  // The indices come before buffer_, not after it: placed kBufferSize (4096) bytes after
+  // buffer_[0], their loads alias the stores into the first bytes of buffer_ (the same low 12
+  // address bits, which the CPU's store-to-load check compares first), and with small reads most
+  // frames start at buffer_[0]: measured, 16-byte reads were ~10% slower.
   size_t begin_ = 0;   // first undecided byte
   size_t end_ = 0;     // one past the last byte
   size_t wanted_ = 0;  // bytes the candidate at begin_ needs in all before it can be decided
+  std::array<uint8_t, kBufferSize> buffer_{};
 
   CrcCoverage configured_;
   CrcCoverage locked_;
