@@ -103,6 +103,15 @@ void FrameParser::feed_chunk(const uint8_t* data, size_t size, const FrameCallba
     const bool had_candidate = begin_ != end_;
     if (size < 16) {  // serial reads are often a few bytes: cheaper than a call to memcpy
       for (size_t i = 0; i < size; ++i) buffer_[end_ + i] = data[i];
+    } else if (size <= 64) {  // two overlapping fixed-size copies, inline
+      uint8_t* to = buffer_.data() + end_;
+      if (size <= 32) {
+        std::memcpy(to, data, 16);
+        std::memcpy(to + size - 16, data + size - 16, 16);
+      } else {
+        std::memcpy(to, data, 32);
+        std::memcpy(to + size - 32, data + size - 32, 32);
+      }
     } else {
       std::memcpy(buffer_.data() + end_, data, size);
     }

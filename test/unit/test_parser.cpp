@@ -82,7 +82,7 @@ TEST(Parser, MixedReadSizesFindWhatOneReadFinds) {
   ASSERT_GT(whole.stats().checksum_errors, 0u);
   ASSERT_GT(expected.frames.size(), 150u);
   for (const std::vector<size_t>& chunks :
-       {std::vector<size_t>{254}, {7, 61, 512, 513, 1}, {600, 16, 2000, 64}}) {
+       {std::vector<size_t>{254}, {7, 61, 512, 513, 1, 20}, {600, 16, 2000, 64, 33}}) {
     FrameParser parser(CrcCoverage::kHeaderExcluded);
     const Collected found = feed(parser, stream, chunks);
     expect_same_frames(found, expected.frames);
