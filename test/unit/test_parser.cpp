@@ -61,6 +61,38 @@ TEST(Parser, ChunksLargerThanItsBuffer) {
   expect_same_frames(feed(chunked, stream, {5000, 3, 4093}), expected);
 }
 
+// Small reads are copied whole into the parser's buffer and a candidate left over stays where it
+// is until the buffer is full; larger reads are parsed where they are. Mixing the two across many
+// compactions, on a corrupted stream (rescans inside the buffer), must find what one read finds.
+// 255-byte frames read 254 bytes at a time leave a candidate after every read for 255 reads, so
+// the buffer fills and is compacted again and again.
+TEST(Parser, MixedReadSizesFindWhatOneReadFinds) {
+  std::mt19937 rng(11);
+  Bytes stream;
+  for (int i = 0; i < 200; ++i) {
+    Bytes payload(kMaxPayloadSize);
+    for (auto& b : payload) b = static_cast<uint8_t>(rng());
+    append(stream, make_frame(0x000002, static_cast<uint8_t>(i), payload));
+  }
+  for (auto& b : stream) {
+    if (rng() % 2000 == 0) b ^= static_cast<uint8_t>(1 + rng() % 255);
+  }
+  FrameParser whole(CrcCoverage::kHeaderExcluded);
+  const Collected expected = feed(whole, stream);
+  ASSERT_GT(whole.stats().checksum_errors, 0u);
+  ASSERT_GT(expected.frames.size(), 150u);
+  for (const std::vector<size_t>& chunks :
+       {std::vector<size_t>{254}, {7, 61, 512, 513, 1, 20}, {600, 16, 2000, 64, 33}}) {
+    FrameParser parser(CrcCoverage::kHeaderExcluded);
+    const Collected found = feed(parser, stream, chunks);
+    expect_same_frames(found, expected.frames);
+    EXPECT_EQ(parser.stats().checksum_errors, whole.stats().checksum_errors);
+    EXPECT_EQ(parser.stats().length_errors, whole.stats().length_errors);
+    EXPECT_EQ(parser.stats().bytes_discarded, whole.stats().bytes_discarded);
+    EXPECT_EQ(parser.buffered_bytes(), whole.buffered_bytes());
+  }
+}
+
 TEST(Parser, GarbageBetweenFrames) {
   std::mt19937 rng(42);
   Bytes stream;
