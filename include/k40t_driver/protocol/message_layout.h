@@ -1,0 +1,91 @@
+// A pod message described by a layout() (codec/layout.h) meets message.h's contract through
+// K40T_MESSAGE_LAYOUT(), written once in the struct that has the layout():
+//
+//   struct SbusRangeRequest {
+//     kId, kName, kSection, kDirection, kSize, kMinSize ...
+//     uint16_t max_value = 1811;
+//     uint16_t min_value = 172;
+//     K40T_MESSAGE_LAYOUT()
+//     template <class S, class V>
+//     static void layout(S& s, V&& v) { ... }
+//     Status extra_checks() const;   // optional: rules between fields
+//   };
+//
+// The macro defines validate() (the layout's checks, then extra_checks() if the struct has one),
+// encode(), decode() and fields(). Byte order: the struct's
+// `static constexpr ByteOrder CodecOptions::* kByteOrder` if it has one (ACKs:
+// &CodecOptions::ack_byte_order, docs/protocol/decisions.md#a2), else little-endian (section 2.1).
+// Fields from kMinSize on are optional on decode (value-initialised when the payload ends).
+#pragma once
+
+#include <type_traits>
+#include <utility>
+
+#include "k40t_driver/codec/layout.h"
+#include "k40t_driver/protocol/codec_options.h"
+#include "k40t_driver/protocol/message.h"
+
+namespace k40t::protocol {
+
+namespace wire = codec::wire;
+
+namespace layout_detail {
+template <class T, class = void>
+struct HasByteOrder : std::false_type {};
+template <class T>
+struct HasByteOrder<T, std::void_t<decltype(T::kByteOrder)>> : std::true_type {};
+template <class T, class = void>
+struct HasExtraChecks : std::false_type {};
+template <class T>
+struct HasExtraChecks<T, std::void_t<decltype(std::declval<const T&>().extra_checks())>>
+    : std::true_type {};
+
+template <class T>
+ByteOrder byte_order_of(const CodecOptions& o) {
+  if constexpr (HasByteOrder<T>::value)
+    return o.*T::kByteOrder;
+  else
+    return ByteOrder::kLittle;
+}
+
+template <class T>
+Status validate(const T& m) {
+  Status result = Status::ok();
+  T::layout(m, codec::LayoutValidator(result));
+  if constexpr (HasExtraChecks<T>::value) {
+    if (result.is_ok()) return m.extra_checks();
+  }
+  return result;
+}
+
+template <class T>
+void encode(const T& m, ByteWriter& w, const CodecOptions& o) {
+  T::layout(m, codec::LayoutWriter(w, byte_order_of<T>(o)));
+}
+
+template <class T>
+Status decode(T& m, ByteReader& r, const CodecOptions& o) {
+  Status failure = Status::ok();
+  T::layout(m, codec::LayoutReader(r, byte_order_of<T>(o), T::kMinSize, &failure));
+  return failure;
+}
+}  // namespace layout_detail
+
+}  // namespace k40t::protocol
+
+// The members message.h's contract asks for, from the struct's layout().
+#define K40T_MESSAGE_LAYOUT()                                                                   \
+  ::k40t::Status validate() const {                                                             \
+    return ::k40t::protocol::layout_detail::validate(*this);                                    \
+  }                                                                                             \
+  void encode(::k40t::protocol::ByteWriter& w, const ::k40t::protocol::CodecOptions& o) const { \
+    ::k40t::protocol::layout_detail::encode(*this, w, o);                                       \
+  }                                                                                             \
+  ::k40t::Status decode(::k40t::protocol::ByteReader& r,                                        \
+                        const ::k40t::protocol::CodecOptions& o) {                              \
+    return ::k40t::protocol::layout_detail::decode(*this, r, o);                                \
+  }                                                                                             \
+  template <class Self, class V>                                                                \
+  static void fields(Self& self, V&& v) {                                                       \
+    layout(self, ::k40t::codec::FieldLister<std::remove_reference_t<V>>(v));                    \
+  }
