@@ -25,6 +25,7 @@
 #include "k40t_driver/protocol/parser.h"
 #include "k40t_driver/session/dispatcher.h"
 #include "k40t_driver/session/session.h"
+#include "percentiles.h"
 
 namespace {
 // Heap allocations made by this process. A benchmark-only instrument: the replaced operator new
@@ -46,18 +47,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using transport::testing::eventually;
 
-double percentile(const std::vector<double>& sorted, double fraction) {
-  if (sorted.empty()) return 0.0;
-  const auto index = static_cast<size_t>(fraction * static_cast<double>(sorted.size() - 1) + 0.5);
-  return sorted[std::min(index, sorted.size() - 1)];
-}
-
-void report_percentiles(benchmark::State& state, std::vector<double> micros) {
-  std::sort(micros.begin(), micros.end());
-  state.counters["p50_us"] = percentile(micros, 0.50);
-  state.counters["p99_us"] = percentile(micros, 0.99);
-  state.counters["max_us"] = micros.empty() ? 0.0 : micros.back();
-}
+using bench::report_percentiles;
 
 // The pod's side at its simplest: every request gets an OK ACK with two data bytes, written from
 // the transport's receive callback (its I/O thread).

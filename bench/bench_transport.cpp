@@ -19,6 +19,7 @@
 
 #include "../test/unit/transport_test_support.h"  // free ports, scratch dirs, waiting
 #include "k40t_driver/transport/transport.h"
+#include "percentiles.h"
 
 namespace k40t::transport {
 namespace {
@@ -115,18 +116,7 @@ class EchoPair {
   std::atomic<bool> echo_failed_{false};
 };
 
-double percentile(std::vector<double> sorted, double fraction) {
-  if (sorted.empty()) return 0.0;
-  const auto index = static_cast<size_t>(fraction * static_cast<double>(sorted.size() - 1) + 0.5);
-  return sorted[std::min(index, sorted.size() - 1)];
-}
-
-void report_percentiles(benchmark::State& state, std::vector<double> micros) {
-  std::sort(micros.begin(), micros.end());
-  state.counters["p50_us"] = percentile(micros, 0.50);
-  state.counters["p99_us"] = percentile(micros, 0.99);
-  state.counters["max_us"] = micros.empty() ? 0.0 : micros.back();
-}
+using bench::report_percentiles;
 
 void BM_RoundTrip(benchmark::State& state, Link link) {
   EchoPair pair(link);

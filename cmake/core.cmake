@@ -31,3 +31,12 @@ if(K40T_PSDK_SOURCES)
   target_link_libraries(k40t_psdk PUBLIC k40t_core k40t_geo OpenSSL::Crypto)
   set_target_properties(k40t_psdk PROPERTIES POSITION_INDEPENDENT_CODE ON)
 endif()
+
+# The pod driver's ROS-free logic (src/driver/): PodDriver (link, stamps, time sync, rate dead-man,
+# GPS answers), its options, the queries and jobs the glue shares, the diagnostics' levels and
+# texts. ros/ wraps it in topics, services and parameters.
+file(GLOB K40T_DRIVER_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/driver/*.cpp)
+add_library(k40t_driver_core STATIC ${K40T_DRIVER_SOURCES})
+target_include_directories(k40t_driver_core PUBLIC ${PROJECT_SOURCE_DIR}/include)
+target_link_libraries(k40t_driver_core PUBLIC k40t_core k40t_geo)
+set_target_properties(k40t_driver_core PROPERTIES POSITION_INDEPENDENT_CODE ON)

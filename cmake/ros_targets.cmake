@@ -1,9 +1,11 @@
 # The ROS layer, one shared library per nodelet so that each loads only what it uses:
 #   k40t_ros          src/ros/*.cpp: the pod driver (PodNodelet, k40t_node) and the glue the
-#                     others share (parameters, conversions); no OpenCV, GStreamer or OpenSSL;
+#                     others share (parameters, conversions); no GStreamer or OpenSSL, and of
+#                     OpenCV only calib3d (k40t_camera: locate_pixel's lens distortion);
 #   k40t_ros_video    src/ros/video/: VideoNodelet, k40t_video_node (OpenCV, GStreamer,
 #                     image_transport, camera_info_manager; cmake/video_ros.cmake);
-#   k40t_ros_skyport  src/ros/skyport/: SkyportNodelet, k40t_skyport_node (the PSDK layer, OpenSSL);
+#   k40t_ros_skyport  src/ros/skyport/: SkyportNodelet, k40t_skyport_node, the ROS glue of the
+#                     ROS-free bridge k40t_skyport_bridge (src/skyport/; the PSDK layer, OpenSSL);
 #   k40t_rviz_panel   src/rviz/: the rviz panel PodPanel (Qt; cmake/rviz_panel.cmake).
 # The standalone nodes, k40t_manager and the rostest programs under test/ros/ link them.
 file(GLOB K40T_ROS_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/*.cpp)
@@ -12,12 +14,12 @@ file(GLOB K40T_ROS_SKYPORT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/r
 add_library(k40t_ros SHARED ${K40T_ROS_SOURCES})
 target_include_directories(k40t_ros PUBLIC ${PROJECT_SOURCE_DIR}/include)
 target_include_directories(k40t_ros SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
-target_link_libraries(k40t_ros PUBLIC k40t_core k40t_geo ${catkin_LIBRARIES})
+target_link_libraries(k40t_ros PUBLIC k40t_driver_core k40t_core k40t_geo k40t_camera ${catkin_LIBRARIES})
 # Generated message/service headers and the dynamic_reconfigure K40tConfig.h.
 add_dependencies(k40t_ros ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg)
 
 add_library(k40t_ros_skyport SHARED ${K40T_ROS_SKYPORT_SOURCES})
-target_link_libraries(k40t_ros_skyport PUBLIC k40t_ros k40t_psdk)
+target_link_libraries(k40t_ros_skyport PUBLIC k40t_ros k40t_skyport_bridge)
 include(cmake/video_ros.cmake)  # k40t_ros_video
 include(cmake/bag.cmake)        # k40t_ros_bag, k40t_bag (`k40t bag`)
 include(cmake/rviz_panel.cmake)  # k40t_rviz_panel (Qt)
@@ -49,7 +51,7 @@ install(DIRECTORY launch config urdf rviz DESTINATION ${CATKIN_PACKAGE_SHARE_DES
 install(PROGRAMS scripts/k40t_urdf.py DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/scripts)
 
 # rostest programs, run by scripts/run_tests.sh through test/ros/*.test:
-#   test/ros/unit/*.cpp  gtest of the ROS layer's own logic (conversions, rate dead-man...), one
+#   test/ros/unit/*.cpp  gtest of what needs ROS types (conversions, the settings table...), one
 #                        binary k40t_ros_unit_tests;
 #   test/ros/*.cpp       gtest nodes, one executable each;
 #   test/ros/*.py        Python test nodes (/usr/bin/python3, rospy + unittest).
@@ -60,8 +62,7 @@ if(CATKIN_ENABLE_TESTING)
     add_executable(k40t_ros_unit_tests ${K40T_ROS_UNIT_SOURCES})
     target_link_libraries(k40t_ros_unit_tests PRIVATE k40t_ros k40t_ros_skyport k40t_ros_bag GTest::gtest
                                                       GTest::gtest_main)
-    # test_skyport_golden_coverage.cpp reads test/data/psdk_golden; the settings table's test
-    # checks docs/ros_interface.md and cfg/ against the table.
+    # The settings table's test checks docs/ros_interface.md and cfg/ against the table.
     target_compile_definitions(k40t_ros_unit_tests PRIVATE
                                K40T_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/test/data"
                                K40T_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
@@ -86,7 +87,7 @@ add_executable(k40t_service_rtt ${PROJECT_SOURCE_DIR}/bench/ros/service_rtt.cpp)
 target_link_libraries(k40t_service_rtt PRIVATE k40t_ros)
 # The SKYPORT bridge's getter ACK latency while a pod call is blocked (no ROS master needed).
 add_executable(k40t_skyport_getter_latency ${PROJECT_SOURCE_DIR}/bench/ros/skyport_getter_latency.cpp)
-target_link_libraries(k40t_skyport_getter_latency PRIVATE k40t_ros_skyport)
+target_link_libraries(k40t_skyport_getter_latency PRIVATE k40t_skyport_bridge)
 install(TARGETS k40t_bench_nodelets k40t_video_bench k40t_latency_probe k40t_service_rtt
                 k40t_skyport_getter_latency
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}

@@ -5,6 +5,7 @@
 // catalogue's describe() must refuse or decode it without crashing. For the message structs
 // listed in kRoundTrips, whatever decodes and validates must survive encode_payload and decode
 // back to the same fields, under both ACK byte orders.
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -13,12 +14,7 @@
 #include "../test/unit/field_recorder.h"
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/messages/ack.h"
-#include "k40t_driver/protocol/messages/camera.h"
-#include "k40t_driver/protocol/messages/gimbal.h"
-#include "k40t_driver/protocol/messages/laser.h"
-#include "k40t_driver/protocol/messages/sbus.h"
-#include "k40t_driver/protocol/messages/thermal.h"
-#include "k40t_driver/protocol/messages/visible.h"
+#include "k40t_driver/protocol/messages/all.h"
 #include "null_sink.h"
 
 namespace {
@@ -54,107 +50,13 @@ struct RoundTrip {
   MessageId id;
   void (*run)(const uint8_t*, size_t, const CodecOptions&);
 };
-template <class T>
-constexpr RoundTrip entry() {
-  return {T::kId, &round_trip<T>};
+// Every message struct of every family (messages/all.h) gets a typed round trip (ACKs without
+// their own struct use PlainAck).
+template <class... T>
+constexpr std::array<RoundTrip, sizeof...(T)> round_trips(MessageList<T...>) {
+  return {RoundTrip{T::kId, &round_trip<T>}...};
 }
-// Message structs with a typed round trip (ACKs without their own struct use PlainAck). A new
-// message family adds its structs here.
-constexpr RoundTrip kRoundTrips[] = {
-    entry<GimbalStatus>(),
-    entry<GimbalAttitude>(),
-    entry<GimbalControlRequest>(),
-    entry<GimbalAngleRequest>(),
-    entry<GimbalDriftCalibrationRequest>(),
-    entry<GimbalDialSpeedRequest>(),
-    entry<GimbalVersionRequest>(),
-    entry<GimbalVersionAck>(),
-    entry<GimbalPointAtRequest>(),
-    entry<GimbalServoOffRequest>(),
-    entry<GimbalLinearCalibrationRequest>(),
-    entry<GimbalRestartRequest>(),
-    entry<GimbalUseFlightControllerAttitudeRequest>(),
-    entry<GimbalAccelerationCalibrationRequest>(),
-    entry<GimbalStabilisationRequest>(),
-    entry<LaserRangeRequest>(),
-    entry<LaserRangeAck>(),
-    entry<LaserPeriodicRangeRequest>(),
-    entry<LaserPeriodicRangeStatus>(),
-    entry<SbusRangeRequest>(),
-    entry<SbusChannelsRequest>(),
-    entry<SbusConfigRequest>(),
-    entry<SbusConfigAck>(),
-    // camera family (camera_*.h, flight_controller.h)
-    entry<CameraSystemStatus>(),
-    entry<CameraUpgradeStatus>(),
-    entry<CaptureModeRequest>(),
-    entry<PhotoSettingsRequest>(),
-    entry<TakePhotoRequest>(),
-    entry<RecordRequest>(),
-    entry<ZoomRatioRequest>(),
-    entry<ContinuousZoomRequest>(),
-    entry<PreciseReshootRequest>(),
-    entry<StreamBitrateRequest>(),
-    entry<StreamResolutionRequest>(),
-    entry<StreamEncodingRequest>(),
-    entry<FocusRequest>(),
-    entry<OsdWatermarkRequest>(),
-    entry<ImageModeRequest>(),
-    entry<AiRecognitionRequest>(),
-    entry<BoxTrackingRequest>(),
-    entry<PhotoStatus>(),
-    entry<RecordStatus>(),
-    entry<ZoomStatus>(),
-    entry<PreciseReshootStatus>(),
-    entry<TfCardUpgradeStatus>(),
-    entry<SdFormatStatus>(),
-    entry<TfCardUpgradeRequest>(),
-    entry<FormatSdRequest>(),
-    entry<FactoryResetRequest>(),
-    entry<ShutdownRequest>(),
-    entry<GetIpRequest>(),
-    entry<GetIpAck>(),
-    entry<CameraVersionRequest>(),
-    entry<CameraVersionAck>(),
-    entry<TimeSyncRequest>(),
-    entry<SetIpRequest>(),
-    entry<CameraGpsRequest>(),
-    entry<CameraGpsAck>(),
-    entry<TargetGpsRequest>(),
-    entry<TargetGpsAck>(),
-    // thermal and visible families (thermal.h, visible.h)
-    entry<ThermalStatus>(),
-    entry<ThermalSettingsAck>(),
-    entry<ThermalReadSettingsRequest>(),
-    entry<ThermalZoomRequest>(),
-    entry<ThermalPaletteRequest>(),
-    entry<ThermalMeasurementRequest>(),
-    entry<ThermalSharpnessRequest>(),
-    entry<ThermalBrightnessRequest>(),
-    entry<ThermalContrastRequest>(),
-    entry<ThermalDenoiseRequest>(),
-    entry<ThermalEnhancementRequest>(),
-    entry<ThermalSpotRequest>(),
-    entry<ThermalAreaRequest>(),
-    entry<ThermalGainModeRequest>(),
-    entry<ThermalAlarmsRequest>(),
-    entry<ThermalOverlayRequest>(),
-    entry<ThermalThresholdAlarmRequest>(),
-    entry<VisibleStatus>(),
-    entry<VisibleSettingsAck>(),
-    entry<VisibleReadSettingsRequest>(),
-    entry<VisibleVideoResolutionRequest>(),
-    entry<VisiblePhotoResolutionRequest>(),
-    entry<VisibleIsoRequest>(),
-    entry<VisibleShutterRequest>(),
-    entry<VisibleEvRequest>(),
-    entry<VisibleWhiteBalanceRequest>(),
-    entry<VisibleAntiFlickerRequest>(),
-    entry<VisibleStrongLightRequest>(),
-    entry<VisibleBacklightRequest>(),
-    entry<VisibleAeLockRequest>(),
-    entry<VisibleMeteringRequest>(),
-};
+constexpr auto kRoundTrips = round_trips(PodMessages{});
 
 }  // namespace
 

@@ -12,27 +12,13 @@
 #include "k40t_driver/psdk/commands/header_variants.h"
 #include "k40t_driver/psdk/parser.h"
 #include "k40t_driver/psdk/sim/payload_reading.h"
-
-namespace {
-
-class NullSink : public k40t::protocol::FieldSink {
- public:
-  void integer(const char*, int64_t) override {}
-  void unsigned_integer(const char*, uint64_t) override {}
-  void real(const char*, double) override {}
-  void boolean(const char*, bool) override {}
-  void text(const char*, const std::string&) override {}
-  void enumeration(const char*, int64_t, const char*) override {}
-  void bytes(const char*, const uint8_t*, size_t) override {}
-};
-
-}  // namespace
+#include "null_sink.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace k40t::psdk;
   static const Aes128Ecb cipher(AesKey{0x71, 0xc6, 0x82, 0xc7});
   FrameParser parser;
-  NullSink sink;
+  k40t::fuzz::NullSink sink;
   size_t frame_bytes = 0;
   const auto on_frame = [&](const FrameView& frame) {
     frame_bytes += frame.size;

@@ -12,7 +12,7 @@ packages=(
   libdiagnostic-updater-dev libcv-bridge-dev libopencv-dev python3-dynamic-reconfigure
   libdynamic-reconfigure-config-init-mutex-dev ros-robot-state-publisher
   ros-std-srvs libstd-srvs-dev ros-sensor-msgs libsensor-msgs-dev ros-nav-msgs libnav-msgs-dev
-  python3-sensor-msgs python3-diagnostic-msgs python3-std-srvs python3-nodelet
+  python3-sensor-msgs python3-diagnostic-msgs python3-std-srvs python3-nodelet python3-nav-msgs
   python3-tf2-ros python3-tf2-msgs libdiagnostic-aggregator-dev libdiagnostic-aggregator-tools
   socat libssl-dev ccache rviz xvfb
   librviz-dev qtbase5-dev

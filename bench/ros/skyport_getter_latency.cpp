@@ -16,7 +16,7 @@
 
 #include "../../test/unit/psdk_fake_transport.h"
 #include "k40t_driver/psdk/sim/adapter_simulator.h"
-#include "k40t_driver/ros/skyport/skyport_bridge.h"
+#include "k40t_driver/skyport/skyport_bridge.h"
 
 namespace {
 

@@ -6,18 +6,14 @@
 #include <string>
 
 #include "k40t_driver/protocol/messages/ack.h"
+#include "k40t_driver/protocol/messages/all.h"
 
 namespace k40t::protocol {
 namespace {
 
 std::vector<MessageInfo> build() {
-  std::vector<MessageInfo> all;
-  add_gimbal_messages(all);
-  add_thermal_messages(all);
-  add_visible_messages(all);
-  add_camera_messages(all);
-  add_laser_messages(all);
-  add_sbus_messages(all);
+  // Every message struct of every family (messages/all.h).
+  std::vector<MessageInfo> all = infos_of(PodMessages{});
 
   // Every request the host or pod sends gets an ACK entry; where no data-carrying ACK struct was
   // registered, the ACK is the bare response code.

@@ -6,8 +6,8 @@
 #include <tf2/LinearMath/Matrix3x3.h>
 #include <tf2/LinearMath/Quaternion.h>
 
+#include "k40t_driver/driver/code_text.h"
 #include "k40t_driver/geo/geodesy.h"
-#include "k40t_driver/ros/code_text.h"
 
 namespace k40t::driver {
 

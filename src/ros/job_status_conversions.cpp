@@ -1,6 +1,6 @@
 #include "k40t_driver/ros/job_status_conversions.h"
 
-#include "k40t_driver/ros/code_text.h"
+#include "k40t_driver/driver/code_text.h"
 
 namespace k40t::driver {
 

@@ -24,6 +24,8 @@
 #include "k40t_driver/TakePhoto.h"
 #include "k40t_driver/Track.h"
 #include "k40t_driver/Zoom.h"
+#include "k40t_driver/driver/pod_queries.h"
+#include "k40t_driver/driver/sbus_write.h"
 #include "k40t_driver/operations/gimbal_operations.h"
 #include "k40t_driver/protocol/messages/camera_capture.h"
 #include "k40t_driver/protocol/messages/camera_imaging.h"
@@ -32,8 +34,6 @@
 #include "k40t_driver/protocol/messages/laser.h"
 #include "k40t_driver/protocol/messages/sbus.h"
 #include "k40t_driver/protocol/messages/thermal.h"
-#include "k40t_driver/ros/pod_queries.h"
-#include "k40t_driver/ros/sbus_write.h"
 #include "k40t_driver/ros/service_support.h"
 
 namespace k40t::driver {

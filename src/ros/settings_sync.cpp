@@ -1,7 +1,5 @@
 #include "k40t_driver/ros/settings_sync.h"
 
-#include <algorithm>
-
 #include <ros/console.h>
 
 namespace k40t::driver {
@@ -38,23 +36,11 @@ void SettingsSync::on_reconfigure(Config& config, uint32_t) {
     current_ = config;
     return;
   }
-  std::vector<const SettingBinding*> changed;
-  std::vector<const SettingBinding*> clamped;
-  for (const SettingBinding& binding : setting_bindings()) {
-    if (!binding.differs(config, current_)) continue;
-    (binding.only_clamped(config, current_) ? clamped : changed).push_back(&binding);
+  // A value dynamic_reconfigure only clamped is not sent beside a real change (the pod's value
+  // stays); switching a setting off goes first (driver/setting_binding.h).
+  for (const SettingBinding* binding : changes_to_send(setting_bindings(), config, current_)) {
+    apply(*binding, config);
   }
-  if (changed.empty()) {
-    changed.swap(clamped);  // the user chose exactly the bound: a real change
-  } else {
-    // dynamic_reconfigure clamped a value the pod reported outside the cfg range while another
-    // parameter changed: keep the pod's value, send nothing for it.
-    for (const SettingBinding* binding : clamped) binding->copy(config, current_);
-  }
-  std::stable_partition(changed.begin(), changed.end(), [&](const SettingBinding* binding) {
-    return binding->switches_off && binding->switches_off(config, current_);
-  });
-  for (const SettingBinding* binding : changed) apply(*binding, config);
   current_ = config;
 }
 

@@ -33,7 +33,11 @@ double distance_m(const geo::Geodetic& a, const geo::Geodetic& b) {
 TargetLocator::TargetLocator(ros::NodeHandle nh, const ros::NodeHandle& private_nh,
                              PodDriver& driver, const RosPodConfig& config,
                              PodDiagnostics& diagnostics)
-    : driver_(driver), ids_(config.ids), tf_(ros::Duration(30.0)), listener_(tf_) {
+    : driver_(driver),
+      ids_(config.ids),
+      tf_(ros::Duration(30.0)),
+      listener_(tf_),
+      camera_views_(nh) {
   vehicle_frame_ = private_nh.param<std::string>("vehicle_frame", ids_.base);
   uncertainty_ = read_uncertainty(private_nh);
   private_nh.param("laser_axis_tolerance_px", laser_axis_tolerance_px_, laser_axis_tolerance_px_);
@@ -48,11 +52,6 @@ TargetLocator::TargetLocator(ros::NodeHandle nh, const ros::NodeHandle& private_
   driver.on<protocol::LaserPeriodicRangeStatus>(range);
   driver.on<protocol::TargetGpsAck>(
       [this](const protocol::TargetGpsAck& m, StampNs s) { on_pod_target(m, s); });
-  camera_info_ = nh.subscribe<sensor_msgs::CameraInfo>(
-      "camera_info", 1, [this](const sensor_msgs::CameraInfo::ConstPtr& msg) {
-        std::lock_guard<std::mutex> lock(mutex_);
-        camera_info_msg_ = *msg;
-      });
   locate_pixel_ = nh.advertiseService("locate_pixel", &TargetLocator::locate_pixel, this);
   diagnostics.add_task("geolocation", [this](auto& stat) { diagnose(stat); });
 }
@@ -116,20 +115,23 @@ bool TargetLocator::locate_pixel(k40t_driver::LocatePixel::Request& req,
     res.message = why;
     return true;
   };
-  std::optional<sensor_msgs::CameraInfo> info;
   std::optional<std::pair<double, StampNs>> range;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    info = camera_info_msg_;
     range = last_range_;
   }
-  if (!info) return fail("no camera_info received (start the video: video:=true)");
-  const double fx = info->K[0], cx = info->K[2], fy = info->K[4], cy = info->K[5];
-  if (!(fx > 0 && fy > 0)) return fail("camera_info has no intrinsics (K)");
-  if (!std::isfinite(req.u) || !std::isfinite(req.v) || req.u < 0 || req.v < 0 ||
-      (info->width > 0 && req.u > info->width) || (info->height > 0 && req.v > info->height))
+  if (!std::isfinite(req.u) || !std::isfinite(req.v)) return fail("u, v must be finite");
+  // The image's camera_info, or in split screen the panel's that holds the pixel.
+  const Result<sensor_msgs::CameraInfo> info = camera_views_.for_pixel(req.u, req.v);
+  if (!info) return fail(info.error());
+  if (req.u < 0 || req.v < 0 || (info->width > 0 && req.u > info->width) ||
+      (info->height > 0 && req.v > info->height))
     return fail("u, v must be inside the " + std::to_string(info->width) + "x" +
                 std::to_string(info->height) + " image");
+  const camera::CameraModel lens = camera_model(info.value());
+  // Undistorted (OpenCV, with the camera_info's D) normalised coordinates of the pixel.
+  const Result<std::array<double, 2>> normalised = camera::pixel_to_normalised(lens, req.u, req.v);
+  if (!normalised) return fail(normalised.error());
   if (req.plane_reference > k40t_driver::LocatePixel::Request::MSL)
     return fail("plane_reference must be 0 (ABOVE_TAKEOFF) or 1 (MSL)");
   if (!std::isfinite(req.plane_height)) return fail("plane_height must be finite");
@@ -140,7 +142,7 @@ bool TargetLocator::locate_pixel(k40t_driver::LocatePixel::Request& req,
   if (!pose) return fail(pose.error());
   const std::string& camera = info->header.frame_id;
   // Optical frame: z forward, x right, y down.
-  const geo::Vector3 optical{(req.u - cx) / fx, (req.v - cy) / fy, 1.0};
+  const geo::Vector3 optical{(*normalised)[0], (*normalised)[1], 1.0};
   const Result<geo::BodyRay> ray = ray_in_vehicle(tf_, vehicle_frame_, camera, stamp, optical);
   if (!ray) return fail(ray.error());
 
@@ -148,11 +150,11 @@ bool TargetLocator::locate_pixel(k40t_driver::LocatePixel::Request& req,
   bool on_axis = false;
   if (req.use_laser && range) {
     const Result<geo::BodyRay> laser = ray_in_vehicle(tf_, camera, ids_.laser, stamp, {1, 0, 0});
-    if (laser && laser->direction[2] > 0) {
-      const double lu = fx * laser->direction[0] / laser->direction[2] + cx;
-      const double lv = fy * laser->direction[1] / laser->direction[2] + cy;
-      on_axis = std::hypot(lu - req.u, lv - req.v) <= laser_axis_tolerance_px_;
-    }
+    const Result<std::array<double, 2>> spot =
+        laser ? camera::project_ray(lens, laser->direction)
+              : Result<std::array<double, 2>>::fail(laser.error());
+    if (spot)
+      on_axis = std::hypot((*spot)[0] - req.u, (*spot)[1] - req.v) <= laser_axis_tolerance_px_;
   }
   Result<geo::Located> located = Result<geo::Located>::fail("not located");
   if (on_axis) {

@@ -200,7 +200,8 @@ void put_point(std::ostream& out, const char* name, const std::optional<Vec3>& p
 }
 
 // The true state now: Unix time of the model's now, the pod's position and velocity, the
-// vehicle heading the pod uses, the hot object's centre, the laser spot and its range.
+// vehicle heading the pod uses, the boresight (yaw clockwise from north, pitch up, degrees: where
+// every camera and the laser point), the hot object's centre, the laser spot and its range.
 std::string run_truth(const Args&, ControlTarget& target) {
   std::ostringstream out;
   out.precision(12);
@@ -212,6 +213,7 @@ std::string run_truth(const Args&, ControlTarget& target) {
     put_point(out, "pod", pod.pod_position(), truth);
     out << " pod_ne " << pod.pod_position().x << " " << pod.pod_position().y;
     out << " velocity_ne " << v.x << " " << v.y << " heading " << pod.vehicle_attitude().yaw_deg;
+    out << " boresight " << pod.boresight_yaw_deg() << " " << pod.boresight_pitch_deg();
     put_point(out, "hot", pod.hot_object_position(), truth);
     put_point(out, "laser", pod.laser_spot(), truth);
     const std::optional<double> range = pod.laser_range();
@@ -224,6 +226,19 @@ std::string run_geotags(const Args&, ControlTarget& target) {
   std::string text;
   target.with_model([&](PodModel& pod) { text = pod.ground_truth().describe_geotags(); });
   return "ok " + text;
+}
+
+// What the host last sent in 0x000320 (ground_truth.h).
+std::string run_flight_data(const Args&, ControlTarget& target) {
+  std::ostringstream out;
+  out.precision(9);
+  target.with_model([&](PodModel& pod) {
+    const ReceivedFlightData& d = pod.ground_truth().received_flight_data();
+    out << "ok requests " << d.requests << " ground_speed " << d.ground_speed_m_s << " climb "
+        << d.climb_rate_m_s << " heading " << d.heading_deg << " airspeed " << d.airspeed_m_s
+        << " throttle " << d.throttle_percent;
+  });
+  return out.str();
 }
 
 const std::vector<Command>& commands() {
@@ -247,6 +262,7 @@ const std::vector<Command>& commands() {
       {"truth", "truth", 0, 0, run_truth},
       {"hot-object", "hot-object NORTH EAST", 2, 2, run_hot_object},
       {"geotags", "geotags", 0, 0, run_geotags},
+      {"flight-data", "flight-data", 0, 0, run_flight_data},
   };
   return kCommands;
 }

@@ -75,4 +75,9 @@ std::string GroundTruth::describe_geotags() const {
   return out.str();
 }
 
+void GroundTruth::flight_data_received(ReceivedFlightData data) {
+  data.requests = received_.requests + 1;
+  received_ = data;
+}
+
 }  // namespace k40t::sim

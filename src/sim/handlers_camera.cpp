@@ -76,6 +76,9 @@ p::CameraVersionAck camera_version(RequestContext& ctx, const p::CameraVersionRe
 }
 
 p::TargetGpsAck target_position(RequestContext& ctx, const p::TargetGpsRequest& req) {
+  ctx.pod.ground_truth().flight_data_received({0, req.ground_speed_m_s, req.climb_rate_m_s,
+                                               req.heading_deg, req.airspeed_m_s,
+                                               req.throttle_percent});
   const GeoPoint host{req.latitude_deg, req.longitude_deg, req.relative_height_m, req.altitude_m};
   const auto target =
       ctx.pod.locate_target(host, VehicleAttitude{req.yaw_deg, req.roll_deg, req.pitch_deg});

@@ -14,41 +14,19 @@ std::optional<double> alarm_limit(bool on, double degC) {
   return on ? std::optional<double>(degC) : std::nullopt;
 }
 
+// The read-all ACK is what the model keeps (thermal_model.h): every handler below writes it.
 p::ThermalSettingsAck read_all(RequestContext& ctx, const p::ThermalReadSettingsRequest&) {
-  const ThermalSettings& s = ctx.pod.thermal().settings();
-  p::ThermalSettingsAck ack;
-  ack.palette = same_code<p::Palette>(s.palette);
-  ack.measurement_on = s.measurement_on;
-  ack.measurement_type = same_code<p::ThermalMeasurementType>(s.measurement_type);
-  ack.core_type = s.radiometric ? p::ThermalCoreType::kRadiometric : p::ThermalCoreType::kSighting;
-  ack.zoom_x = s.digital_zoom;
-  ack.sharpness = s.sharpness;
-  ack.gain_mode = same_code<p::ThermalGainMode>(s.gain);
-  ack.brightness = s.brightness;
-  ack.contrast = s.contrast;
-  ack.denoise_on = s.denoise_on;
-  ack.denoise_level = s.denoise_level;
-  ack.enhancement_on = s.enhancement > 0;
-  ack.enhancement_level = s.enhancement;
-  ack.high_alarm_on = s.high_alarm_degC.has_value();
-  ack.high_alarm_degC = s.high_alarm_degC.value_or(0);
-  ack.low_alarm_on = s.low_alarm_degC.has_value();
-  ack.low_alarm_degC = s.low_alarm_degC.value_or(0);
-  ack.difference_alarm_on = s.difference_alarm_degC.has_value();
-  ack.difference_alarm_degC = s.difference_alarm_degC.value_or(0);
-  ack.threshold_alarm_on = s.threshold_alarm_on;
-  ack.threshold_reference_degC = s.threshold_reference_degC;
-  ack.threshold_float_degC = s.threshold_float_degC;
-  return ack;
+  return ctx.pod.thermal().settings().reported;
 }
 
-ThermalSettings& thermal_settings(PodModel& pod) {
-  return pod.thermal().settings();
+p::ThermalSettingsAck& reported(PodModel& pod) {
+  return pod.thermal().settings().reported;
 }
 
+// A setting the pod stores as it is and reports in 0x010100: ack.*field = request.*value.
 template <class Req, class Field, class Value>
-HandlerEntry thermal_setting(Field ThermalSettings::*field, Value Req::*value) {
-  return stored_setting<Req>(thermal_settings, field, value);
+HandlerEntry thermal_setting(Field p::ThermalSettingsAck::*field, Value Req::*value) {
+  return stored_setting<Req>(reported, field, value);
 }
 
 }  // namespace
@@ -58,30 +36,35 @@ void add_thermal_handlers(std::vector<HandlerEntry>& out) {
   out.push_back(plain<p::ThermalZoomRequest>([](PodModel& pod, const p::ThermalZoomRequest& req) {
     return pod.thermal().set_digital_zoom(req.zoom_x);
   }));
-  out.push_back(thermal_setting(&ThermalSettings::palette, &p::ThermalPaletteRequest::palette));
-  out.push_back(store<p::ThermalMeasurementRequest>(
-      [](PodModel& pod, const p::ThermalMeasurementRequest& req) {
-        pod.thermal().settings().measurement_on = req.measurement_on;
-      }));
   out.push_back(
-      thermal_setting(&ThermalSettings::sharpness, &p::ThermalSharpnessRequest::sharpness));
+      thermal_setting(&p::ThermalSettingsAck::palette, &p::ThermalPaletteRequest::palette));
+  out.push_back(thermal_setting(&p::ThermalSettingsAck::measurement_on,
+                                &p::ThermalMeasurementRequest::measurement_on));
   out.push_back(
-      thermal_setting(&ThermalSettings::brightness, &p::ThermalBrightnessRequest::brightness));
-  out.push_back(thermal_setting(&ThermalSettings::contrast, &p::ThermalContrastRequest::contrast));
+      thermal_setting(&p::ThermalSettingsAck::sharpness, &p::ThermalSharpnessRequest::sharpness));
+  out.push_back(thermal_setting(&p::ThermalSettingsAck::brightness,
+                                &p::ThermalBrightnessRequest::brightness));
+  out.push_back(
+      thermal_setting(&p::ThermalSettingsAck::contrast, &p::ThermalContrastRequest::contrast));
   out.push_back(
       store<p::ThermalDenoiseRequest>([](PodModel& pod, const p::ThermalDenoiseRequest& req) {
-        pod.thermal().settings().denoise_on = req.denoise_on;
-        pod.thermal().settings().denoise_level = req.denoise_level;
+        reported(pod).denoise_on = req.denoise_on;
+        reported(pod).denoise_level = req.denoise_level;
       }));
-  out.push_back(thermal_setting(&ThermalSettings::enhancement,
-                                &p::ThermalEnhancementRequest::enhancement_level));
+  // 0x00010E has the level only (0 = off); the ACK has a switch bit too.
+  out.push_back(store<p::ThermalEnhancementRequest>(
+      [](PodModel& pod, const p::ThermalEnhancementRequest& req) {
+        reported(pod).enhancement_on = req.enhancement_level > 0;
+        reported(pod).enhancement_level = req.enhancement_level;
+      }));
   out.push_back(plain<p::ThermalSpotRequest>([](PodModel& pod, const p::ThermalSpotRequest& req) {
     return pod.thermal().set_spot(req.x_px, req.y_px);
   }));
   out.push_back(plain<p::ThermalAreaRequest>([](PodModel& pod, const p::ThermalAreaRequest& req) {
     return pod.thermal().set_area(req.width_px, req.height_px, req.center_x_px, req.center_y_px);
   }));
-  out.push_back(thermal_setting(&ThermalSettings::gain, &p::ThermalGainModeRequest::gain_mode));
+  out.push_back(
+      thermal_setting(&p::ThermalSettingsAck::gain_mode, &p::ThermalGainModeRequest::gain_mode));
   out.push_back(
       plain<p::ThermalAlarmsRequest>([](PodModel& pod, const p::ThermalAlarmsRequest& req) {
         return pod.thermal().set_alarms(

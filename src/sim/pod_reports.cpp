@@ -23,7 +23,7 @@ bool camera_up(const PodModel& pod) {
   return pod.camera_available();
 }
 bool measuring(const PodModel& pod) {
-  return pod.camera_available() && pod.thermal().settings().measurement_on;
+  return pod.camera_available() && pod.thermal().settings().reported.measurement_on;
 }
 bool ranging(const PodModel& pod) {
   return pod.camera_available() && pod.laser().periodic();

@@ -287,7 +287,7 @@ std::string PodServer::status() {
         << to_string(pod.camera().sd().state()) << " camera "
         << (pod.camera_available() ? "up" : "down") << " recording "
         << (pod.camera().recording() ? "yes" : "no") << " palette "
-        << static_cast<int>(pod.thermal().settings().palette) << " image-mode "
+        << static_cast<int>(pod.thermal().settings().reported.palette) << " image-mode "
         << static_cast<int>(pod.camera().settings().image_mode) << " focus ";
     if (const auto& area = pod.zoom().focus_area()) {
       out << "area " << area->left << "," << area->top << "-" << area->right << "," << area->bottom;

@@ -89,6 +89,28 @@ double ThermalFrame::sensor_v(double y) {
   return (y + 0.5 - kTop) / kFrameScaleY;
 }
 
+protocol::ThermalSettingsAck factory_thermal_settings() {
+  protocol::ThermalSettingsAck s;
+  s.palette = protocol::Palette::kWhiteHot;
+  s.measurement_on = true;
+  s.measurement_type = MeasurementType::kArea;
+  s.core_type = protocol::ThermalCoreType::kRadiometric;
+  s.zoom_x = 1;
+  s.sharpness = 50;
+  s.gain_mode = GainMode::kHigh;
+  s.brightness = 50;
+  s.contrast = 50;
+  s.denoise_on = true;
+  s.denoise_level = 50;
+  s.enhancement_on = false;
+  s.enhancement_level = 0;
+  s.high_alarm_on = s.low_alarm_on = s.difference_alarm_on = false;  // -2732 on the wire
+  s.threshold_alarm_on = false;
+  s.threshold_reference_degC = 0;  // -30..50
+  s.threshold_float_degC = 10;     // 0..80
+  return s;
+}
+
 GainRange gain_range(GainMode mode) {
   // High gain: fine resolution over everyday temperatures; low gain: up to hot engines and fires.
   return mode == GainMode::kLow ? GainRange{-40, 550} : GainRange{-40, 150};
@@ -96,14 +118,14 @@ GainRange gain_range(GainMode mode) {
 
 Outcome ThermalModel::set_digital_zoom(int zoom) {
   if (zoom < 1 || zoom > 8) return Outcome::kFailure;
-  settings_.digital_zoom = static_cast<uint8_t>(zoom);
+  settings_.reported.zoom_x = static_cast<uint8_t>(zoom);
   return Outcome::kOk;
 }
 
 Outcome ThermalModel::set_spot(int x, int y) {
   if (!ThermalFrame::inside(x, y)) return Outcome::kFailure;  // on the black border
   settings_.spot = {x, y};
-  settings_.measurement_type = MeasurementType::kPoint;
+  settings_.reported.measurement_type = MeasurementType::kPoint;
   return Outcome::kOk;
 }
 
@@ -115,7 +137,7 @@ Outcome ThermalModel::set_area(int width, int height, int centre_x, int centre_y
     return Outcome::kFailure;
   }
   settings_.area = {width, height, centre_x, centre_y};
-  settings_.measurement_type = MeasurementType::kArea;
+  settings_.reported.measurement_type = MeasurementType::kArea;
   return Outcome::kOk;
 }
 
@@ -127,26 +149,30 @@ Outcome ThermalModel::set_alarms(std::optional<double> high_degC, std::optional<
   if (!in(high_degC, -100, 500) || !in(low_degC, -100, 500) || !in(difference_degC, 0.1, 600)) {
     return Outcome::kFailure;  // "If other values are set, the command reporting setting fails"
   }
-  settings_.high_alarm_degC = high_degC;
-  settings_.low_alarm_degC = low_degC;
-  settings_.difference_alarm_degC = difference_degC;
+  protocol::ThermalSettingsAck& r = settings_.reported;
+  r.high_alarm_on = high_degC.has_value();
+  r.high_alarm_degC = high_degC.value_or(0);
+  r.low_alarm_on = low_degC.has_value();
+  r.low_alarm_degC = low_degC.value_or(0);
+  r.difference_alarm_on = difference_degC.has_value();
+  r.difference_alarm_degC = difference_degC.value_or(0);
   return Outcome::kOk;
 }
 
 Outcome ThermalModel::set_threshold_alarm(bool on, double reference_degC, double float_degC) {
   if (reference_degC < -30 || reference_degC > 50 || float_degC < 0 || float_degC > 80)
     return Outcome::kFailure;
-  settings_.threshold_alarm_on = on;
-  settings_.threshold_reference_degC = reference_degC;
-  settings_.threshold_float_degC = float_degC;
+  settings_.reported.threshold_alarm_on = on;
+  settings_.reported.threshold_reference_degC = reference_degC;
+  settings_.reported.threshold_float_degC = float_degC;
   return Outcome::kOk;
 }
 
 ThermalStats ThermalModel::measure(const World& world, double yaw_deg, double pitch_deg) const {
-  const ThermalView view(world, yaw_deg, pitch_deg, settings_.digital_zoom);
+  const ThermalView view(world, yaw_deg, pitch_deg, settings_.reported.zoom_x);
 
   SensorRect rect{0, 0, kThermalWidthPx - 1, kThermalHeightPx - 1};
-  if (settings_.measurement_type == MeasurementType::kArea && settings_.area.width > 0 &&
+  if (settings_.reported.measurement_type == MeasurementType::kArea && settings_.area.width > 0 &&
       settings_.area.height > 0) {
     const MeasurementArea& a = settings_.area;
     rect = {sensor_index(ThermalFrame::sensor_u(a.centre_x - a.width / 2), kThermalWidthPx),
@@ -172,7 +198,7 @@ ThermalStats ThermalModel::measure(const World& world, double yaw_deg, double pi
   coldest = refine(view, rect, coldest, [](double a, double b) { return a < b; });
 
   // Auto gain switches to low gain when the scene is too hot for high gain.
-  GainMode gain = settings_.gain;
+  GainMode gain = settings_.reported.gain_mode;
   if (gain == GainMode::kAuto)
     gain = hottest.degC > gain_range(GainMode::kHigh).max_degC ? GainMode::kLow : GainMode::kHigh;
   const GainRange range = gain_range(gain);
@@ -193,11 +219,11 @@ ThermalStats ThermalModel::measure(const World& world, double yaw_deg, double pi
   stats.spot_degC = reading(view.at(spot_u, spot_v));
   stats.spot_at = settings_.spot;
 
-  const ThermalSettings& s = settings_;
-  stats.high_alarm = s.high_alarm_degC && stats.max_degC >= *s.high_alarm_degC;
-  stats.low_alarm = s.low_alarm_degC && stats.min_degC <= *s.low_alarm_degC;
+  const protocol::ThermalSettingsAck& s = settings_.reported;
+  stats.high_alarm = s.high_alarm_on && stats.max_degC >= s.high_alarm_degC;
+  stats.low_alarm = s.low_alarm_on && stats.min_degC <= s.low_alarm_degC;
   stats.difference_alarm =
-      s.difference_alarm_degC && stats.max_degC - stats.min_degC >= *s.difference_alarm_degC;
+      s.difference_alarm_on && stats.max_degC - stats.min_degC >= s.difference_alarm_degC;
   // Threshold alarm: something in the region leaves reference +- float.
   stats.threshold_alarm = s.threshold_alarm_on &&
                           (stats.max_degC > s.threshold_reference_degC + s.threshold_float_degC ||

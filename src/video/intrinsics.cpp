@@ -66,4 +66,9 @@ Intrinsics placed(const Intrinsics& in, double scale, double x, double y, int fr
   return out;
 }
 
+Intrinsics in_panel(const Intrinsics& in, const cv::Rect& panel, const cv::Size& frame) {
+  return placed(in, static_cast<double>(panel.width) / in.width, panel.x, panel.y, frame.width,
+                frame.height);
+}
+
 }  // namespace k40t::video

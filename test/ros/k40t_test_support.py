@@ -7,6 +7,7 @@ import time
 
 import rospy
 from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
+from sensor_msgs.msg import JointState
 
 DRIVER_NS = "/k40t"
 
@@ -24,6 +25,23 @@ def wait_until(predicate, timeout, step=0.02):
         time.sleep(step)
         value = predicate()
     return value
+
+
+def reply_field(reply, key):
+    """The word after `key` in a reply line of a simulator's control socket: k40t_sim's `status`
+    ('ok link ... | t 12.5 s yaw 12.3 pitch -4 zoom 2x ... shooting no ...') or `truth`
+    ('... heading 90 ...'); the first place `key` stands as a word, '|' being no word. Raises
+    AssertionError, naming the key and quoting the line, when the key is not there."""
+    words = reply.replace("|", " ").split()
+    for i, word in enumerate(words[:-1]):
+        if word == key:
+            return words[i + 1]
+    raise AssertionError("no '%s' in the simulator's reply: %s" % (key, reply))
+
+
+def reply_number(reply, key):
+    """The number after `key` in a reply line (see reply_field); a zoom's '2x' reads 2.0."""
+    return float(reply_field(reply, key).rstrip("x"))
 
 
 class SimControl:
@@ -58,11 +76,18 @@ class SimControl:
             raise AssertionError("simulator refused '%s': %s" % (line, reply))
         return reply
 
+    def field(self, key, command="status"):
+        """The word after `key` in the reply to `command` (see reply_field)."""
+        return reply_field(self.ok(command), key)
+
+    def number(self, key, command="status"):
+        """The number after `key` in the reply to `command` (see reply_number)."""
+        return reply_number(self.ok(command), key)
+
     def busy_with(self, activity):
         """True while the simulated pod is `activity` ("shooting", "zooming" or "upgrading"), from
         its `status` line: the pod's own state, not a status topic that may be a second old."""
-        words = self.ok("status").split()
-        return words[words.index(activity) + 1] == "yes"
+        return self.field(activity) == "yes"
 
     def wait_idle(self, timeout):
         """Waits until the pod neither shoots, zooms nor upgrades; False on timeout."""
@@ -187,6 +212,24 @@ class Run:
         if not self.client.wait_for_result(rospy.Duration(timeout)):
             raise AssertionError("no result within %.0f s" % timeout)
         return self.client.get_state(), self.client.get_result()
+
+
+def record(owner, **topics):
+    """Sets owner.ATTR to a Recorder of the driver's topic for each ATTR=(relative topic, type)."""
+    for attr, (topic, msg_type) in topics.items():
+        setattr(owner, attr, Recorder(name(topic), msg_type))
+
+
+def start_driver_test(cls, node_name, diagnostics=False, **topics):
+    """setUpClass of a rostest node against the driver and k40t_sim: the node, cls.sim (the
+    simulator's control socket, ~control), cls.joints and the Recorders of `topics` (see record()),
+    cls.diagnostics if asked; returns once the driver publishes telemetry."""
+    rospy.init_node(node_name)
+    cls.sim = SimControl(rospy.get_param("~control"))
+    record(cls, joints=("joint_states", JointState), **topics)
+    if diagnostics:
+        cls.diagnostics = Diagnostics()
+    assert cls.joints.wait_for(3, timeout=20.0), "no telemetry from the driver"
 
 
 def service(relative, srv_type, timeout=15.0):

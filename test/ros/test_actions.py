@@ -12,13 +12,12 @@ import actionlib
 import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
-from sensor_msgs.msg import JointState
 
 from k40t_driver.msg import (Frame, FormatSdAction, FormatSdGoal, GimbalCalibrateAction, GimbalCalibrateGoal,
                              GimbalMoveToAction, GimbalMoveToGoal, PreciseReshootAction, PreciseReshootGoal,
                              TfUpgradeAction, TfUpgradeGoal, VisibleStatus, ZoomToAction, ZoomToGoal)
 from k40t_driver.srv import SetZoom
-from k40t_test_support import (BACKGROUND_IDS, Recorder, Run, SimControl, frame_id, ids_sent_since, name, service,
+from k40t_test_support import (BACKGROUND_IDS, Run, frame_id, ids_sent_since, name, service, start_driver_test,
                                wait_until)
 
 PKG = "k40t_driver"
@@ -31,11 +30,7 @@ PITCH = 2
 class Actions(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        rospy.init_node("test_actions")
-        cls.sim = SimControl(rospy.get_param("~control"))
-        cls.raw_tx = Recorder(name("raw/tx"), Frame)
-        cls.joints = Recorder(name("joint_states"), JointState)
-        cls.visible = Recorder(name("visible/status"), VisibleStatus)
+        start_driver_test(cls, "test_actions", raw_tx=("raw/tx", Frame), visible=("visible/status", VisibleStatus))
         cls.clients = {}
         cls.specs = {}
         for action, spec in (("gimbal/move_to", GimbalMoveToAction), ("gimbal/calibrate", GimbalCalibrateAction),
@@ -45,7 +40,6 @@ class Actions(unittest.TestCase):
             assert client.wait_for_server(rospy.Duration(20.0)), "no action server " + action
             cls.clients[action] = client
             cls.specs[action] = spec
-        assert cls.joints.wait_for(3, timeout=20.0), "no telemetry from the driver"
         assert cls.visible.wait_for(1, timeout=10.0), "no visible/status"
         time.sleep(1.0)  # the settings read when the pod comes online
 

@@ -6,13 +6,11 @@ import sys
 import time
 import unittest
 
-import rospy
 import rostest
-from sensor_msgs.msg import JointState
 
 from k40t_driver.msg import ThermalStats
 from k40t_driver.srv import SetPalette
-from k40t_test_support import ERROR, OK, Diagnostics, Recorder, SimControl, name, service, wait_until
+from k40t_test_support import ERROR, OK, service, start_driver_test, wait_until
 
 PKG = "k40t_driver"
 
@@ -20,12 +18,7 @@ PKG = "k40t_driver"
 class Faults(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        rospy.init_node("test_faults")
-        cls.sim = SimControl(rospy.get_param("~control"))
-        cls.joints = Recorder(name("joint_states"), JointState)
-        cls.thermal = Recorder(name("thermal/stats"), ThermalStats)
-        cls.diagnostics = Diagnostics()
-        assert cls.joints.wait_for(3, timeout=20.0), "no telemetry from the driver"
+        start_driver_test(cls, "test_faults", diagnostics=True, thermal=("thermal/stats", ThermalStats))
         assert cls.diagnostics.wait_level("link", OK, 10.0), "link never OK"
 
     def setUp(self):

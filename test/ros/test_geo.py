@@ -8,107 +8,27 @@ true time), then
   - the gimbal is pointed at the hot object at about 100 m and 500 m slant range; laser/target_local
     and locate_pixel (image centre: on the laser axis, and on a plane at the object's height) must
     be within 1 % of the slant range of the truth; laser/target (the pod's own answer) is reported.
+  - the gimbal is aimed a few degrees off the object; the object's pixel is computed from the
+    truth (positions and boresight) and the camera_info, and locate_pixel (on the plane through
+    the object's centre) must be within 1 % of the slant range: off-centre pixels.
 The same script runs hovering (geo_hover.test) and flying at 15 m/s (geo_moving.test)."""
 import math
 import sys
-import threading
 import time
 import unittest
 
 import rospy
 import rostest
-from geometry_msgs.msg import TwistStamped
-from sensor_msgs.msg import CameraInfo, Imu, JointState, NavSatFix, NavSatStatus
+from sensor_msgs.msg import JointState, NavSatFix, NavSatStatus
 
+from geo_truth import (GROUND_HEIGHT, HOT_RADIUS, TELE_K, Aiming, TruthFeeder, distance_m,
+                       fix_point, parse_truth, pixel_of)
 from k40t_driver.msg import LaserTarget
 from k40t_driver.srv import LocatePixel, LocatePixelRequest, MeasureRange, SetAngle, TakePhoto
 from k40t_test_support import Recorder, SimControl, name, service, wait_until
 
-A, F = 6378137.0, 1 / 298.257223563
-GROUND_HEIGHT = 30.0  # the simulator's default: the ground is 30 m below the pod
-HOT_RADIUS = 2.0
 
-
-def radii(lat_deg):
-    e2 = F * (2 - F)
-    s = math.sin(math.radians(lat_deg))
-    w = math.sqrt(1 - e2 * s * s)
-    return A * (1 - e2) / w ** 3, A / w
-
-
-def offset_m(a, b):
-    """(north, east, up) metres from a to b, each (lat, lon, h): small offsets (< 1 km)."""
-    meridian, prime = radii(a[0])
-    north = math.radians(b[0] - a[0]) * (meridian + a[2])
-    east = math.radians(b[1] - a[1]) * (prime + a[2]) * math.cos(math.radians(a[0]))
-    return north, east, b[2] - a[2]
-
-
-def distance_m(a, b):
-    return math.sqrt(sum(c * c for c in offset_m(a, b)))
-
-
-def parse_truth(reply):
-    words = reply.split()
-    out = {"unix": float(words[words.index("unix") + 1])}
-    for key in ("pod", "hot", "laser"):
-        i = words.index(key)
-        out[key] = None if words[i + 1] == "none" else tuple(float(w) for w in words[i + 1:i + 5])
-    i = words.index("pod_ne")
-    out["pod_ne"] = (float(words[i + 1]), float(words[i + 2]))
-    i = words.index("velocity_ne")
-    out["velocity"] = (float(words[i + 1]), float(words[i + 2]))
-    out["heading"] = float(words[words.index("heading") + 1])
-    out["range"] = float(words[words.index("range") + 1])
-    return out
-
-
-class TruthFeeder(threading.Thread):
-    """Publishes the simulator's true state as the driver's fix, attitude and velocity, 20 Hz."""
-
-    def __init__(self, control):
-        super().__init__(daemon=True)
-        self.control = control
-        self.fix = rospy.Publisher(name("fix"), NavSatFix, queue_size=10)
-        self.attitude = rospy.Publisher(name("attitude"), Imu, queue_size=10)
-        self.velocity = rospy.Publisher(name("velocity"), TwistStamped, queue_size=10)
-        self.camera_info = rospy.Publisher(name("camera_info"), CameraInfo, queue_size=1)
-        self.latest = None
-        self.running = True
-
-    def run(self):
-        while self.running and not rospy.is_shutdown():
-            truth = parse_truth(self.control.ok("truth"))
-            self.latest = truth
-            stamp = rospy.Time.from_sec(truth["unix"])
-            fix = NavSatFix()
-            fix.header.stamp = stamp
-            fix.header.frame_id = "base_link"
-            fix.status.status = fix.status.STATUS_GBAS_FIX
-            fix.latitude, fix.longitude, fix.altitude = truth["pod"][0:3]
-            fix.position_covariance = [0.01, 0, 0, 0, 0.01, 0, 0, 0, 0.04]
-            fix.position_covariance_type = NavSatFix.COVARIANCE_TYPE_DIAGONAL_KNOWN
-            self.fix.publish(fix)
-            imu = Imu()
-            imu.header = fix.header
-            yaw = math.radians(90.0 - truth["heading"])  # ENU, level vehicle
-            imu.orientation.z, imu.orientation.w = math.sin(yaw / 2), math.cos(yaw / 2)
-            self.attitude.publish(imu)
-            twist = TwistStamped()
-            twist.header = fix.header
-            twist.twist.linear.y, twist.twist.linear.x = truth["velocity"]  # north, east
-            self.velocity.publish(twist)
-            # A 1920x1080 view of the telephoto lens; the pixel tested is its centre.
-            info = CameraInfo()
-            info.header.stamp = rospy.Time.now()
-            info.header.frame_id = "k40t_tele_optical_frame"
-            info.width, info.height = 1920, 1080
-            info.K = [1500.0, 0, 960.0, 0, 1500.0, 540.0, 0, 0, 1]
-            self.camera_info.publish(info)
-            time.sleep(0.05)
-
-
-class GeoTest(unittest.TestCase):
+class GeoTest(Aiming, unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         rospy.init_node("test_geo")
@@ -152,56 +72,8 @@ class GeoTest(unittest.TestCase):
         if self.moving:
             self.assertGreater(min(moved), 2.5)  # 15 m/s x 200 ms: what the latest state costs
 
-    def aim_at_hot_object(self, lead=0.3):
-        """Points the boresight at the hot object's centre from where the pod will be in `lead`
-        seconds; returns the commanded (pitch, yaw), REP 103 radians."""
-        truth = self.feeder.latest
-        pod = list(truth["pod"][0:3])
-        vn, ve = truth["velocity"]
-        meridian, prime = radii(pod[0])
-        pod[0] += math.degrees(vn * lead / meridian)
-        pod[1] += math.degrees(ve * lead / (prime * math.cos(math.radians(pod[0]))))
-        n, e, u = offset_m(pod, truth["hot"][0:3])
-        bearing = math.degrees(math.atan2(e, n)) - truth["heading"]  # joint yaw, right positive
-        down = math.atan2(-u, math.hypot(n, e))
-        yaw = -math.radians((bearing + 180.0) % 360.0 - 180.0)
-        res = self.set_angle(pitch=down, yaw=yaw)
-        self.assertTrue(res.success, res.message)
-        return down, yaw
-
-    def on_target(self, pitch, yaw, tolerance=math.radians(0.1)):
-        js = self.joints.latest()
-        if js is None:
-            return False
-        joint = dict(zip(js.name, js.position))
-        return (abs(joint["k40t_pitch_joint"] - pitch) < tolerance and
-                abs(joint["k40t_yaw_joint"] - yaw) < tolerance)
-
     def check_hot_object_at(self, slant):
-        # The object straight ahead of the vehicle's track (so its bearing holds while flying),
-        # at about `slant` when the laser measures: the gimbal first turns to the track, then
-        # the object is placed ahead by what the vehicle flies while the gimbal settles (~1.5 s).
-        truth = self.feeder.latest
-        vn, ve = truth["velocity"]
-        speed = math.hypot(vn, ve)
-        dn, de = (vn / speed, ve / speed) if speed > 0 else (1.0, 0.0)
-        down = math.atan2(GROUND_HEIGHT, slant)
-        track = -math.atan2(de, dn)  # REP 103 yaw of the track (heading 0: the vehicle faces north)
-        self.set_angle(pitch=down, yaw=track)
-        wait_until(lambda: self.on_target(down, track, math.radians(0.5)), 10.0)
-        truth = self.feeder.latest
-        pod_n, pod_e = truth["pod_ne"]
-        horizontal = math.sqrt(slant * slant - (GROUND_HEIGHT - HOT_RADIUS) ** 2)
-        ahead = horizontal + speed * 1.5
-        self.control.ok("hot-object %.3f %.3f" % (pod_n + dn * ahead, pod_e + de * ahead))
-        time.sleep(0.3)
-        # The gimbal turns at 20 deg/s: aim again (ahead of the flight) until it is there.
-        deadline = time.time() + 15.0
-        while time.time() < deadline:
-            pitch, yaw = self.aim_at_hot_object()
-            time.sleep(0.3)
-            if self.on_target(pitch, yaw):
-                break
+        self.place_and_aim(slant)
         since = time.time()
         res = self.measure()
         self.assertTrue(res.success, res.message)
@@ -211,27 +83,23 @@ class GeoTest(unittest.TestCase):
         range_now = res.range
         self.assertTrue(math.isfinite(range_now), "the laser got no return")
         # The spot is on the sphere's near side: one radius from the centre.
-        local_error = abs(distance_m((local.latitude, local.longitude, local.altitude), hot[0:3])
-                          - HOT_RADIUS)
+        local_error = abs(distance_m(fix_point(local), hot[0:3]) - HOT_RADIUS)
         centre = LocatePixelRequest(u=960.0, v=540.0, plane_reference=LocatePixelRequest.MSL,
                                     plane_height=hot[3], use_laser=True)
         on_axis = self.locate(centre)
         self.assertTrue(on_axis.success, on_axis.message)
         self.assertTrue(on_axis.on_laser_axis)
-        axis_error = abs(distance_m((on_axis.fix.latitude, on_axis.fix.longitude,
-                                     on_axis.fix.altitude), hot[0:3]) - HOT_RADIUS)
+        axis_error = abs(distance_m(fix_point(on_axis.fix), hot[0:3]) - HOT_RADIUS)
         centre.use_laser = False
         plane = self.locate(centre)
         self.assertTrue(plane.success, plane.message)
         self.assertFalse(plane.on_laser_axis)
         # On the plane through the centre: the ray passes the centre within the aim's error.
-        plane_error = distance_m((plane.fix.latitude, plane.fix.longitude, plane.fix.altitude),
-                                 hot[0:3])
+        plane_error = distance_m(fix_point(plane.fix), hot[0:3])
         # The pod's own answer to the next 0x000320 (laser_target_period 1 s), for comparison.
         pod_answer = self.pod_target.wait_for_match(lambda m: True, timeout=3.0,
                                                     since=time.time() + 0.1)
-        pod_error = (abs(distance_m((pod_answer.latitude, pod_answer.longitude,
-                                     pod_answer.altitude), hot[0:3]) - HOT_RADIUS)
+        pod_error = (abs(distance_m(fix_point(pod_answer), hot[0:3]) - HOT_RADIUS)
                      if pod_answer else float("nan"))
         print("GEO moving=%s slant %.1f m: laser/target_local %.3f m, locate_pixel on the laser "
               "axis %.3f m, on the plane %.3f m, pod's next laser/target %.3f m; sigma_e %.3f m"
@@ -245,6 +113,35 @@ class GeoTest(unittest.TestCase):
     def test_hot_object_at_100_and_500_m(self):
         for slant in (100.0, 500.0):
             self.check_hot_object_at(slant)
+
+    def check_off_centre_at(self, slant, yaw_off_deg, pitch_up_deg):
+        self.place_and_aim(slant)
+        self.aim_off(yaw_off_deg, pitch_up_deg)
+        # One camera_info stamped with one truth sample, and the object's pixel from that sample.
+        self.feeder.hold_camera_info = True
+        try:
+            time.sleep(0.1)
+            truth = parse_truth(self.control.ok("truth"))
+            u, v = pixel_of(truth, truth["hot"], TELE_K)
+            self.feeder.publish_camera_info(rospy.Time.from_sec(truth["unix"]))
+            time.sleep(0.3)
+            res = self.locate(LocatePixelRequest(u=u, v=v, plane_reference=LocatePixelRequest.MSL,
+                                                 plane_height=truth["hot"][3], use_laser=True))
+        finally:
+            self.feeder.hold_camera_info = False
+        self.assertTrue(res.success, res.message)
+        self.assertFalse(res.on_laser_axis)
+        off = math.hypot(u - TELE_K[2], v - TELE_K[5])
+        self.assertGreater(off, 50.0, "pixel (%.1f, %.1f) is not off centre" % (u, v))
+        true_slant = distance_m(truth["pod"][0:3], truth["hot"][0:3])
+        error = distance_m(fix_point(res.fix), truth["hot"][0:3])
+        print("GEO moving=%s off-centre pixel (%.1f, %.1f), %.0f px from the centre, slant %.1f m: "
+              "locate_pixel on the plane %.3f m" % (self.moving, u, v, off, true_slant, error))
+        self.assertLessEqual(error, 0.01 * true_slant, "%.3f m at %.1f m" % (error, true_slant))
+
+    def test_off_centre_pixels_at_100_and_500_m(self):
+        self.check_off_centre_at(100.0, yaw_off_deg=3.0, pitch_up_deg=2.0)
+        self.check_off_centre_at(500.0, yaw_off_deg=-4.0, pitch_up_deg=1.5)
 
     def test_laser_target_report_keeps_every_field(self):
         report = self.report.wait_for_match(lambda m: m.code == 0, timeout=10.0)

@@ -38,10 +38,7 @@ class Pod:
         return self.sim.ok("status")
 
     def number(self, key):
-        match = re.search(r"\b%s (-?[0-9.]+)" % re.escape(key), self.status())
-        if not match:
-            raise AssertionError("no '%s' in the simulator's status: %s" % (key, self.status()))
-        return float(match.group(1))
+        return self.sim.number(key)
 
     def photo_count(self):
         return int(re.match(r"ok (\d+) photos", self.sim.ok("photos")).group(1))
@@ -126,26 +123,31 @@ class PanelTest(unittest.TestCase):
         # Let go: the zoom stops short of its end (160x, ~2 s of zooming further).
         self.assertLess(self.pod.settled("zoom"), 159.0)
 
-    def test_06_joystick_turns_while_held_and_stops_on_release(self):
-        before = self.pod.settled("yaw")
+    def assertHeldControlTurns(self, key, margin, hold, let_go, axis, rate, limit):
+        """Holds a gimbal control (panel commands `hold`, then `let_go`): the pod's `key` must grow
+        by more than `margin` degrees meanwhile, cmd_rate must carry `rate` (rad/s) about `axis`
+        and then stop, and the pod must stop short of `limit`."""
+        before = self.pod.settled(key)
         since = time.time()
-        self.panel.do("press gimbal_joystick 1 0")  # full right: the pod's yaw grows (right positive)
-        turned = wait_until(lambda: self.pod.number("yaw") > before + 10, WAIT, step=0.05)
-        self.panel.do("release gimbal_joystick")
-        self.assertTrue(turned, "the gimbal did not turn right: %s" % self.pod.status())
-        self.assertRatesThenStop(since, "z", -math.radians(20))  # REP 103: right is negative yaw
-        self.assertLess(self.pod.settled("yaw"), 179.0)  # stopped before the mechanical limit
+        self.panel.do(hold)
+        turned = wait_until(lambda: self.pod.number(key) > before + margin, WAIT, step=0.05)
+        self.panel.do(let_go)
+        self.assertTrue(turned, "the gimbal's %s did not grow while held: %s" % (key, self.pod.status()))
+        self.assertRatesThenStop(since, axis, rate)
+        self.assertLess(self.pod.settled(key), limit)
+
+    def test_06_joystick_turns_while_held_and_stops_on_release(self):
+        # Full right: the pod's yaw grows (right positive); REP 103: right is negative yaw. It stops
+        # before the mechanical limit.
+        self.assertHeldControlTurns("yaw", 10, "press gimbal_joystick 1 0", "release gimbal_joystick",
+                                    "z", -math.radians(20), 179.0)
 
     def test_07_held_arrow_key_turns_and_release_stops(self):
         self.panel.do("type gimbal_max_rate 5")  # 5 deg/s: seconds of margin before the +30 limit
-        before = self.pod.settled("pitch")
-        since = time.time()
-        self.panel.do("keypress gimbal_joystick Up")  # camera up: the pod's pitch grows (up positive)
-        turned = wait_until(lambda: self.pod.number("pitch") > before + 3, WAIT, step=0.05)
-        self.panel.do("keyrelease gimbal_joystick Up")
-        self.assertTrue(turned, "the gimbal did not pitch up: %s" % self.pod.status())
-        self.assertRatesThenStop(since, "y", -math.radians(5))  # REP 103: up is negative pitch
-        self.assertLess(self.pod.settled("pitch"), 29.5)  # stopped before the +30 limit
+        # Camera up: the pod's pitch grows (up positive); REP 103: up is negative pitch. It stops
+        # before the +30 limit.
+        self.assertHeldControlTurns("pitch", 3, "keypress gimbal_joystick Up", "keyrelease gimbal_joystick Up",
+                                    "y", -math.radians(5), 29.5)
 
     def test_08_move_to_angles_then_centre_and_look_down(self):
         self.panel.do("type gimbal_pitch 20")  # REP 103: 20 deg down

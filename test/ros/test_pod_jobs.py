@@ -11,18 +11,15 @@ import threading
 import time
 import unittest
 
-import rospy
 import rostest
 from dynamic_reconfigure.client import Client as ReconfigureClient
-from sensor_msgs.msg import JointState
 from std_srvs.srv import Trigger
 
 from k40t_driver.msg import (CameraUpgradeStatus, Frame, PreciseReshootStatus, SdFormatStatus, TfCardUpgradeStatus, VisibleStatus,
                              ZoomStatus)
 from k40t_driver.srv import (Focus, FocusRequest, GetSbus, PreciseReshoot, PreciseReshootRequest, Send, SetPalette, SetPhotoMode,
                              SetPhotoModeRequest, SetSbus, SetZoom)
-from k40t_test_support import (Recorder, SimControl, assert_rejected_without_sending, frame_id, name, service,
-                               wait_until)
+from k40t_test_support import assert_rejected_without_sending, frame_id, name, service, start_driver_test, wait_until
 
 PKG = "k40t_driver"
 SBUS_CHANNELS = dict(stream_channel=8, zoom_channel=9, photo_channel=10, record_channel=11, pitch_channel=12,
@@ -32,17 +29,11 @@ SBUS_CHANNELS = dict(stream_channel=8, zoom_channel=9, photo_channel=10, record_
 class PodJobs(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        rospy.init_node("test_pod_jobs")
-        cls.sim = SimControl(rospy.get_param("~control"))
-        cls.raw_tx = Recorder(name("raw/tx"), Frame)
-        cls.joints = Recorder(name("joint_states"), JointState)
-        cls.visible = Recorder(name("visible/status"), VisibleStatus)
-        cls.zoom = Recorder(name("zoom/status"), ZoomStatus)
-        cls.reshoot = Recorder(name("reshoot/status"), PreciseReshootStatus)
-        cls.tf_upgrade = Recorder(name("tf_card_upgrade/status"), TfCardUpgradeStatus)
-        cls.sd_format = Recorder(name("sd_format/status"), SdFormatStatus)
-        cls.camera_upgrade = Recorder(name("camera/upgrade_status"), CameraUpgradeStatus)
-        assert cls.joints.wait_for(3, timeout=20.0), "no telemetry from the driver"
+        start_driver_test(cls, "test_pod_jobs", raw_tx=("raw/tx", Frame), visible=("visible/status", VisibleStatus),
+                          zoom=("zoom/status", ZoomStatus), reshoot=("reshoot/status", PreciseReshootStatus),
+                          tf_upgrade=("tf_card_upgrade/status", TfCardUpgradeStatus),
+                          sd_format=("sd_format/status", SdFormatStatus),
+                          camera_upgrade=("camera/upgrade_status", CameraUpgradeStatus))
         cls.client = ReconfigureClient(name("driver"), timeout=15.0)
         time.sleep(1.5)  # the read-back that follows the pod coming online
 
@@ -66,24 +57,26 @@ class PodJobs(unittest.TestCase):
             return all(config[k] == v for k, v in expected.items())
         return wait_until(matches, 3.0)
 
+    def state_seen(self, recorder, state, text, timeout, since):
+        """The first message of `recorder` after `since` in `state`: asserts that it arrives within
+        `timeout` seconds and names its state `text`."""
+        msg = recorder.wait_for_match(lambda m: m.state == state, timeout, since)
+        self.assertIsNotNone(msg, "no '%s' on %s" % (text, recorder.topic))
+        self.assertEqual(msg.state_text, text)
+        return msg
+
     # --- status topics ---------------------------------------------------------------------
     def test_zoom_status_says_zooming_then_done(self):
         since = time.time()
         self.call_ok("set_zoom", SetZoom, ratio=20.0)
-        zooming = self.zoom.wait_for_match(lambda m: m.state == ZoomStatus.STATE_ZOOMING, 5.0, since)
-        self.assertIsNotNone(zooming, "no 'zooming' on zoom/status")
-        self.assertEqual(zooming.state_text, "zooming")
-        done = self.zoom.wait_for_match(lambda m: m.state == ZoomStatus.STATE_DONE, 10.0, since)
-        self.assertIsNotNone(done, "no 'done' on zoom/status")
-        self.assertEqual(done.state_text, "zoom done")
+        self.state_seen(self.zoom, ZoomStatus.STATE_ZOOMING, "zooming", 5.0, since)
+        done = self.state_seen(self.zoom, ZoomStatus.STATE_DONE, "zoom done", 10.0, since)
         self.assertGreater(done.header.stamp.to_sec(), 0)
 
     def test_format_sd_progress_at_5_hz(self):
         since = time.time()
         self.call_ok("format_sd", Trigger)
-        done = self.sd_format.wait_for_match(lambda m: m.state == SdFormatStatus.STATE_DONE, 15.0, since)
-        self.assertIsNotNone(done, "no 'format done' on sd_format/status")
-        self.assertEqual(done.state_text, "format done")
+        self.state_seen(self.sd_format, SdFormatStatus.STATE_DONE, "format done", 15.0, since)
         stamps = [m.header.stamp.to_sec() for m in self.sd_format.messages(since)
                   if m.state == SdFormatStatus.STATE_FORMATTING]
         self.assertGreaterEqual(len(stamps), 3, "too few 'formatting' frames to see a rate")
@@ -101,9 +94,7 @@ class PodJobs(unittest.TestCase):
         reshooting = self.reshoot.wait_for_match(lambda m: m.state == PreciseReshootStatus.STATE_RESHOOTING, 5.0, since)
         self.assertIsNotNone(reshooting, "no 'reshooting' on reshoot/status")
         self.assertEqual(reshooting.lens, PreciseReshootStatus.LENS_VISIBLE)
-        done = self.reshoot.wait_for_match(lambda m: m.state == PreciseReshootStatus.STATE_DONE, 10.0, since)
-        self.assertIsNotNone(done, "no 'photo taken' on reshoot/status")
-        self.assertEqual(done.state_text, "photo taken")
+        self.state_seen(self.reshoot, PreciseReshootStatus.STATE_DONE, "photo taken", 10.0, since)
         self.assertIn("reshoot_a.jpg 5664x4248", self.sim.ok("photos"))
 
     def test_precise_reshoot_refuses_bad_input_sending_nothing(self):
@@ -128,9 +119,7 @@ class PodJobs(unittest.TestCase):
     def test_tf_upgrade_reports_until_it_succeeds(self):
         since = time.time()
         self.call_ok("tf_upgrade", Trigger)
-        upgrading = self.tf_upgrade.wait_for_match(lambda m: m.state == TfCardUpgradeStatus.STATE_UPGRADING, 5.0, since)
-        self.assertIsNotNone(upgrading, "no 'upgrading' on tf_card_upgrade/status")
-        self.assertEqual(upgrading.state_text, "upgrading")
+        self.state_seen(self.tf_upgrade, TfCardUpgradeStatus.STATE_UPGRADING, "upgrading", 5.0, since)
         done = self.tf_upgrade.wait_for_match(lambda m: m.state == TfCardUpgradeStatus.STATE_SUCCEEDED, 20.0, since)
         self.assertIsNotNone(done, "no 'upgrade succeeded' on tf_card_upgrade/status")
         # The 1 Hz upgrade report (0x000008) counts the progress on camera/upgrade_status.

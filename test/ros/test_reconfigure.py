@@ -2,40 +2,58 @@
 """dynamic_reconfigure against the simulated pod: every parameter round-trips (set, then read
 back from the pod after a reconnect), a refused change is reverted, and the pod's own settings
 become the configuration on connect."""
+import ast
 import os
 import re
 import sys
 import time
 import unittest
 
-import rospy
 import rostest
 from dynamic_reconfigure.client import Client as ReconfigureClient
-from sensor_msgs.msg import JointState
 
 from k40t_driver.srv import Send
-from k40t_test_support import WARN, Diagnostics, Recorder, SimControl, name, service, wait_until
+from k40t_test_support import WARN, name, service, start_driver_test, wait_until
 
 PKG = "k40t_driver"
 
-# A value different from the simulator's default for every parameter.
-VALUES = {
-    "palette": 9, "thermal_zoom": 4, "thermal_measurement": False, "thermal_gain": 1,
-    "thermal_sharpness": 33, "thermal_brightness": 61, "thermal_contrast": 72,
-    "thermal_denoise": True, "thermal_denoise_level": 44, "thermal_enhancement": 6,
-    "high_alarm": True, "high_alarm_degC": 150.5, "low_alarm": True, "low_alarm_degC": -20.0,
-    "difference_alarm": True, "difference_alarm_degC": 42.0,
-    "threshold_alarm": True, "threshold_reference_degC": 25.0, "threshold_float_degC": 7.5,
-    "video_resolution": 0x26, "photo_resolution": 0x14, "iso": 3, "shutter": 13, "ev": 0x1C,
-    "white_balance": 5, "anti_flicker": 2, "backlight_compensation": True, "backlight_level": 30,
-    "ae_lock": True, "metering": 3, "osd_watermark": True,
-    "camera_mode": 1, "image_mode": 7, "stream_bitrate": 6, "stream_encoding": 1,
-    "photo_mode": 2, "timelapse_interval": 30, "burst_count": 5, "stabilisation": True,
-    "pitch_dial_speed": 100, "yaw_dial_speed": 25, "periodic_ranging": True, "thermal_overlay": True,
-}
-# Not set: the strong-light suppression excludes the backlight compensation set above; the only
-# other stream resolution, 720p, is one the document marks unsupported (refused before sending).
+# Not set: the strong-light suppression excludes the backlight compensation the derived values
+# switch on; the only other stream resolution, 720p, is one the document marks unsupported (refused
+# before sending).
 NOT_SET = {"strong_light_suppression", "strong_light_level", "stream_resolution"}
+
+
+def enum_values(description):
+    """The codes of an enum parameter's edit_method (cfg/setting_enums.txt via cfg/K40t.cfg), or
+    None for a plain parameter."""
+    method = description.get("edit_method") or ""
+    if not method:
+        return None
+    return [constant["value"] for constant in ast.literal_eval(method)["enum"]]
+
+
+def test_value(description, current):
+    """A value for one parameter, derived from its cfg description (type, range, default, enum
+    entries): different from both the cfg default and the pod's current value, so that a change
+    the driver does not send, or the pod does not store, cannot read back as set. None if there is
+    none."""
+    avoid = {description["default"], current}
+    if description["type"] == "bool":
+        return not current  # the default can equal the pod's value only once
+    codes = enum_values(description)
+    if codes is not None:  # the enum entries after the default's, wrapping around
+        start = codes.index(description["default"]) if description["default"] in codes else -1
+        for code in codes[start + 1:] + codes[:start + 1]:
+            if code not in avoid:
+                return code
+        return None
+    low, high = description["min"], description["max"]
+    for fraction in (1.0 / 3, 2.0 / 3, 0.5):
+        value = low + (high - low) * fraction
+        value = int(round(value)) if description["type"] == "int" else round(value, 1)
+        if low <= value <= high and value not in avoid:
+            return value
+    return None
 
 
 def write_only_parameters():
@@ -55,21 +73,22 @@ def write_only_parameters():
 
 # Parameters the pod cannot report: checked by their ACK only (the value stays as set); the others
 # are read back from the pod's reports (0x000100, 0x000200, the camera and the gimbal status).
-WRITE_ONLY = {k: v for k, v in VALUES.items() if k in write_only_parameters()}
-READ_BACK = {k: v for k, v in VALUES.items() if k not in WRITE_ONLY}
+WRITE_ONLY_NAMES = write_only_parameters()
 
 
 class Reconfigure(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        rospy.init_node("test_reconfigure")
-        cls.sim = SimControl(rospy.get_param("~control"))
-        cls.joints = Recorder(name("joint_states"), JointState)
-        cls.diagnostics = Diagnostics()
-        assert cls.joints.wait_for(3, timeout=20.0), "no telemetry from the driver"
+        start_driver_test(cls, "test_reconfigure", diagnostics=True)
         cls.client = ReconfigureClient(name("driver"), timeout=15.0)
         # Wait for the read-back that follows the pod coming online.
         assert wait_until(lambda: cls.diagnostics.value("settings", "read-backs") not in (None, "0"), 10.0)
+        # The test value of every parameter, from the cfg's descriptions and the pod's settings.
+        cls.descriptions = {d["name"]: d for d in cls.client.get_parameter_descriptions(timeout=5.0)}
+        cls.initial = cls.client.get_configuration(timeout=5.0)
+        cls.values = {n: test_value(d, cls.initial[n]) for n, d in cls.descriptions.items() if n not in NOT_SET}
+        cls.write_only = {k: v for k, v in cls.values.items() if k in WRITE_ONLY_NAMES}
+        cls.read_back = {k: v for k, v in cls.values.items() if k not in cls.write_only}
 
     def reconnect_and_wait_for_read_back(self):
         reads = int(self.diagnostics.value("settings", "read-backs"))
@@ -84,23 +103,31 @@ class Reconfigure(unittest.TestCase):
         return wait_until(lambda: (self.diagnostics.value("settings", "last refusal") or "").startswith(text), 3.0)
 
     def test_every_parameter_has_a_value_to_round_trip(self):
-        described = {p["name"] for p in self.client.get_parameter_descriptions()}
-        self.assertEqual(set(VALUES) | NOT_SET, described)
-        self.assertTrue(WRITE_ONLY, "the docs' settings table lists no write-only setting")
+        self.assertLessEqual(NOT_SET, set(self.descriptions), "NOT_SET names a parameter the cfg lacks")
+        for key, value in self.values.items():
+            d = self.descriptions[key]
+            self.assertIsNotNone(value, "%s: no value differs from the default and the pod's" % key)
+            self.assertNotEqual(value, self.initial[key], key)
+            if d["type"] != "bool":
+                self.assertNotEqual(value, d["default"], key)
+                self.assertTrue(d["min"] <= value <= d["max"], "%s: %r outside the cfg range" % (key, value))
+            if enum_values(d) is not None:
+                self.assertIn(value, enum_values(d), key)
+        self.assertTrue(self.write_only, "the docs' settings table lists no write-only setting")
 
     def test_every_parameter_round_trips_through_the_pod(self):
         # One at a time, so a refusal names its parameter.
-        for key, value in list(READ_BACK.items()) + list(WRITE_ONLY.items()):
+        for key, value in list(self.read_back.items()) + list(self.write_only.items()):
             config = self.client.update_configuration({key: value})
             self.assertEqual(config[key], value, "%s: set to %r, the driver kept %r" % (key, value, config[key]))
         # The backlight and the strong-light suppression are exclusive; backlight wins here.
         config = self.reconnect_and_wait_for_read_back()
-        for key, value in READ_BACK.items():
+        for key, value in self.read_back.items():
             if isinstance(value, float):
                 self.assertAlmostEqual(config[key], value, delta=0.05, msg=key)
             else:
                 self.assertEqual(config[key], value, "%s read back as %r after reconnect, set %r" % (key, config[key], value))
-        for key, value in WRITE_ONLY.items():
+        for key, value in self.write_only.items():
             self.assertEqual(config[key], value, "%s lost on reconnect" % key)
 
     def test_refused_change_is_reverted_and_reported(self):

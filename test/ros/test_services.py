@@ -4,7 +4,6 @@ seen in telemetry (or in the pod's own answers); invalid arguments give success=
 message naming the field and its range and send nothing (raw/tx unchanged); a NACK and a
 timeout come back as success=false with the pod's response text."""
 import math
-import struct
 import sys
 import time
 import unittest
@@ -12,7 +11,7 @@ import unittest
 import rospy
 import rostest
 from geometry_msgs.msg import Twist, Vector3Stamped
-from sensor_msgs.msg import JointState, NavSatFix
+from sensor_msgs.msg import NavSatFix
 from std_srvs.srv import Trigger
 
 from k40t_driver.msg import CameraStatus, Frame, GimbalStatus, RecordStatus, ThermalStats, VisibleStatus
@@ -20,7 +19,7 @@ from k40t_driver.srv import (Calibrate, Focus, GetIp, GetSbus, GetVersions, Meas
                              SetAiRecognition, SetAngle, SetArea, SetIp, SetPalette, SetPhotoMode, SetSbus, SetSpot,
                              SetZoom, TakePhoto, Track, Zoom)
 from dynamic_reconfigure.client import Client as ReconfigureClient
-from k40t_test_support import Recorder, SimControl, assert_rejected_without_sending, frame_id, name, service, wait_until
+from k40t_test_support import assert_rejected_without_sending, frame_id, name, service, start_driver_test, wait_until
 
 PKG = "k40t_driver"
 
@@ -28,16 +27,9 @@ PKG = "k40t_driver"
 class Services(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        rospy.init_node("test_services")
-        cls.sim = SimControl(rospy.get_param("~control"))
-        cls.raw_tx = Recorder(name("raw/tx"), Frame)
-        cls.joints = Recorder(name("joint_states"), JointState)
-        cls.visible = Recorder(name("visible/status"), VisibleStatus)
-        cls.camera = Recorder(name("camera/status"), CameraStatus)
-        cls.thermal = Recorder(name("thermal/stats"), ThermalStats)
-        cls.gimbal = Recorder(name("gimbal/status"), GimbalStatus)
-        cls.record_status = Recorder(name("record/status"), RecordStatus)
-        assert cls.joints.wait_for(3, timeout=20.0), "no telemetry from the driver"
+        start_driver_test(cls, "test_services", raw_tx=("raw/tx", Frame), visible=("visible/status", VisibleStatus),
+                          camera=("camera/status", CameraStatus), thermal=("thermal/stats", ThermalStats),
+                          gimbal=("gimbal/status", GimbalStatus), record_status=("record/status", RecordStatus))
         # The driver reads versions and settings when the pod comes online; let that finish.
         time.sleep(1.0)
 

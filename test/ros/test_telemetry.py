@@ -73,32 +73,34 @@ class Telemetry(unittest.TestCase):
                 return frame
         return None
 
+    def with_frames(self, topic, msg_id, n, timeout):
+        """(message, payload of the raw frame with the same stamp) for the next n messages of
+        `topic` (those whose frame raw/rx holds: its recorder may have missed the oldest)."""
+        msgs = self.topics[topic].wait_for(n, timeout=timeout, since=time.time())
+        pairs = []
+        for msg in msgs:
+            frame = self.matching_frame(msg_id, msg.header.stamp)
+            if frame is not None:
+                pairs.append((msg, payload(frame.data)))
+        return pairs
+
     def test_joint_states_equal_the_attitude_frames(self):
         # Section 3.1.1.2: int16 deg x100, joint yaw, roll, pitch first; REP 103 flips yaw and pitch.
         self.sim.ok("clear")
-        msgs = self.topics["joint_states"].wait_for(20, timeout=5.0, since=time.time())
-        checked = 0
-        for js in msgs:
-            frame = self.matching_frame(0x000002, js.header.stamp)
-            if frame is None:
-                continue
-            yaw, roll, pitch = struct.unpack_from("<hhh", payload(frame.data))
+        pairs = self.with_frames("joint_states", 0x000002, 20, 5.0)
+        for js, data in pairs:
+            yaw, roll, pitch = struct.unpack_from("<hhh", data)
             self.assertEqual(js.name, ["k40t_yaw_joint", "k40t_roll_joint", "k40t_pitch_joint"])
             self.assertAlmostEqual(js.position[0], -math.radians(yaw / 100.0), places=9)
             self.assertAlmostEqual(js.position[1], math.radians(roll / 100.0), places=9)
             self.assertAlmostEqual(js.position[2], -math.radians(pitch / 100.0), places=9)
-            checked += 1
-        self.assertGreaterEqual(checked, 10, "joint_states without a raw attitude frame of the same stamp")
+        self.assertGreaterEqual(len(pairs), 10, "joint_states without a raw attitude frame of the same stamp")
 
     def test_thermal_stats_equal_the_thermal_frames(self):
         # Section 3.2.1.2: int16 x0.1 degC max, min, centre, point, average; uint16 coordinates.
-        msgs = self.topics["thermal/stats"].wait_for(10, timeout=5.0, since=time.time())
-        checked = 0
-        for stats in msgs:
-            frame = self.matching_frame(0x000004, stats.header.stamp)
-            if frame is None:
-                continue
-            tmax, tmin, centre, point, average, max_x, max_y = struct.unpack_from("<hhhhhHH", payload(frame.data))
+        pairs = self.with_frames("thermal/stats", 0x000004, 10, 5.0)
+        for stats, data in pairs:
+            tmax, tmin, centre, point, average, max_x, max_y = struct.unpack_from("<hhhhhHH", data)
             self.assertAlmostEqual(stats.max_degC, tmax / 10.0, places=4)
             self.assertAlmostEqual(stats.min_degC, tmin / 10.0, places=4)
             self.assertAlmostEqual(stats.centre_degC, centre / 10.0, places=4)
@@ -106,8 +108,7 @@ class Telemetry(unittest.TestCase):
             self.assertAlmostEqual(stats.average_degC, average / 10.0, places=4)
             self.assertEqual((stats.max_x, stats.max_y), (max_x, max_y))
             self.assertEqual(stats.header.frame_id, "k40t_thermal_optical_frame")
-            checked += 1
-        self.assertGreaterEqual(checked, 5)
+        self.assertGreaterEqual(len(pairs), 5)
 
     def test_camera_status_carries_the_simulators_sd_card(self):
         status = self.topics["camera/status"].wait_for(1, timeout=3.0)[-1]

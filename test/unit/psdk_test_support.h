@@ -32,6 +32,18 @@ inline Bytes make_frame(const FrameHeader& header, const Bytes& data,
   return f ? Bytes(f->data(), f->data() + f->size()) : Bytes{};
 }
 
+// A command frame (encoded by the code under test) of `key` with `sequence` and DATA `data`.
+inline Bytes command_frame(CommandKey key, uint16_t sequence, const Bytes& data,
+                           AckRequest ack = AckRequest::kAfterExecution,
+                           const Aes128Ecb* cipher = nullptr) {
+  FrameHeader h;
+  h.command = key;
+  h.sequence = sequence;
+  h.ack_request = ack;
+  h.encryption = cipher ? Encryption::kAes : Encryption::kNone;
+  return make_frame(h, data, cipher);
+}
+
 class RecordingSink : public protocol::FieldSink {
  public:
   std::vector<std::string> lines;

@@ -90,7 +90,7 @@ TEST(SdFormat, TimeoutChoice) {
   EXPECT_FALSE(SdFormat::create(-3, 0));
 }
 
-// reshoot_request itself (defaults from 0x000005, ranges): test/ros/unit/test_reshoot_request.cpp.
+// reshoot_request itself (defaults from 0x000005, ranges): test/unit/test_reshoot_request.cpp.
 TEST(PreciseReshoot, RequestFromTheArgsAndTheLatestVisibleStatus) {
   p::VisibleStatus visible;
   visible.zoom_x = 6.5;

@@ -17,11 +17,7 @@ using testing::kGetVersionAck;
 
 Bytes frame_with(uint16_t sequence, const Bytes& data,
                  CommandKey key = key_of(CommandSet::kCamera, 0x07)) {
-  FrameHeader h;
-  h.ack_request = AckRequest::kAfterExecution;
-  h.command = key;
-  h.sequence = sequence;
-  return testing::make_frame(h, data);
+  return testing::command_frame(key, sequence, data);
 }
 
 struct Collected {
@@ -46,6 +42,15 @@ Bytes concat(std::initializer_list<Bytes> parts) {
   Bytes out;
   for (const Bytes& p : parts) out.insert(out.end(), p.begin(), p.end());
   return out;
+}
+
+// Parses `stream` in one chunk, expects `expected` to be the only frame found in it, and returns
+// the parser's counters.
+ParserStats stats_after_the_only_frame(const Bytes& stream, const Bytes& expected) {
+  FrameParser parser;
+  const Collected c = parse(parser, stream);
+  EXPECT_EQ(c.frames, std::vector<Bytes>{expected});
+  return parser.stats();
 }
 
 TEST(PsdkParser, ParsesTheDocumentVectors) {
@@ -111,33 +116,23 @@ TEST(PsdkParser, BadFrameHidingAGoodOneLosesOnlyTheBadOne) {
   // corruption is in DATA here: the CRC32 fails) swallows the next frame; the parser must find it.
   Bytes bad = frame_with(1, Bytes(40, 0x33));
   bad[20] ^= 0x01;  // break the CRC32
-  FrameParser parser;
-  const Collected c = parse(parser, concat({bad, kGetVersion}));
-  ASSERT_EQ(c.frames.size(), 1u);
-  EXPECT_EQ(c.frames[0], kGetVersion);
-  EXPECT_EQ(parser.stats().frame_crc_errors, 1u);
+  EXPECT_EQ(stats_after_the_only_frame(concat({bad, kGetVersion}), kGetVersion).frame_crc_errors,
+            1u);
 }
 
 TEST(PsdkParser, FrameInsideTheDataOfABrokenFrameIsFound) {
   // The good frame is carried inside another frame's DATA, whose CRC32 is then broken.
   Bytes outer = frame_with(2, concat({Bytes{0x00, 0x01}, kGetVersionAck, Bytes{0x02}}));
   outer[outer.size() - 1] ^= 0xFF;
-  FrameParser parser;
-  const Collected c = parse(parser, outer);
-  ASSERT_EQ(c.frames.size(), 1u);
-  EXPECT_EQ(c.frames[0], kGetVersionAck);
-  EXPECT_EQ(parser.stats().frame_crc_errors, 1u);
+  EXPECT_EQ(stats_after_the_only_frame(outer, kGetVersionAck).frame_crc_errors, 1u);
 }
 
 TEST(PsdkParser, HeaderCrcErrorDoesNotWaitForTheClaimedLength) {
   // A false SOF claiming 272 bytes with a bad CRC16, right before a good frame: the good frame
   // comes out at once, without 272 bytes having to arrive first.
   const Bytes fake = {0xaa, 0x10, 0x01, 0x00, 0x00, 0x00, 0x01, 0x01, 0x00, 0x00, 0x12, 0x34};
-  FrameParser parser;
-  const Collected c = parse(parser, concat({fake, kGetVersion}));
-  ASSERT_EQ(c.frames.size(), 1u);
-  EXPECT_EQ(c.frames[0], kGetVersion);
-  EXPECT_EQ(parser.stats().header_crc_errors, 1u);
+  EXPECT_EQ(stats_after_the_only_frame(concat({fake, kGetVersion}), kGetVersion).header_crc_errors,
+            1u);
 }
 
 TEST(PsdkParser, RejectsLengthsOutOfRangeAndNonZeroVersion) {

@@ -7,6 +7,7 @@
 #include <future>
 #include <thread>
 
+#include "eventually.h"
 #include "k40t_driver/psdk/commands/all.h"
 #include "k40t_driver/psdk/parser.h"
 #include "k40t_driver/psdk/session.h"
@@ -19,26 +20,25 @@ namespace {
 using testing::FakeLink;
 
 using testing::Bytes;
+using testing::command_frame;
 using testing::kGetVersion;
 using testing::kGetVersionAck;
 
 const AesKey kKey = {0x71, 0xc6, 0x82, 0xc7, 0xe3, 0x73, 0x20, 0x53,
                      0xf0, 0x05, 0xc0, 0xdd, 0x78, 0xd0, 0x1e, 0x5e};
 
-// Polls until `condition` holds or a generous deadline passes (never a timing assertion).
-bool eventually(const std::function<bool()>& condition) {
-  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-  while (!condition()) {
-    if (std::chrono::steady_clock::now() > until) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  return true;
-}
+using k40t::test::eventually;
 
 struct Endpoint {
   FakeLink* link = nullptr;
   std::unique_ptr<Session> session;
 };
+
+SessionOptions with_ack_timeout(std::chrono::milliseconds timeout) {
+  SessionOptions options;
+  options.ack_timeout = timeout;
+  return options;
+}
 
 Endpoint make_endpoint(SessionOptions options = {}) {
   auto link = std::make_unique<FakeLink>();
@@ -62,17 +62,6 @@ struct LinkedPair {
   Endpoint adapter;
   Endpoint payload;
 };
-
-Bytes command_frame(CommandKey key, uint16_t sequence, const Bytes& data,
-                    AckRequest ack = AckRequest::kAfterExecution,
-                    const Aes128Ecb* cipher = nullptr) {
-  FrameHeader h;
-  h.command = key;
-  h.sequence = sequence;
-  h.ack_request = ack;
-  h.encryption = cipher ? Encryption::kAes : Encryption::kNone;
-  return testing::make_frame(h, data, cipher);
-}
 
 Bytes ack_frame(CommandKey key, uint16_t sequence, const Bytes& data) {
   FrameHeader h;
@@ -215,9 +204,7 @@ TEST(PsdkSession, EncryptedCommandWithoutKeyIsCountedAndDropped) {
 }
 
 TEST(PsdkSession, RequestsAreMatchedOnSequenceSetAndId) {
-  SessionOptions options;
-  options.ack_timeout = std::chrono::milliseconds(300);
-  Endpoint payload = make_endpoint(options);
+  Endpoint payload = make_endpoint(with_ack_timeout(std::chrono::milliseconds(300)));
   ASSERT_TRUE(payload.session->start());
 
   AckResult result;
@@ -386,9 +373,7 @@ TEST(PsdkSession, FailuresComeBackAsMessages) {
 }
 
 TEST(PsdkSession, StopCompletesOutstandingRequests) {
-  SessionOptions options;
-  options.ack_timeout = std::chrono::seconds(30);
-  Endpoint payload = make_endpoint(options);
+  Endpoint payload = make_endpoint(with_ack_timeout(std::chrono::seconds(30)));
   ASSERT_TRUE(payload.session->start());
   std::promise<AckResult> done;
   payload.session->request_async(GetPosition::key(), Data{},

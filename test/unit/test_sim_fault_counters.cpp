@@ -22,6 +22,14 @@ p::ParserStats parser_of(SimLink& link) {
   return link.client().stats().parser;
 }
 
+// A client that gives up on an ACK after 150 ms and retries `retries` times.
+session::SessionOptions impatient_client(int retries) {
+  session::SessionOptions client;
+  client.ack_timeout = 150ms;
+  client.retries = retries;
+  return client;
+}
+
 TEST(SimFaultCounters, CorruptionShowsAsChecksumErrorsAndDiscardedBytes) {
   SimLink link;
   FaultSettings faults;
@@ -56,10 +64,7 @@ TEST(SimFaultCounters, GarbageIsDiscardedByteForByteAndCostsNoFrame) {
 }
 
 TEST(SimFaultCounters, DroppedAcksShowAsRetriesThenATimeout) {
-  session::SessionOptions client;
-  client.ack_timeout = 150ms;
-  client.retries = 2;
-  SimLink link({}, client);
+  SimLink link({}, impatient_client(2));
   FaultSettings faults;
   faults.drop_ack_rate = 1.0;
   link.server().faults().set_settings(faults);
@@ -75,10 +80,7 @@ TEST(SimFaultCounters, DroppedAcksShowAsRetriesThenATimeout) {
 }
 
 TEST(SimFaultCounters, DelayedAcksShowAsRetriesAndLateAcks) {
-  session::SessionOptions client;
-  client.ack_timeout = 150ms;
-  client.retries = 3;
-  SimLink link({}, client);
+  SimLink link({}, impatient_client(3));
   FaultSettings faults;
   faults.delay_ack_ms = 250;
   link.server().faults().set_settings(faults);
@@ -185,7 +187,7 @@ TEST(SimFaultCounters, ControlSocketDrivesTheFaults) {
   EXPECT_NE(status.find("seq-jumps=1"), std::string::npos) << status;
   // The settings the rviz panel's test reads back (docs/simulator.md, control socket `status`).
   link.server().with_model([](PodModel& pod) {
-    pod.thermal().settings().palette = 13;
+    pod.thermal().settings().reported.palette = protocol::Palette::kIceFire;  // 13
     pod.camera().settings().image_mode = 7;
   });
   const std::string settings = control(link.server().control_port(), "status");

@@ -1,12 +1,17 @@
 // sim/ground_truth.h and the moving vehicle: the pod moves, the world's objects stay where they
-// are on the Earth, and the geotag log measures answers against the truth.
+// are on the Earth, the geotag log measures answers against the truth, and the flight data of the
+// host's last 0x000320 is kept for the control socket.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
 #include "geo_test_support.h"
+#include "k40t_driver/protocol/messages/flight_controller.h"
+#include "k40t_driver/sim/control_commands.h"
 #include "k40t_driver/sim/pod_model.h"
+#include "sim_control_target.h"
+#include "sim_pod_harness.h"
 
 namespace k40t::sim {
 namespace {
@@ -75,6 +80,34 @@ TEST(SimGroundTruth, GeotagLogMeasuresAnswersAgainstThePhotoTime) {
   EXPECT_NE(text.find("photo 7 error_m 3"), std::string::npos) << text;
   EXPECT_NE(text.find("moved_m 4"), std::string::npos) << text;
   EXPECT_EQ(text.find("photo 8"), std::string::npos) << text;
+}
+
+TEST(SimGroundTruth, TheFlightDataOfTheLastTargetRequestIsKept) {
+  testing::PodHarness harness;
+  EXPECT_EQ(harness.pod.ground_truth().received_flight_data().requests, 0u);
+  protocol::TargetGpsRequest request;
+  request.latitude_deg = 47.3769;
+  request.longitude_deg = 8.5417;
+  request.ground_speed_m_s = 12.34;
+  request.climb_rate_m_s = -1.5;
+  request.heading_deg = 271.5;
+  request.airspeed_m_s = 13.0;
+  request.throttle_percent = 40.0;
+  harness.send(request);  // no laser return at the start: a failure ACK, but received
+  request.ground_speed_m_s = 7.25;
+  harness.send(request);
+  const ReceivedFlightData& got = harness.pod.ground_truth().received_flight_data();
+  EXPECT_EQ(got.requests, 2u);
+  EXPECT_NEAR(got.ground_speed_m_s, 7.25, 1e-9);  // the last one's, through the wire's 0.01 m/s
+  EXPECT_NEAR(got.climb_rate_m_s, -1.5, 1e-9);
+  EXPECT_NEAR(got.heading_deg, 271.5, 1e-9);
+  EXPECT_NEAR(got.airspeed_m_s, 13.0, 1e-9);
+  EXPECT_NEAR(got.throttle_percent, 40.0, 1e-9);
+
+  testing::FakeTarget target;
+  target.pod.ground_truth().flight_data_received(got);
+  EXPECT_EQ(execute_control_command("flight-data", target),
+            "ok requests 1 ground_speed 7.25 climb -1.5 heading 271.5 airspeed 13 throttle 40");
 }
 
 }  // namespace

@@ -77,13 +77,13 @@ TEST(SimPod, ShutdownTakesTheCameraDownAndItBootsAgain) {
 
 TEST(SimPod, FactoryResetRestoresDefaultsAfterASecond) {
   PodModel pod;
-  pod.thermal().settings().palette = 7;
+  pod.thermal().settings().reported.palette = protocol::Palette::kSky;
   ASSERT_EQ(pod.set_sbus_range(1500, 300), Outcome::kOk);
   ASSERT_EQ(pod.factory_reset(), Outcome::kOk);
   run(pod, 0.5);
-  EXPECT_EQ(pod.thermal().settings().palette, 7);
+  EXPECT_EQ(pod.thermal().settings().reported.palette, protocol::Palette::kSky);
   run(pod, 0.6);
-  EXPECT_EQ(pod.thermal().settings().palette, 1);
+  EXPECT_EQ(pod.thermal().settings().reported.palette, protocol::Palette::kWhiteHot);
   EXPECT_EQ(pod.sbus().max_value, SbusSettings{}.max_value);
   EXPECT_FALSE(pod.camera_available());  // rebooting
 }

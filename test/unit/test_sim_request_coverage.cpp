@@ -1,15 +1,14 @@
 // Every request of the catalogue has a handler in the simulated pod, and every handler
 // checks the payload length first. The requests are the catalogue's host-to-pod requests (the
-// catalogue itself is checked against the document's message list by
+// catalogue itself is checked against the docs/protocol/ message tables by
 // test_catalogue_completeness.cpp).
 #include <gtest/gtest.h>
 
-#include <iterator>
 #include <random>
 #include <set>
 #include <vector>
 
-#include "document_messages.h"
+#include "docs_message_tables.h"
 #include "k40t_driver/protocol/catalogue.h"
 #include "sim_pod_harness.h"
 
@@ -31,9 +30,10 @@ std::vector<p::MessageId> host_requests() {
 
 TEST(SimRequestCoverage, EveryNotesRequestHasAHandler) {
   const auto requests = host_requests();
-  // Exactly the document's requests to the pod: all of them but the pod's own GPS request.
-  std::set<p::MessageId> expected(std::begin(p::document::kRequests),
-                                  std::end(p::document::kRequests));
+  // Exactly the docs tables' requests to the pod: all of them but the pod's own GPS request.
+  const std::vector<p::MessageId> documented =
+      k40t::testing::docs_request_ids(k40t::testing::load_docs_messages());
+  std::set<p::MessageId> expected(documented.begin(), documented.end());
   expected.erase(0x000310);
   EXPECT_EQ(std::set<p::MessageId>(requests.begin(), requests.end()), expected);
   for (p::MessageId id : requests) EXPECT_NE(find_request_handler(id), nullptr) << std::hex << id;

@@ -21,14 +21,23 @@ Aim aim_at(const Vec3& point) {
 constexpr int kCentreX = 800;  // middle of x 320..1279
 constexpr int kCentreY = 528;  // middle of y 32..1023
 
+// The scene's statistics with the thermal camera aimed straight at `point`.
+ThermalStats measured_at(const World& world, const ThermalModel& thermal, const Vec3& point) {
+  const Aim aim = aim_at(point);
+  return thermal.measure(world, aim.yaw_deg, aim.pitch_deg);
+}
+
+void expect_at_the_centre(const PixelPoint& at) {
+  EXPECT_NEAR(at.x, kCentreX, 3);
+  EXPECT_NEAR(at.y, kCentreY, 3);
+}
+
 TEST(SimThermal, MaximumSitsOnTheHotObjectWhenAimedAtIt) {
   const World world;
   const ThermalModel thermal;
-  const Aim aim = aim_at(world.hot_object_centre());
-  const ThermalStats stats = thermal.measure(world, aim.yaw_deg, aim.pitch_deg);
+  const ThermalStats stats = measured_at(world, thermal, world.hot_object_centre());
   EXPECT_NEAR(stats.max_degC, world.config().hot.temperature_degC, 0.5);
-  EXPECT_NEAR(stats.max_at.x, kCentreX, 3);
-  EXPECT_NEAR(stats.max_at.y, kCentreY, 3);
+  expect_at_the_centre(stats.max_at);
   EXPECT_NEAR(stats.centre_degC, stats.max_degC, 0.5);
   EXPECT_GT(stats.max_degC, stats.average_degC);
   EXPECT_GE(stats.average_degC, stats.min_degC);
@@ -74,11 +83,9 @@ TEST(SimThermal, DigitalZoomMagnifiesTheOffsetFromCentre) {
 TEST(SimThermal, MinimumSitsOnTheColdObject) {
   const World world;
   const ThermalModel thermal;
-  const Aim aim = aim_at(world.cold_object_centre());
-  const ThermalStats stats = thermal.measure(world, aim.yaw_deg, aim.pitch_deg);
+  const ThermalStats stats = measured_at(world, thermal, world.cold_object_centre());
   EXPECT_NEAR(stats.min_degC, world.config().cold.temperature_degC, 0.5);
-  EXPECT_NEAR(stats.min_at.x, kCentreX, 3);
-  EXPECT_NEAR(stats.min_at.y, kCentreY, 3);
+  expect_at_the_centre(stats.min_at);
 }
 
 TEST(SimThermal, SkyIsColdestAboveTheHorizon) {
@@ -98,7 +105,7 @@ TEST(SimThermal, SpotReadsThePixelItIsSetOn) {
   const ThermalStats spot = thermal.measure(world, aim.yaw_deg + 5, aim.pitch_deg);
   EXPECT_NEAR(spot.spot_degC, overview.max_degC, 1.0);
   EXPECT_EQ(spot.spot_at.x, overview.max_at.x);
-  EXPECT_EQ(thermal.settings().measurement_type, MeasurementType::kPoint);
+  EXPECT_EQ(thermal.settings().reported.measurement_type, MeasurementType::kPoint);
   EXPECT_EQ(thermal.set_spot(100, 500), Outcome::kFailure);  // on the black border
 }
 
@@ -157,9 +164,9 @@ TEST(SimThermal, HighGainSaturatesWhereLowGainMeasures) {
   const Aim aim = aim_at(world.hot_object_centre());
   EXPECT_DOUBLE_EQ(thermal.measure(world, aim.yaw_deg, aim.pitch_deg).max_degC,
                    gain_range(GainMode::kHigh).max_degC);
-  thermal.settings().gain = GainMode::kLow;
+  thermal.settings().reported.gain_mode = GainMode::kLow;
   EXPECT_NEAR(thermal.measure(world, aim.yaw_deg, aim.pitch_deg).max_degC, 300, 1);
-  thermal.settings().gain = GainMode::kAuto;
+  thermal.settings().reported.gain_mode = GainMode::kAuto;
   EXPECT_NEAR(thermal.measure(world, aim.yaw_deg, aim.pitch_deg).max_degC, 300, 1);
 }
 

@@ -5,9 +5,10 @@
 
 #include <set>
 #include <string>
+#include <type_traits>
 #include <vector>
 
-#include "document_messages.h"
+#include "docs_message_tables.h"
 #include "golden_checks.h"
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/messages/thermal.h"
@@ -58,30 +59,20 @@ TEST(ThermalVisibleGoldenFile, CoversEveryMessageIdOfBothFamilies) {
     EXPECT_EQ(covered.count(info.id), 1u) << info.name << " has no golden frame";
   }
   EXPECT_GE(plain_acks, 1u);
-  // The document's reports and requests of both families, with the requests' ACKs.
+  // The docs tables' reports, requests and data ACKs of both families, with the requests' ACKs.
   std::set<MessageId> document_ids;
-  for (MessageId id : document::kReports) {
-    if (in_families(id)) document_ids.insert(id);
+  const testing::DocsMessages docs = testing::load_docs_messages();
+  for (const testing::DocsMessage& m : docs.rows) {
+    if (in_families(m.id)) document_ids.insert(m.id);
   }
-  for (MessageId id : document::kRequests) {
-    if (in_families(id)) document_ids.insert({id, ack_id_of(id)});
+  for (MessageId id : testing::docs_request_ids(docs)) {
+    if (in_families(id)) document_ids.insert(ack_id_of(id));
   }
   EXPECT_EQ(family_ids, document_ids);
 }
 
-template <class... T>
-struct TypeList {};
-using FamilyTypes =
-    TypeList<ThermalStatus, ThermalReadSettingsRequest, ThermalSettingsAck, ThermalZoomRequest,
-             ThermalPaletteRequest, ThermalMeasurementRequest, ThermalSharpnessRequest,
-             ThermalBrightnessRequest, ThermalContrastRequest, ThermalDenoiseRequest,
-             ThermalEnhancementRequest, ThermalSpotRequest, ThermalAreaRequest,
-             ThermalGainModeRequest, ThermalAlarmsRequest, ThermalOverlayRequest,
-             ThermalThresholdAlarmRequest, VisibleStatus, VisibleReadSettingsRequest,
-             VisibleSettingsAck, VisibleVideoResolutionRequest, VisiblePhotoResolutionRequest,
-             VisibleIsoRequest, VisibleShutterRequest, VisibleEvRequest, VisibleWhiteBalanceRequest,
-             VisibleAntiFlickerRequest, VisibleStrongLightRequest, VisibleBacklightRequest,
-             VisibleAeLockRequest, VisibleMeteringRequest>;
+// The structs of both families, from the lists their headers end with.
+using FamilyTypes = JoinedMessages<ThermalMessages, VisibleMessages>;
 
 template <class T>
 void round_trip_golden_and_check_entry() {
@@ -94,13 +85,10 @@ void round_trip_golden_and_check_entry() {
   EXPECT_EQ(find_message(T::kName), info) << T::kName;
 }
 
-template <class... T>
-void for_each_type(TypeList<T...>) {
-  (round_trip_golden_and_check_entry<T>(), ...);
-}
-
 TEST(ThermalVisibleStructs, EveryStructRoundTripsAndIsInTheCatalogue) {
-  for_each_type(FamilyTypes{});
+  for_each_message(FamilyTypes{}, [](auto* type) {
+    round_trip_golden_and_check_entry<std::remove_pointer_t<decltype(type)>>();
+  });
 }
 
 template <class T>
@@ -117,17 +105,11 @@ void expect_ack_of_request() {
   }
 }
 
-template <class... T>
-void for_each_request(TypeList<T...>) {
-  (
-      [] {
-        if constexpr (T::kDirection == Direction::kHostToPod) expect_ack_of_request<T>();
-      }(),
-      ...);
-}
-
 TEST(ThermalVisibleStructs, EveryRequestHasItsAckInTheCatalogue) {
-  for_each_request(FamilyTypes{});
+  for_each_message(FamilyTypes{}, [](auto* type) {
+    using T = std::remove_pointer_t<decltype(type)>;
+    if constexpr (T::kDirection == Direction::kHostToPod) expect_ack_of_request<T>();
+  });
 }
 
 TEST(ThermalVisibleStructs, ValuesBetweenWireStepsRoundToTheNearestStep) {

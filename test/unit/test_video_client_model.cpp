@@ -130,6 +130,20 @@ TEST(Intrinsics, APanelPlacedInAFrame) {
   EXPECT_EQ(out.width, 1920);
 }
 
+TEST(Intrinsics, TheThermalImageInTheSplitScreensRightPanel) {
+  // 640x512 scaled to the 960 px wide right half of 1920x1080: 960x768 at (960, 156).
+  const Intrinsics thermal = ideal_pinhole(1000, 640, 512);
+  const SplitLayout layout = split_layout({1920, 1080});
+  ASSERT_EQ(layout.thermal, cv::Rect(960, 156, 960, 768));
+  const Intrinsics out = in_panel(thermal, layout.thermal, {1920, 1080});
+  EXPECT_NEAR(out.K[0], 1500, 1e-9);  // x 1.5
+  EXPECT_NEAR(out.K[4], 1500, 1e-9);
+  EXPECT_NEAR(out.K[2], 960 + 479.5, 1e-9);  // the panel's centre, pixel centres at integers
+  EXPECT_NEAR(out.K[5], 156 + 383.5, 1e-9);
+  EXPECT_EQ(out.width, 1920);
+  EXPECT_EQ(out.height, 1080);
+}
+
 TEST(StreamView, ThermalBySizeVisibleOrSplitByMode) {
   const cv::Size thermal(640, 512);
   const cv::Size hd(1920, 1080);

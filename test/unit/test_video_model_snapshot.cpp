@@ -11,7 +11,7 @@ TEST(ModelSnapshot, FollowsTheModelsSettings) {
   PodModel model;
   model.camera().settings().image_mode = 0;
   model.camera().settings().stream_resolution = 1;
-  model.thermal().settings().palette = 7;
+  model.thermal().settings().reported.palette = protocol::Palette::kSky;  // 7
   ASSERT_EQ(model.thermal().set_digital_zoom(3), Outcome::kOk);
   ASSERT_EQ(model.zoom().set_zoom(4), Outcome::kOk);
   ASSERT_EQ(model.gimbal().command_angles(-20, 35), Outcome::kOk);

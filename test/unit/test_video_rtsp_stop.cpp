@@ -23,9 +23,7 @@
 namespace k40t::video {
 namespace {
 
-using sim::video::RtspServerOptions;
-using sim::video::RtspStreamServer;
-using sim::video::VideoSnapshot;
+using namespace sim::video;  // RtspStreamServer, RtspServerOptions, VideoSnapshot
 using std::chrono::seconds;
 using testing::wait_until;
 

@@ -22,23 +22,12 @@
 #include <thread>
 #include <vector>
 
+#include "eventually.h"
 #include "k40t_driver/transport/transport.h"
 
 namespace k40t::transport::testing {
 
-// Far above anything the loopback tests need; only reached when something is broken.
-constexpr std::chrono::seconds kDeadline{15};
-
-// Polls `condition` until it holds or the deadline passes; returns whether it held.
-inline bool eventually(const std::function<bool()>& condition,
-                       std::chrono::steady_clock::duration deadline = kDeadline) {
-  const auto until = std::chrono::steady_clock::now() + deadline;
-  while (!condition()) {
-    if (std::chrono::steady_clock::now() > until) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  return true;
-}
+using k40t::test::eventually;
 
 // Accumulates received bytes.
 class ByteSink {

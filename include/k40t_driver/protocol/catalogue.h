@@ -11,6 +11,7 @@
 #include "k40t_driver/protocol/field_assign.h"
 #include "k40t_driver/protocol/field_visit.h"
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_list.h"
 
 namespace k40t::protocol {
 
@@ -68,12 +69,10 @@ bool is_known_id(MessageId id);
 // "laser_range (0x000400)", or "unknown message 0x123456": for error messages and logs.
 std::string display_name(MessageId id);
 
-// Each message family adds its own entries (src/protocol/messages/<family>.cpp).
-void add_gimbal_messages(std::vector<MessageInfo>& out);
-void add_thermal_messages(std::vector<MessageInfo>& out);
-void add_visible_messages(std::vector<MessageInfo>& out);
-void add_camera_messages(std::vector<MessageInfo>& out);
-void add_laser_messages(std::vector<MessageInfo>& out);
-void add_sbus_messages(std::vector<MessageInfo>& out);
+// The entries of a list of message structs (message_list.h), in list order.
+template <class... T>
+std::vector<MessageInfo> infos_of(MessageList<T...>) {
+  return {info_of<T>()...};
+}
 
 }  // namespace k40t::protocol

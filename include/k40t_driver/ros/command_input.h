@@ -30,7 +30,7 @@
 #include <sensor_msgs/NavSatFix.h>
 #include <sensor_msgs/TimeReference.h>
 
-#include "k40t_driver/ros/pod_driver.h"
+#include "k40t_driver/driver/pod_driver.h"
 
 namespace k40t::driver {
 

@@ -29,6 +29,7 @@
 #include "k40t_driver/RecordStatus.h"
 #include "k40t_driver/ThermalStats.h"
 #include "k40t_driver/VisibleStatus.h"
+#include "k40t_driver/driver/vehicle_state.h"
 #include "k40t_driver/protocol/frame.h"
 #include "k40t_driver/protocol/messages/camera_reports.h"
 #include "k40t_driver/protocol/messages/camera_status.h"
@@ -36,7 +37,6 @@
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/protocol/messages/thermal.h"
 #include "k40t_driver/protocol/messages/visible.h"
-#include "k40t_driver/ros/vehicle_state.h"
 
 namespace k40t::driver {
 

@@ -17,11 +17,11 @@
 
 #include <tf2_msgs/TFMessage.h>
 
+#include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/protocol/messages/laser.h"
 #include "k40t_driver/ros/conversions.h"
 #include "k40t_driver/ros/geo_glue.h"
 #include "k40t_driver/ros/job_status_conversions.h"
-#include "k40t_driver/ros/pod_driver.h"
 #include "k40t_driver/ros/ros_params.h"
 
 namespace k40t::driver {

@@ -12,8 +12,8 @@
 #include "k40t_driver/LaserTarget.h"
 #include "k40t_driver/protocol/messages/flight_controller.h"
 
+#include "k40t_driver/driver/vehicle_state.h"
 #include "k40t_driver/geo/ray_locator.h"
-#include "k40t_driver/ros/vehicle_state.h"
 
 namespace k40t::driver {
 

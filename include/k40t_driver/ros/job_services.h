@@ -11,9 +11,9 @@
 #include <ros/node_handle.h>
 #include <ros/service_server.h>
 
+#include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/operations/camera_operations.h"
 #include "k40t_driver/protocol/messages/visible.h"
-#include "k40t_driver/ros/pod_driver.h"
 
 namespace k40t::driver {
 

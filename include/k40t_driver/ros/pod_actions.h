@@ -21,10 +21,10 @@
 #include "k40t_driver/PreciseReshootAction.h"
 #include "k40t_driver/TfUpgradeAction.h"
 #include "k40t_driver/ZoomToAction.h"
+#include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/operations/camera_operations.h"
 #include "k40t_driver/operations/gimbal_operations.h"
 #include "k40t_driver/ros/operation_server.h"
-#include "k40t_driver/ros/pod_driver.h"
 
 namespace k40t::driver {
 

@@ -1,17 +1,8 @@
 // /diagnostics for the pod (diagnostic_updater), updated every ~diagnostic_period on a steady
-// timer:
-//   link               ERROR while the link is down or no frame came for silence_timeout (so a
-//                      silent or unplugged pod is ERROR within silence_timeout + one period);
-//                      every counter (bytes, frames, checksum and length errors, discarded
-//                      bytes, unknown ids, sequence gaps, decode errors, requests, NACKs, ACK
-//                      timeouts, retries, reconnects)
-//   <name> report      FrequencyStatus of each periodic report at the document's rate
-//   self-test          per sensor, from 0x000001; gimbal/camera link and upgrade state
-//   stabilisation      from 0x000001
-//   SD card            from 0x000003
-//   temperature alarms from 0x000004
-//   settings           dynamic_reconfigure read-back and refused changes
-// The hardware id is built from the versions read on connect.
+// timer. The checks' levels and texts are the ROS-free driver/pod_health.h (link, self-test,
+// stabilisation, SD card, temperature alarms, settings); this adds the FrequencyStatus of each
+// periodic report at the document's rate and the hardware id built from the versions read on
+// connect.
 #pragma once
 
 #include <memory>
@@ -24,11 +15,12 @@
 #include <ros/node_handle.h>
 #include <ros/steady_timer.h>
 
+#include "k40t_driver/driver/pod_driver.h"
+#include "k40t_driver/driver/pod_health.h"
+#include "k40t_driver/driver/pod_queries.h"
 #include "k40t_driver/protocol/messages/camera_reports.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/protocol/messages/thermal.h"
-#include "k40t_driver/ros/pod_driver.h"
-#include "k40t_driver/ros/pod_queries.h"
 #include "k40t_driver/ros/ros_params.h"
 #include "k40t_driver/ros/settings_sync.h"
 
@@ -56,12 +48,12 @@ class PodDiagnostics {
   template <class Msg>
   void add_rate_check(PodDriver& driver, const std::string& name, double rate_hz);
 
-  void link(diagnostic_updater::DiagnosticStatusWrapper& stat);
-  void self_test(diagnostic_updater::DiagnosticStatusWrapper& stat);
-  void stabilisation(diagnostic_updater::DiagnosticStatusWrapper& stat);
-  void sd_card(diagnostic_updater::DiagnosticStatusWrapper& stat);
-  void alarms(diagnostic_updater::DiagnosticStatusWrapper& stat);
-  void settings(diagnostic_updater::DiagnosticStatusWrapper& stat);
+  // Adds the task `name` whose status is what `check` computes at each update.
+  void add_check(const std::string& name, std::function<HealthCheck()> check);
+  // The same for a check of the latest report kept in `latest` (under mutex_).
+  template <class Msg>
+  void add_report_check(const std::string& name, const std::optional<Msg>& latest,
+                        HealthCheck (*check)(const std::optional<Msg>&));
   void update();
 
   PodDriver& driver_;

@@ -7,7 +7,7 @@
 #include <ros/subscriber.h>
 
 #include "k40t_driver/Frame.h"
-#include "k40t_driver/ros/pod_driver.h"
+#include "k40t_driver/driver/pod_driver.h"
 
 namespace k40t::driver {
 

@@ -5,9 +5,9 @@
 
 #include <ros/node_handle.h>
 
+#include "k40t_driver/driver/driver_options.h"
 #include "k40t_driver/protocol/result.h"
 #include "k40t_driver/ros/conversions.h"
-#include "k40t_driver/ros/driver_options.h"
 #include "k40t_driver/ros/param_reader.h"
 
 namespace k40t::driver {

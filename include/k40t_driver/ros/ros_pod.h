@@ -11,12 +11,12 @@
 
 #include <ros/node_handle.h>
 
+#include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/protocol/result.h"
 #include "k40t_driver/ros/command_input.h"
 #include "k40t_driver/ros/job_services.h"
 #include "k40t_driver/ros/pod_actions.h"
 #include "k40t_driver/ros/pod_diagnostics.h"
-#include "k40t_driver/ros/pod_driver.h"
 #include "k40t_driver/ros/pod_services.h"
 #include "k40t_driver/ros/replay_input.h"
 #include "k40t_driver/ros/ros_params.h"

@@ -24,22 +24,14 @@
 #include <ros/node_handle.h>
 #include <boost/thread/recursive_mutex.hpp>
 
+#include "k40t_driver/driver/pod_driver.h"
+#include "k40t_driver/driver/pod_queries.h"
+#include "k40t_driver/driver/settings_state.h"
 #include "k40t_driver/protocol/messages/camera_reports.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
-#include "k40t_driver/ros/pod_driver.h"
-#include "k40t_driver/ros/pod_queries.h"
 #include "k40t_driver/ros/setting_binding.h"
 
 namespace k40t::driver {
-
-struct SettingsState {
-  bool read_ok = false;      // the last read-back got both settings ACKs
-  std::string read_message;  // what the last read-back got, or why it failed
-  uint64_t reads = 0;
-  uint64_t changes_applied = 0;
-  uint64_t changes_refused = 0;
-  std::string last_refusal;  // "palette: <why>"; empty when the last change succeeded
-};
 
 class SettingsSync {
  public:

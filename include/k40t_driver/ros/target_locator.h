@@ -4,7 +4,10 @@
 //                       vehicle frame by TF (~vehicle_frame, default the pod's base link) and to
 //                       the Earth by the fix and attitude at the range's stamp; ENU covariance
 //                       from the fix, ~attitude_sigma, ~pointing_sigma and ~range_sigma
-//   locate_pixel        k40t_driver/LocatePixel  a pixel of the current image to a position
+//   locate_pixel        k40t_driver/LocatePixel  a pixel of the current image to a position: the
+//                       camera_info of the pixel's view (camera_views.h: in split screen, the
+//                       panel's), undistorted by OpenCV (camera/pixel_ray.h), TF, then the laser
+//                       range or a horizontal plane
 //   located_point       geometry_msgs/PointStamped  the last located pixel, in its camera frame
 //   located_fix         sensor_msgs/NavSatFix       the same on the Earth
 // and a diagnostic "geolocation": the distance between laser/target_local and the pod's own
@@ -25,9 +28,10 @@
 #include <tf2_ros/transform_listener.h>
 
 #include "k40t_driver/LocatePixel.h"
+#include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/geo/ray_locator.h"
+#include "k40t_driver/ros/camera_views.h"
 #include "k40t_driver/ros/pod_diagnostics.h"
-#include "k40t_driver/ros/pod_driver.h"
 #include "k40t_driver/ros/ros_params.h"
 
 namespace k40t::driver {
@@ -53,11 +57,10 @@ class TargetLocator {
   tf2_ros::Buffer tf_;
   tf2_ros::TransformListener listener_;
   ros::Publisher target_local_, located_point_, located_fix_;
-  ros::Subscriber camera_info_;
+  CameraViews camera_views_;
   ros::ServiceServer locate_pixel_;
 
   std::mutex mutex_;  // everything below
-  std::optional<sensor_msgs::CameraInfo> camera_info_msg_;
   std::optional<std::pair<double, StampNs>> last_range_;
   std::optional<std::pair<geo::Geodetic, StampNs>> last_local_, last_pod_;
   std::optional<double> disagreement_m_;

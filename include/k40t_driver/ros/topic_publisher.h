@@ -13,7 +13,7 @@
 #include <ros/publisher.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 
-#include "k40t_driver/ros/pod_driver.h"
+#include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/ros/ros_params.h"
 
 namespace k40t::driver {

@@ -3,7 +3,9 @@
 // height above it), and so the true geodetic position of the pod, of the world's objects and of
 // the laser spot at any model time. Also the geotag log: for each photo, the pod's true position
 // when it was taken and when the host's GPS answer (0x010310) arrived, and that answer, so the
-// geotag error is measured against the truth.
+// geotag error is measured against the truth. And the flight data the host last sent in the
+// laser-target request 0x000320 (ground speed, climb rate...), so a test can compare it with what
+// it fed the driver.
 //
 // The world frame of world.h is the pod's (x north, y east, z up, pod at the origin); the truth
 // frame here is the local ENU frame of the take-off point on the ground (geo/geodesy.h), in the
@@ -41,6 +43,16 @@ struct GeotagRecord {
   std::optional<TruePoint> answer;  // what the host answered
 };
 
+// The flight data of the last 0x000320 the pod received, and how many it received.
+struct ReceivedFlightData {
+  uint64_t requests = 0;
+  double ground_speed_m_s = 0;
+  double climb_rate_m_s = 0;
+  double heading_deg = 0;
+  double airspeed_m_s = 0;
+  double throttle_percent = 0;
+};
+
 class GroundTruth {
  public:
   explicit GroundTruth(const VehicleConfig& config = {});
@@ -63,10 +75,14 @@ class GroundTruth {
   // the latest state would at best have been off by).
   std::string describe_geotags() const;
 
+  void flight_data_received(ReceivedFlightData data);
+  const ReceivedFlightData& received_flight_data() const { return received_; }
+
  private:
   VehicleConfig config_;
   std::optional<geo::LocalFrame> frame_;  // none without the geoid
   std::vector<GeotagRecord> geotags_;
+  ReceivedFlightData received_;
 };
 
 }  // namespace k40t::sim

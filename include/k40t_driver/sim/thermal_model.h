@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "k40t_driver/protocol/messages/thermal.h"
 #include "k40t_driver/sim/outcome.h"
 #include "k40t_driver/sim/world.h"
 
@@ -35,8 +36,9 @@ struct ThermalFrame {
   }
 };
 
-enum class MeasurementType : uint8_t { kPoint = 0, kArea = 1 };
-enum class GainMode : uint8_t { kHigh = 0, kLow = 1, kAuto = 2 };
+// The sim speaks the protocol's codes: the measurement type and gain mode are those of 0x010100.
+using MeasurementType = protocol::ThermalMeasurementType;
+using GainMode = protocol::ThermalGainMode;
 
 struct MeasurementArea {
   int width = 0;
@@ -45,30 +47,17 @@ struct MeasurementArea {
   int centre_y = 528;
 };
 
-// Stored as the pod returns them; codes the model does not interpret (palette, sharpness...) are
-// kept as the document's numbers.
+// The settings the pod reports in the read-all ACK 0x010100 are kept as that ACK itself (the
+// protocol's struct, with the simulated pod's factory defaults), so a reported setting needs no
+// field of its own here: its request handler writes the ACK field and the read-all returns it.
+protocol::ThermalSettingsAck factory_thermal_settings();
+
 struct ThermalSettings {
-  uint8_t palette = 1;  // 1..20, white hot
-  bool measurement_on = true;
-  MeasurementType measurement_type = MeasurementType::kArea;
-  bool radiometric = true;   // "temperature measurement version" core
-  uint8_t digital_zoom = 1;  // 1..8
-  uint8_t sharpness = 50;
-  GainMode gain = GainMode::kHigh;
-  uint8_t brightness = 50;
-  uint8_t contrast = 50;
-  bool denoise_on = true;
-  uint8_t denoise_level = 50;
-  uint8_t enhancement = 0;  // 0 off, 1..10
-  bool overlay = false;
-  std::optional<double> high_alarm_degC;  // none = off (-2732 on the wire)
-  std::optional<double> low_alarm_degC;
-  std::optional<double> difference_alarm_degC;
-  bool threshold_alarm_on = false;
-  double threshold_reference_degC = 0;  // -30..50
-  double threshold_float_degC = 10;     // 0..80
-  PixelPoint spot{800, 528};            // the frame's centre
-  MeasurementArea area;                 // width/height 0 = whole image
+  protocol::ThermalSettingsAck reported = factory_thermal_settings();
+  // Set by requests but absent from 0x010100:
+  bool overlay = false;       // 0x000125
+  PixelPoint spot{800, 528};  // 0x00010F, the frame's centre
+  MeasurementArea area;       // 0x000110, width/height 0 = whole image
 };
 
 struct ThermalStats {

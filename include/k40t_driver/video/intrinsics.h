@@ -5,6 +5,8 @@
 
 #include <array>
 
+#include <opencv2/core/types.hpp>
+
 namespace k40t::video {
 
 struct Intrinsics {
@@ -28,5 +30,8 @@ Intrinsics resized(const Intrinsics& in, int width, int height);
 // `frame_width` x `frame_height` (a split-screen panel).
 Intrinsics placed(const Intrinsics& in, double scale, double x, double y, int frame_width,
                   int frame_height);
+// `in` (the whole picture of one lens) scaled to the width of `panel` and placed there, inside
+// a frame of `frame` size (split screen).
+Intrinsics in_panel(const Intrinsics& in, const cv::Rect& panel, const cv::Size& frame);
 
 }  // namespace k40t::video

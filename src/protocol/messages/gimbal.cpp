@@ -3,8 +3,6 @@
 #include <cmath>
 #include <string>
 
-#include "k40t_driver/protocol/catalogue.h"
-
 namespace k40t::protocol {
 
 namespace {
@@ -318,25 +316,6 @@ Status GimbalPointAtRequest::decode(ByteReader& r, const CodecOptions&) {
   x_px = r.u16();
   y_px = r.u16();
   return Status::ok();
-}
-
-// ---- catalogue ------------------------------------------------------------------------------
-void add_gimbal_messages(std::vector<MessageInfo>& out) {
-  out.push_back(info_of<GimbalStatus>());
-  out.push_back(info_of<GimbalAttitude>());
-  out.push_back(info_of<GimbalControlRequest>());
-  out.push_back(info_of<GimbalAngleRequest>());
-  out.push_back(info_of<GimbalDriftCalibrationRequest>());
-  out.push_back(info_of<GimbalDialSpeedRequest>());
-  out.push_back(info_of<GimbalVersionRequest>());
-  out.push_back(info_of<GimbalVersionAck>());
-  out.push_back(info_of<GimbalPointAtRequest>());
-  out.push_back(info_of<GimbalServoOffRequest>());
-  out.push_back(info_of<GimbalLinearCalibrationRequest>());
-  out.push_back(info_of<GimbalRestartRequest>());
-  out.push_back(info_of<GimbalUseFlightControllerAttitudeRequest>());
-  out.push_back(info_of<GimbalAccelerationCalibrationRequest>());
-  out.push_back(info_of<GimbalStabilisationRequest>());
 }
 
 }  // namespace k40t::protocol

@@ -2,7 +2,6 @@
 
 #include <string>
 
-#include "k40t_driver/protocol/catalogue.h"
 #include "setting_bytes.h"
 
 namespace k40t::protocol {
@@ -333,26 +332,6 @@ Status ThermalThresholdAlarmRequest::decode(ByteReader& r, const CodecOptions&) 
   const Status on = read_switch(r, "threshold_alarm_on", 1, 0, &threshold_alarm_on);
   read_threshold_values(r, this, ByteOrder::kLittle);
   return on;
-}
-
-void add_thermal_messages(std::vector<MessageInfo>& out) {
-  out.push_back(info_of<ThermalStatus>());
-  out.push_back(info_of<ThermalReadSettingsRequest>());
-  out.push_back(info_of<ThermalSettingsAck>());
-  out.push_back(info_of<ThermalZoomRequest>());
-  out.push_back(info_of<ThermalPaletteRequest>());
-  out.push_back(info_of<ThermalMeasurementRequest>());
-  out.push_back(info_of<ThermalSharpnessRequest>());
-  out.push_back(info_of<ThermalBrightnessRequest>());
-  out.push_back(info_of<ThermalContrastRequest>());
-  out.push_back(info_of<ThermalDenoiseRequest>());
-  out.push_back(info_of<ThermalEnhancementRequest>());
-  out.push_back(info_of<ThermalSpotRequest>());
-  out.push_back(info_of<ThermalAreaRequest>());
-  out.push_back(info_of<ThermalGainModeRequest>());
-  out.push_back(info_of<ThermalAlarmsRequest>());
-  out.push_back(info_of<ThermalOverlayRequest>());
-  out.push_back(info_of<ThermalThresholdAlarmRequest>());
 }
 
 }  // namespace k40t::protocol

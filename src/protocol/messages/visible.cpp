@@ -1,6 +1,5 @@
 #include "k40t_driver/protocol/messages/visible.h"
 
-#include "k40t_driver/protocol/catalogue.h"
 #include "setting_bytes.h"
 
 namespace k40t::protocol {
@@ -289,23 +288,6 @@ Status VisiblePhotoResolutionRequest::validate() const {
         "allowed: 20 (8000x6000), 21 (4000x3000)");
   }
   return check_enum("photo_resolution", photo_resolution);
-}
-
-void add_visible_messages(std::vector<MessageInfo>& out) {
-  out.push_back(info_of<VisibleStatus>());
-  out.push_back(info_of<VisibleReadSettingsRequest>());
-  out.push_back(info_of<VisibleSettingsAck>());
-  out.push_back(info_of<VisibleVideoResolutionRequest>());
-  out.push_back(info_of<VisiblePhotoResolutionRequest>());
-  out.push_back(info_of<VisibleIsoRequest>());
-  out.push_back(info_of<VisibleShutterRequest>());
-  out.push_back(info_of<VisibleEvRequest>());
-  out.push_back(info_of<VisibleWhiteBalanceRequest>());
-  out.push_back(info_of<VisibleAntiFlickerRequest>());
-  out.push_back(info_of<VisibleStrongLightRequest>());
-  out.push_back(info_of<VisibleBacklightRequest>());
-  out.push_back(info_of<VisibleAeLockRequest>());
-  out.push_back(info_of<VisibleMeteringRequest>());
 }
 
 }  // namespace k40t::protocol

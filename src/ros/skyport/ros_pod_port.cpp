@@ -1,7 +1,5 @@
 #include "k40t_driver/ros/skyport/ros_pod_port.h"
 
-#include <algorithm>
-
 #include <dynamic_reconfigure/Reconfigure.h>
 #include <geometry_msgs/Twist.h>
 #include <ros/service.h>
@@ -22,13 +20,11 @@
 
 namespace k40t::driver::skyport {
 
-namespace {
-// record/status comes at 1 Hz while recording, and at start and stop. Silent for longer than this
-// after it said "recording" (or after a start it accepted), the pod's recording is unknown.
-constexpr double kRecordStatusFresh_s = 2.5;
+static_assert(k40t_driver::CameraStatus::SD_FULL == kSdFull, "pod_state_tracker.h's kSdFull");
 
-bool ends_with(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+namespace {
+double ros_now_s() {
+  return ros::Time::now().toSec();
 }
 }  // namespace
 
@@ -37,7 +33,7 @@ RosPodPort::RosPodPort(ros::NodeHandle nh, std::string reconfigure, double servi
     : nh_(nh),
       reconfigure_(std::move(reconfigure)),
       timeout_(service_timeout_s),
-      events_(std::move(events)) {
+      tracker_(std::move(events)) {
   cmd_rate_ = nh_.advertise<geometry_msgs::Twist>("gimbal/cmd_rate", 1);
   joints_ = nh_.subscribe("joint_states", 1, &RosPodPort::on_joints, this);
   attitude_ = nh_.subscribe("gimbal/attitude", 1, &RosPodPort::on_attitude, this);
@@ -120,15 +116,7 @@ PodCall RosPodPort::record(bool start) {
   srv.request.start = start;
   srv.request.lens = k40t_driver::Record::Request::LENS_DEFAULT;
   PodCall result = call("record", srv);
-  if (result.ok) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (start) {
-      record_commanded_at_ = ros::Time::now();
-    } else {
-      record_commanded_at_ = ros::Time();
-      state_.recording = false;
-    }
-  }
+  if (result.ok) tracker_.record_accepted(start, ros_now_s());
   return result;
 }
 
@@ -142,10 +130,7 @@ PodCall RosPodPort::set_photo_mode(uint8_t mode, uint8_t interval_s, uint8_t bur
 
 PodCall RosPodPort::set_video_mode(bool video) {
   PodCall call = reconfigure_int("camera_mode", video);
-  if (call.ok) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    video_mode_set_.accepted(video, std::chrono::steady_clock::now());
-  }
+  if (call.ok) tracker_.video_mode_accepted(video);
   return call;
 }
 
@@ -222,45 +207,11 @@ PodCall RosPodPort::measure_range(double& range_m) {
 }
 
 PodSnapshot RosPodPort::snapshot() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  PodSnapshot out = state_;
-  const ros::Time now = ros::Time::now();
-  const auto recent = [&now](const ros::Time& t) {
-    return !t.isZero() && (now - t).toSec() < kRecordStatusFresh_s;
-  };
-  // A start the pod accepted counts as recording until record/status confirms or denies it; a
-  // "recording" state counts while record/status keeps coming. Either gone silent: unknown.
-  const bool started = !record_commanded_at_.isZero();
-  const bool said_recording = state_.recording;
-  out.recording =
-      (started && recent(record_commanded_at_)) || (said_recording && recent(record_status_at_));
-  out.recording_known = out.recording || (!started && !said_recording);
-  out.state_age_s = heard_at_.isZero() ? -1.0 : std::max(0.0, (now - heard_at_).toSec());
-  out.video_mode = video_mode_set_.answer(state_.video_mode, std::chrono::steady_clock::now());
-  return out;
-}
-
-void RosPodPort::pod_heard() {
-  heard_at_ = ros::Time::now();
+  return tracker_.snapshot(ros_now_s());
 }
 
 void RosPodPort::on_joints(const sensor_msgs::JointState::ConstPtr& msg) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  for (size_t i = 0; i < msg->name.size() && i < msg->position.size(); ++i) {
-    const double velocity = i < msg->velocity.size() ? msg->velocity[i] : 0.0;
-    if (ends_with(msg->name[i], "yaw_joint")) {
-      state_.yaw_rad = msg->position[i];
-      state_.yaw_rate_rad_s = velocity;
-    } else if (ends_with(msg->name[i], "roll_joint")) {
-      state_.roll_rad = msg->position[i];
-      state_.roll_rate_rad_s = velocity;
-    } else if (ends_with(msg->name[i], "pitch_joint")) {
-      state_.pitch_rad = msg->position[i];
-      state_.pitch_rate_rad_s = velocity;
-    }
-  }
-  state_.have_joints = true;
-  pod_heard();
+  tracker_.joints(msg->name, msg->position, msg->velocity, ros_now_s());
 }
 
 void RosPodPort::on_attitude(const geometry_msgs::QuaternionStamped::ConstPtr& msg) {
@@ -268,72 +219,39 @@ void RosPodPort::on_attitude(const geometry_msgs::QuaternionStamped::ConstPtr& m
   double roll = 0, pitch = 0, yaw = 0;
   const auto& q = msg->quaternion;
   tf2::Matrix3x3(tf2::Quaternion(q.x, q.y, q.z, q.w).normalized()).getRPY(roll, pitch, yaw);
-  std::lock_guard<std::mutex> lock(mutex_);
-  state_.have_attitude = true;
-  state_.attitude_roll_rad = roll;
-  state_.attitude_pitch_rad = pitch;
-  state_.attitude_yaw_rad = yaw;
+  tracker_.attitude(roll, pitch, yaw);
 }
 
 void RosPodPort::on_camera(const k40t_driver::CameraStatus::ConstPtr& msg) {
-  bool became_full = false;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    became_full = msg->sd_state == k40t_driver::CameraStatus::SD_FULL &&
-                  (!state_.have_camera || state_.sd_state != msg->sd_state);
-    state_.have_camera = true;
-    state_.video_mode = msg->mode == k40t_driver::CameraStatus::MODE_VIDEO;
-    video_mode_set_.reported(state_.video_mode, std::chrono::steady_clock::now());
-    state_.photo_mode = msg->photo_mode;
-    state_.burst_count = msg->burst_count;
-    state_.timelapse_interval_s = msg->timelapse_interval_s;
-    state_.sd_state = msg->sd_state;
-    state_.image_mode = msg->image_mode;
-    state_.sd_total_mb = msg->sd_total_mb;
-    state_.sd_free_mb = msg->sd_free_mb;
-    pod_heard();
-  }
-  if (became_full && events_) events_("K40T: SD card full");
+  CameraReport report;
+  report.video_mode = msg->mode == k40t_driver::CameraStatus::MODE_VIDEO;
+  report.photo_mode = msg->photo_mode;
+  report.burst_count = msg->burst_count;
+  report.timelapse_interval_s = msg->timelapse_interval_s;
+  report.sd_state = msg->sd_state;
+  report.image_mode = msg->image_mode;
+  report.sd_total_mb = msg->sd_total_mb;
+  report.sd_free_mb = msg->sd_free_mb;
+  tracker_.camera(report, ros_now_s());
 }
 
 void RosPodPort::on_visible(const k40t_driver::VisibleStatus::ConstPtr& msg) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  state_.have_visible = true;
-  state_.zoom_ratio = msg->zoom_ratio;
-  state_.focal_length_mm = msg->focal_length_mm;
-  pod_heard();
+  tracker_.visible(msg->zoom_ratio, msg->focal_length_mm, ros_now_s());
 }
 
 void RosPodPort::on_photo(const k40t_driver::PhotoStatus::ConstPtr& msg) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  ++state_.photo_status_count;
-  state_.photo_state = msg->state;
+  tracker_.photo(msg->state);
 }
 
 void RosPodPort::on_upgrade(const k40t_driver::CameraUpgradeStatus::ConstPtr& msg) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  ++state_.repair_status_count;
-  state_.repair_state = msg->state;
-  state_.repair_percent = msg->progress_percent;
+  tracker_.repair(msg->state, msg->progress_percent);
 }
 
 void RosPodPort::on_record(const k40t_driver::RecordStatus::ConstPtr& msg) {
   using k40t_driver::RecordStatus;
   const bool recording = msg->state == RecordStatus::STATE_RECORDING ||
                          msg->state == RecordStatus::STATE_TIMELAPSE_RECORDING;
-  bool started = false, stopped = false;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    const bool was = state_.recording;
-    started = recording && !was;
-    stopped = !recording && was;
-    state_.recording = recording;
-    state_.record_duration_s = msg->duration_s;
-    record_status_at_ = ros::Time::now();
-    record_commanded_at_ = ros::Time();  // the pod's own word replaces the command's
-  }
-  if (started && events_) events_("K40T: recording started");
-  if (stopped && events_) events_("K40T: recording stopped (" + msg->state_text + ")");
+  tracker_.record(recording, msg->duration_s, msg->state_text, ros_now_s());
 }
 
 }  // namespace k40t::driver::skyport

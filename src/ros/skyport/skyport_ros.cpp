@@ -18,8 +18,11 @@
 #include "k40t_driver/LinkBandwidth.h"
 #include "k40t_driver/OtherPayload.h"
 #include "k40t_driver/UavState.h"
+#include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/psdk/commands/all.h"
-#include "k40t_driver/ros/pod_driver.h"
+#include "k40t_driver/ros/skyport/push_conversions.h"
+#include "k40t_driver/skyport/link_health.h"
+#include "k40t_driver/skyport/transparent_chunks.h"
 #include "k40t_driver/transport/transport.h"
 
 namespace k40t::driver::skyport {
@@ -52,6 +55,7 @@ SkyportRos::SkyportRos(ros::NodeHandle nh, ros::NodeHandle private_nh, SkyportCo
       private_nh_(private_nh),
       config_(std::move(config)),
       session_(std::move(session)),
+      positions_(*session_, config_.position_min_interval_s),
       diagnostics_(nh, private_nh) {
   advertise();
   pod_ = std::make_unique<RosPodPort>(nh_, config_.reconfigure, config_.service_timeout_s,
@@ -65,14 +69,7 @@ SkyportRos::SkyportRos(ros::NodeHandle nh, ros::NodeHandle private_nh, SkyportCo
   bridge_ = std::make_unique<SkyportBridge>(
       *session_, *pod_, config_.bridge,
       [this](const BatteryInfoPush& push) {
-        sensor_msgs::BatteryState battery;
-        battery.header.stamp = ros::Time::now();
-        battery.percentage = push.percentage / 100.0f;
-        battery.voltage = battery.current = battery.charge = battery.capacity = std::nanf("");
-        battery.design_capacity = std::nanf("");
-        battery.present = true;
-        battery.power_supply_status = sensor_msgs::BatteryState::POWER_SUPPLY_STATUS_DISCHARGING;
-        battery_.publish(battery);
+        battery_.publish(battery_state(push, ros::Time::now()));
         std::lock_guard<std::mutex> lock(mutex_);
         if (!power_off_soon_ || *power_off_soon_ != push.power_off_soon) {
           power_off_soon_ = push.power_off_soon;
@@ -168,12 +165,11 @@ void SkyportRos::register_transparent() {
 }
 
 namespace {
-// Sends `bytes` in pieces of at most `chunk` (the command's DATA limit).
+// Sends `bytes` in pieces of at most `chunk` (the command's DATA limit; transparent_chunks.h).
 void send_chunks(Session& session, CommandKey key, const std::vector<uint8_t>& bytes,
                  size_t chunk) {
-  for (size_t at = 0; at < bytes.size(); at += chunk) {
-    const Status sent =
-        session.send_raw(key, bytes.data() + at, std::min(chunk, bytes.size() - at));
+  for (const ByteSpan piece : transparent_chunks(bytes.size(), chunk)) {
+    const Status sent = session.send_raw(key, bytes.data() + piece.offset, piece.size);
     if (!sent) {
       ROS_WARN_THROTTLE(5.0, "SKYPORT transparent data: %s", sent.message().c_str());
       return;
@@ -201,25 +197,20 @@ void SkyportRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - *last_frame_).count();
   }
   const double pod_age_s = pod_->snapshot().state_age_s;
-  const bool pod_stale = pod_age_s < 0 || pod_age_s > config_.pod_stale_s;
   const transport::LinkState link = session_->link_state();
-  if (link != transport::LinkState::kConnected) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::ERROR,
-                   std::string("link ") + transport::to_string(link));
-  } else if (silent_s < 0 || silent_s > config_.silence_timeout_s) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "the SKYPORT adapter is silent");
-  } else if (b.identity_requests == 0) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no identity verification yet");
-  } else if (b.identity_refused > 0 && b.identity_refused == b.identity_requests) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "identity verification refused");
-  } else if (b.power_off_announced) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "the aircraft announces power-off");
-  } else if (pod_stale) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
-                   "the pod's state is stale: getters answer from the last known state");
-  } else {
-    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "pushes arriving, identity answered");
-  }
+  LinkHealthInput in;
+  in.link = link;
+  in.silent_s = silent_s;
+  in.silence_timeout_s = config_.silence_timeout_s;
+  in.bridge = b;
+  in.pod_age_s = pod_age_s;
+  in.pod_stale_s = config_.pod_stale_s;
+  const LinkHealth health = link_health(in);
+  const bool pod_stale = health.pod_stale;
+  status.summary(health.level == HealthLevel::kError  ? diagnostic_msgs::DiagnosticStatus::ERROR
+                 : health.level == HealthLevel::kWarn ? diagnostic_msgs::DiagnosticStatus::WARN
+                                                      : diagnostic_msgs::DiagnosticStatus::OK,
+                 health.summary);
   status.add("link", transport::to_string(link));
   status.add("seconds since last frame", silent_s);
   status.add("identity verifications answered", b.identity_requests);

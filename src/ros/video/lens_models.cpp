@@ -71,31 +71,28 @@ video::Intrinsics LensModels::at_1x(video::Lens lens, cv::Size frame) const {
                               frame.width, frame.height);
 }
 
-sensor_msgs::CameraInfo LensModels::camera_info(const video::StreamView& view, cv::Size frame,
-                                                const ZoomState& zoom) const {
-  auto& manager = *managers_[static_cast<size_t>(view.lens)];
-  video::Intrinsics in = at_1x(view.lens, frame);
-  switch (view.lens) {
+video::Intrinsics LensModels::zoomed(video::Lens lens, cv::Size image,
+                                     const ZoomState& zoom) const {
+  auto& manager = *managers_[static_cast<size_t>(lens)];
+  video::Intrinsics in = at_1x(lens, image);
+  switch (lens) {
     case video::Lens::kTele: {
       const TeleZoom z = tele_zoom(config_, zoom,
                                    manager.isCalibrated() ? config_.tele_calibration_focal_length_mm
                                                           : config_.tele.focal_length_mm);
-      in = video::zoom_digital(video::zoom_optical(in, z.optical), z.digital);
-      break;
+      return video::zoom_digital(video::zoom_optical(in, z.optical), z.digital);
     }
     case video::Lens::kThermal:
-      in = video::zoom_digital(in, std::clamp(zoom.thermal_zoom, 1, 8));
-      break;
+      return video::zoom_digital(in, std::clamp(zoom.thermal_zoom, 1, 8));
     case video::Lens::kWide:
-      in = video::zoom_digital(in, config_.wide_digital_zoom);
       break;
   }
-  if (view.split) {
-    const video::SplitLayout layout = video::split_layout(frame);
-    in = video::placed(in, static_cast<double>(layout.visible.width) / frame.width,
-                       layout.visible.x, layout.visible.y, frame.width, frame.height);
-  }
+  return video::zoom_digital(in, config_.wide_digital_zoom);
+}
 
+sensor_msgs::CameraInfo LensModels::to_message(video::Lens lens,
+                                               const video::Intrinsics& in) const {
+  auto& manager = *managers_[static_cast<size_t>(lens)];
   sensor_msgs::CameraInfo info;
   if (manager.isCalibrated()) {
     const sensor_msgs::CameraInfo calibrated = manager.getCameraInfo();
@@ -112,6 +109,36 @@ sensor_msgs::CameraInfo LensModels::camera_info(const video::StreamView& view, c
   info.width = static_cast<uint32_t>(in.width);
   info.height = static_cast<uint32_t>(in.height);
   return info;
+}
+
+sensor_msgs::CameraInfo LensModels::camera_info(const video::StreamView& view, cv::Size frame,
+                                                const ZoomState& zoom) const {
+  video::Intrinsics in = zoomed(view.lens, frame, zoom);
+  if (view.split) {
+    const video::SplitLayout layout = video::split_layout(frame);
+    in = video::in_panel(in, layout.visible, frame);
+  }
+  return to_message(view.lens, in);
+}
+
+std::array<sensor_msgs::CameraInfo, 2> LensModels::split_panels(cv::Size frame,
+                                                                const ZoomState& zoom) const {
+  const video::SplitLayout layout = video::split_layout(frame);
+  const cv::Size thermal(video::kThermalWidth, video::kThermalHeight);
+  std::array<sensor_msgs::CameraInfo, 2> out{
+      to_message(video::Lens::kTele,
+                 video::in_panel(zoomed(video::Lens::kTele, frame, zoom), layout.visible, frame)),
+      to_message(
+          video::Lens::kThermal,
+          video::in_panel(zoomed(video::Lens::kThermal, thermal, zoom), layout.thermal, frame))};
+  const std::array<cv::Rect, 2> panels{layout.visible, layout.thermal};
+  for (size_t i = 0; i < out.size(); ++i) {
+    out[i].roi.x_offset = static_cast<uint32_t>(panels[i].x);
+    out[i].roi.y_offset = static_cast<uint32_t>(panels[i].y);
+    out[i].roi.width = static_cast<uint32_t>(panels[i].width);
+    out[i].roi.height = static_cast<uint32_t>(panels[i].height);
+  }
+  return out;
 }
 
 }  // namespace k40t::driver

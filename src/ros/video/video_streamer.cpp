@@ -47,6 +47,8 @@ VideoStreamer::VideoStreamer(const ros::NodeHandle& nh, const ros::NodeHandle& p
       stamps_(config_.stamps),
       transport_(nh_),
       publisher_(transport_.advertiseCamera("image_raw", 1)) {
+  panel_publishers_ = {nh_.advertise<sensor_msgs::CameraInfo>("split/visible/camera_info", 1),
+                       nh_.advertise<sensor_msgs::CameraInfo>("split/thermal/camera_info", 1)};
   camera_status_sub_ = nh_.subscribe("camera/status", 5, &VideoStreamer::on_camera_status, this);
   visible_status_sub_ = nh_.subscribe("visible/status", 5, &VideoStreamer::on_visible_status, this);
   settings_sub_ = nh_.subscribe(config_.settings_topic, 5, &VideoStreamer::on_settings, this);
@@ -94,17 +96,34 @@ void VideoStreamer::publish(const video::GrabbedFrame& frame) {
     published_.width = frame.size.width;
     published_.height = frame.size.height;
   }
+  std_msgs::Header header;
+  header.stamp.fromNSec(static_cast<uint64_t>(stamp_us) * 1000);
+  header.frame_id = frame_id;
+  if (view.split) publish_split_panels(header.stamp, frame.size, zoom);
   if (publisher_.getNumSubscribers() == 0) return;  // no conversion for nobody
 
   sensor_msgs::ImagePtr image = to_message(frame);
   auto info =
       boost::make_shared<sensor_msgs::CameraInfo>(lenses_.camera_info(view, frame.size, zoom));
-  image->header.stamp.fromNSec(static_cast<uint64_t>(stamp_us) * 1000);
-  image->header.frame_id = frame_id;
+  image->header = header;
   info->header = image->header;
   publisher_.publish(image, info);
   std::lock_guard<std::mutex> lock(mutex_);
   ++published_.published;
+}
+
+void VideoStreamer::publish_split_panels(const ros::Time& stamp, cv::Size frame,
+                                         const ZoomState& zoom) {
+  if (panel_publishers_[0].getNumSubscribers() == 0 &&
+      panel_publishers_[1].getNumSubscribers() == 0)
+    return;
+  std::array<sensor_msgs::CameraInfo, 2> panels = lenses_.split_panels(frame, zoom);
+  const std::array<video::Lens, 2> lenses{video::Lens::kTele, video::Lens::kThermal};
+  for (size_t i = 0; i < panels.size(); ++i) {
+    panels[i].header.stamp = stamp;
+    panels[i].header.frame_id = optical_frame(config_, lenses[i]);
+    panel_publishers_[i].publish(panels[i]);
+  }
 }
 
 void VideoStreamer::on_camera_status(const k40t_driver::CameraStatus::ConstPtr& status) {

@@ -30,8 +30,8 @@ VideoSnapshot snapshot_of(const PodModel& model) {
   const CameraSettings& camera = model.camera().settings();
   s.image_mode = image_mode_of(camera.image_mode);
   s.resolution = camera.stream_resolution == 1 ? StreamResolution::k720p : StreamResolution::k1080p;
-  s.palette = model.thermal().settings().palette;
-  s.thermal_zoom = model.thermal().settings().digital_zoom;
+  s.palette = static_cast<int>(model.thermal().settings().reported.palette);
+  s.thermal_zoom = model.thermal().settings().reported.zoom_x;
   s.hybrid_zoom = model.zoom().zoom();
   s.yaw_deg = model.boresight_yaw_deg();
   s.pitch_deg = model.boresight_pitch_deg();

@@ -6,8 +6,8 @@
 #include <tf2/LinearMath/Quaternion.h>
 #include <tf2/LinearMath/Vector3.h>
 
+#include "k40t_driver/driver/driver_options.h"
 #include "k40t_driver/ros/conversions.h"
-#include "k40t_driver/ros/driver_options.h"
 #include "k40t_driver/ros/geo_glue.h"
 
 namespace k40t::driver {

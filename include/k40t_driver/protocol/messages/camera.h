@@ -20,3 +20,12 @@
 #include "k40t_driver/protocol/messages/camera_status.h"
 #include "k40t_driver/protocol/messages/camera_system.h"
 #include "k40t_driver/protocol/messages/flight_controller.h"
+
+namespace k40t::protocol {
+
+// Every message struct of the camera family, from the lists its headers end with.
+using CameraMessages =
+    JoinedMessages<CameraReportMessages, CameraCaptureMessages, CameraImagingMessages,
+                   CameraSystemMessages, CameraStatusMessages, FlightControllerMessages>;
+
+}  // namespace k40t::protocol

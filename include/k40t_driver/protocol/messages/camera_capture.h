@@ -8,6 +8,7 @@
 #include <string>
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/camera_enums.h"
 
@@ -188,5 +189,11 @@ struct PreciseReshootRequest {
     v("name", self.name);
   }
 };
+
+// Every message struct of this part of the camera family: the catalogue, the catalogue tests and
+// the fuzz target take their entries from this list (message_list.h).
+using CameraCaptureMessages =
+    MessageList<CaptureModeRequest, PhotoSettingsRequest, TakePhotoRequest, RecordRequest,
+                ZoomRatioRequest, ContinuousZoomRequest, PreciseReshootRequest>;
 
 }  // namespace k40t::protocol

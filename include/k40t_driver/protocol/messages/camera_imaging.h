@@ -9,6 +9,7 @@
 #include <array>
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/camera_enums.h"
 
@@ -217,5 +218,11 @@ struct BoxTrackingRequest {
     v("height_px", self.height_px);
   }
 };
+
+// Every message struct of this part of the camera family: the catalogue, the catalogue tests and
+// the fuzz target take their entries from this list (message_list.h).
+using CameraImagingMessages =
+    MessageList<StreamBitrateRequest, StreamResolutionRequest, StreamEncodingRequest, FocusRequest,
+                OsdWatermarkRequest, ImageModeRequest, AiRecognitionRequest, BoxTrackingRequest>;
 
 }  // namespace k40t::protocol

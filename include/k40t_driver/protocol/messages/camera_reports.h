@@ -4,6 +4,7 @@
 #pragma once
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/camera_enums.h"
 
 namespace k40t::protocol {
@@ -78,5 +79,9 @@ struct CameraUpgradeStatus {
     v("progress_percent", self.progress_percent);
   }
 };
+
+// Every message struct of this part of the camera family: the catalogue, the catalogue tests and
+// the fuzz target take their entries from this list (message_list.h).
+using CameraReportMessages = MessageList<CameraSystemStatus, CameraUpgradeStatus>;
 
 }  // namespace k40t::protocol

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/camera_enums.h"
 
 namespace k40t::protocol {
@@ -146,5 +147,10 @@ struct SdFormatStatus {
     v("state", self.state);
   }
 };
+
+// Every message struct of this part of the camera family: the catalogue, the catalogue tests and
+// the fuzz target take their entries from this list (message_list.h).
+using CameraStatusMessages = MessageList<PhotoStatus, RecordStatus, ZoomStatus,
+                                         PreciseReshootStatus, TfCardUpgradeStatus, SdFormatStatus>;
 
 }  // namespace k40t::protocol

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/camera_enums.h"
 
@@ -186,5 +187,11 @@ struct SetIpRequest {
     v("gateway", self.gateway);
   }
 };
+
+// Every message struct of this part of the camera family: the catalogue, the catalogue tests and
+// the fuzz target take their entries from this list (message_list.h).
+using CameraSystemMessages = MessageList<TfCardUpgradeRequest, FormatSdRequest, TimeSyncRequest,
+                                         FactoryResetRequest, SetIpRequest, GetIpRequest, GetIpAck,
+                                         ShutdownRequest, CameraVersionRequest, CameraVersionAck>;
 
 }  // namespace k40t::protocol

@@ -16,6 +16,7 @@
 #pragma once
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/camera_enums.h"
 
@@ -187,5 +188,10 @@ struct TargetGpsRequest {
     v("climb_rate_m_s", self.climb_rate_m_s);
   }
 };
+
+// Every message struct of this part of the camera family: the catalogue, the catalogue tests and
+// the fuzz target take their entries from this list (message_list.h).
+using FlightControllerMessages =
+    MessageList<CameraGpsRequest, CameraGpsAck, TargetGpsRequest, TargetGpsAck>;
 
 }  // namespace k40t::protocol

@@ -12,6 +12,7 @@
 #include <cstdint>
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/simple_requests.h"
 
@@ -343,5 +344,15 @@ struct GimbalStabilisationRequest : SwitchRequest<> {
   static constexpr const char* kName = "gimbal_stabilisation";
   static constexpr const char* kSection = "3.1.2.12";
 };
+
+// Every message struct of the gimbal family: the catalogue, the catalogue tests and the fuzz target
+// take their entries from this list (message_list.h).
+using GimbalMessages =
+    MessageList<GimbalStatus, GimbalAttitude, GimbalControlRequest, GimbalAngleRequest,
+                GimbalDriftCalibrationRequest, GimbalDialSpeedRequest, GimbalVersionRequest,
+                GimbalVersionAck, GimbalPointAtRequest, GimbalServoOffRequest,
+                GimbalLinearCalibrationRequest, GimbalRestartRequest,
+                GimbalUseFlightControllerAttitudeRequest, GimbalAccelerationCalibrationRequest,
+                GimbalStabilisationRequest>;
 
 }  // namespace k40t::protocol

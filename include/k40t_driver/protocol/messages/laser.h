@@ -11,6 +11,7 @@
 
 #include "k40t_driver/protocol/message.h"
 #include "k40t_driver/protocol/message_layout.h"
+#include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/simple_requests.h"
 
@@ -67,5 +68,10 @@ struct LaserPeriodicRangeStatus : LaserDistancePayload<&CodecOptions::laser_stat
   static constexpr const char* kName = "laser_periodic_range_status";
   static constexpr const char* kSection = "3.2.5.2";
 };
+
+// Every message struct of the laser family: the catalogue, the catalogue tests and the fuzz target
+// take their entries from this list (message_list.h).
+using LaserMessages = MessageList<LaserRangeRequest, LaserRangeAck, LaserPeriodicRangeRequest,
+                                  LaserPeriodicRangeStatus>;
 
 }  // namespace k40t::protocol

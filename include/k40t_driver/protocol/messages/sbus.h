@@ -9,6 +9,7 @@
 
 #include "k40t_driver/protocol/message.h"
 #include "k40t_driver/protocol/message_layout.h"
+#include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/simple_requests.h"
 
@@ -121,5 +122,10 @@ struct SbusConfigRequest : CommandRequest<0x01, SbusConfigAck> {
   static constexpr const char* kName = "sbus_config";
   static constexpr const char* kSection = "3.2.6.3";
 };
+
+// Every message struct of the SBUS family: the catalogue, the catalogue tests and the fuzz target
+// take their entries from this list (message_list.h).
+using SbusMessages =
+    MessageList<SbusRangeRequest, SbusChannelsRequest, SbusConfigRequest, SbusConfigAck>;
 
 }  // namespace k40t::protocol

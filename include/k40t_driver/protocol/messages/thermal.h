@@ -10,6 +10,7 @@
 #pragma once
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/setting_request.h"
 
@@ -454,5 +455,15 @@ struct ThermalThresholdAlarmRequest {
     v("threshold_float_degC", self.threshold_float_degC);
   }
 };
+
+// Every message struct of the thermal family: the catalogue, the catalogue tests and the fuzz
+// target take their entries from this list (message_list.h).
+using ThermalMessages =
+    MessageList<ThermalStatus, ThermalReadSettingsRequest, ThermalSettingsAck, ThermalZoomRequest,
+                ThermalPaletteRequest, ThermalMeasurementRequest, ThermalSharpnessRequest,
+                ThermalBrightnessRequest, ThermalContrastRequest, ThermalDenoiseRequest,
+                ThermalEnhancementRequest, ThermalSpotRequest, ThermalAreaRequest,
+                ThermalGainModeRequest, ThermalAlarmsRequest, ThermalOverlayRequest,
+                ThermalThresholdAlarmRequest>;
 
 }  // namespace k40t::protocol

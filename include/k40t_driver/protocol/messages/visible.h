@@ -7,6 +7,7 @@
 #pragma once
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/setting_request.h"
 
@@ -374,5 +375,14 @@ struct VisibleMeteringRequest
   static constexpr auto kValue = &VisibleMeteringRequest::metering;
   static constexpr const char* kValueName = "metering";
 };
+
+// Every message struct of the visible family: the catalogue, the catalogue tests and the fuzz
+// target take their entries from this list (message_list.h).
+using VisibleMessages =
+    MessageList<VisibleStatus, VisibleReadSettingsRequest, VisibleSettingsAck,
+                VisibleVideoResolutionRequest, VisiblePhotoResolutionRequest, VisibleIsoRequest,
+                VisibleShutterRequest, VisibleEvRequest, VisibleWhiteBalanceRequest,
+                VisibleAntiFlickerRequest, VisibleStrongLightRequest, VisibleBacklightRequest,
+                VisibleAeLockRequest, VisibleMeteringRequest>;
 
 }  // namespace k40t::protocol

@@ -4,8 +4,9 @@
 // its status topics (joint_states, gimbal/attitude, camera/status, visible/status, record/status,
 // photo/status, camera/upgrade_status) for the pod's state. Service clients are persistent and
 // cached per service (a new client per call costs a connection and a lookup each time); a client
-// whose call failed is dropped and made again on the next call. `events` hears of pod events worth
-// a floating-window message (recording started or stopped, SD card full).
+// whose call failed is dropped and made again on the next call. The state and its rules are the
+// ROS-free PodStateTracker's; `events` hears of pod events worth a floating-window message
+// (recording started or stopped, SD card full).
 #pragma once
 
 #include <functional>
@@ -24,8 +25,8 @@
 #include "k40t_driver/PhotoStatus.h"
 #include "k40t_driver/RecordStatus.h"
 #include "k40t_driver/VisibleStatus.h"
-#include "k40t_driver/ros/skyport/commanded_value.h"
-#include "k40t_driver/ros/skyport/pod_port.h"
+#include "k40t_driver/skyport/pod_port.h"
+#include "k40t_driver/skyport/pod_state_tracker.h"
 
 namespace k40t::driver::skyport {
 
@@ -68,25 +69,16 @@ class RosPodPort : public PodPort {
   void on_record(const k40t_driver::RecordStatus::ConstPtr& msg);
   void on_photo(const k40t_driver::PhotoStatus::ConstPtr& msg);
   void on_upgrade(const k40t_driver::CameraUpgradeStatus::ConstPtr& msg);
-  void pod_heard();  // a status message from the pod arrived (under mutex_)
 
   ros::NodeHandle nh_;
   std::string reconfigure_;
   ros::Duration timeout_;
-  Events events_;
+  PodStateTracker tracker_;  // before the subscriptions that feed it: it outlives them
   ros::Publisher cmd_rate_;
   ros::Subscriber joints_, attitude_, camera_, visible_, record_, photo_, upgrade_;
 
   std::mutex clients_mutex_;
   std::map<std::string, ros::ServiceClient> clients_;
-
-  mutable std::mutex mutex_;
-  PodSnapshot state_;
-  ros::Time record_status_at_;
-  ros::Time record_commanded_at_;  // a record start the pod accepted, not yet confirmed
-  ros::Time heard_at_;             // the newest status message from the pod
-  // The work mode the pod accepted, answered until camera/status (1 Hz) says so too.
-  CommandedValue<bool> video_mode_set_{std::chrono::seconds(3)};
 };
 
 }  // namespace k40t::driver::skyport

@@ -7,7 +7,7 @@
 
 #include "k40t_driver/protocol/result.h"
 #include "k40t_driver/psdk/aes.h"
-#include "k40t_driver/ros/skyport/skyport_bridge.h"
+#include "k40t_driver/skyport/skyport_bridge.h"
 
 namespace k40t::driver::skyport {
 

@@ -22,10 +22,11 @@
 #include "k40t_driver/GetPosition.h"
 #include "k40t_driver/protocol/result.h"
 #include "k40t_driver/psdk/session.h"
-#include "k40t_driver/ros/skyport/pps_rule.h"
 #include "k40t_driver/ros/skyport/ros_pod_port.h"
-#include "k40t_driver/ros/skyport/skyport_bridge.h"
 #include "k40t_driver/ros/skyport/skyport_config.h"
+#include "k40t_driver/skyport/position_query.h"
+#include "k40t_driver/skyport/pps_rule.h"
+#include "k40t_driver/skyport/skyport_bridge.h"
 
 namespace k40t::driver::skyport {
 
@@ -52,6 +53,7 @@ class SkyportRos {
   ros::NodeHandle nh_, private_nh_;
   SkyportConfig config_;
   std::unique_ptr<psdk::Session> session_;
+  PositionQuery positions_;  // skyport/get_position; told of every UTC push used
   std::unique_ptr<RosPodPort> pod_;
   std::unique_ptr<SkyportBridge> bridge_;
   std::atomic<SkyportBridge*> bridge_ptr_{nullptr};
@@ -70,10 +72,6 @@ class SkyportRos {
   std::optional<bool> power_off_soon_;
   uint8_t other_payload_type_ = 0;
   float other_payload_focal_mm_ = std::nanf("");
-  std::optional<int64_t> newest_utc_ns_;  // the newest synchronised UTC time (UTC push), ns
-  std::optional<std::chrono::steady_clock::time_point> last_position_request_;
-  uint16_t next_event_index_ = 0;
-  std::mutex position_mutex_;  // one get_position at a time (rate limit, event indices)
   std::atomic<uint64_t> utc_pushes_invalid_{0};
   std::atomic<uint64_t> utc_pushes_late_{0};  // 3.3.10's 500 ms rule (with or without PPS)
   // No pps_topic: used after the rule relative to the most punctual push (pps_rule.h).

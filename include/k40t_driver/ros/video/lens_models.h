@@ -6,7 +6,9 @@
 //            digital part (above the optical range): zoom ratio / optical ratio
 //   thermal  the thermal digital zoom (0x000105, read back through the driver's settings)
 //   wide     the configured wide digital zoom (the pod reports none)
-// Split screen: the tele intrinsics of the left panel, placed where that panel is in the frame.
+// Split screen: the image's camera_info is the tele's, placed where the left panel is in the frame;
+// split_panels() describes both panels (the thermal one with the thermal lens and its zoom), each
+// placed into the frame's pixel coordinates with the panel as roi, for locate_pixel.
 // Distortion coefficients are those of the calibration, unchanged.
 #pragma once
 
@@ -44,9 +46,15 @@ class LensModels {
 
   sensor_msgs::CameraInfo camera_info(const video::StreamView& view, cv::Size frame,
                                       const ZoomState& zoom) const;
+  // Split screen: {visible panel, thermal panel}, K in the whole frame's pixel coordinates, roi
+  // the panel's rectangle; frame ids are the caller's.
+  std::array<sensor_msgs::CameraInfo, 2> split_panels(cv::Size frame, const ZoomState& zoom) const;
 
  private:
   video::Intrinsics at_1x(video::Lens lens, cv::Size frame) const;
+  // The lens's intrinsics for an `image`-sized picture at the zoom the pod reports.
+  video::Intrinsics zoomed(video::Lens lens, cv::Size image, const ZoomState& zoom) const;
+  sensor_msgs::CameraInfo to_message(video::Lens lens, const video::Intrinsics& in) const;
 
   const VideoConfig& config_;
   std::array<std::unique_ptr<camera_info_manager::CameraInfoManager>, 3> managers_;

@@ -2,13 +2,16 @@
 // thread takes each new one (never a backlog), converts it once into the message's own buffer,
 // stamps it (stamp_estimator.h), picks its frame id and camera_info from the image mode and zoom
 // the driver reports, and publishes image_raw + camera_info through image_transport as shared
-// pointers (zero copies to subscribers in the same nodelet manager).
+// pointers (zero copies to subscribers in the same nodelet manager). In split screen it also
+// publishes split/visible/camera_info and split/thermal/camera_info (lens_models.h: each panel
+// in the frame's pixel coordinates, roi = the panel), with the image's stamp, for locate_pixel.
 //
 // Subscribed (relative to the node's namespace, where the driver publishes): camera/status (image
 // mode, stream resolution), visible/status (tele focal length and zoom), and the driver's
 // dynamic_reconfigure updates (~settings_topic) for the thermal digital zoom.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <memory>
 #include <mutex>
@@ -43,6 +46,7 @@ class VideoStreamer {
                 const VideoConfig& config);
   void publish_loop();
   void publish(const video::GrabbedFrame& frame);
+  void publish_split_panels(const ros::Time& stamp, cv::Size frame, const ZoomState& zoom);
 
   void on_camera_status(const k40t_driver::CameraStatus::ConstPtr& status);
   void on_visible_status(const k40t_driver::VisibleStatus::ConstPtr& status);
@@ -55,6 +59,7 @@ class VideoStreamer {
   video::StampEstimator stamps_;  // publisher thread only
   image_transport::ImageTransport transport_;
   image_transport::CameraPublisher publisher_;
+  std::array<ros::Publisher, 2> panel_publishers_;  // split screen: visible, thermal
   ros::Subscriber camera_status_sub_;
   ros::Subscriber visible_status_sub_;
   ros::Subscriber settings_sub_;

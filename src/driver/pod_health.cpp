@@ -1,0 +1,211 @@
+#include "k40t_driver/driver/pod_health.h"
+
+#include <cstdio>
+
+namespace k40t::driver {
+
+namespace p = protocol;
+
+namespace {
+
+const char* coverage_name(p::CrcCoverage coverage) {
+  return coverage == p::CrcCoverage::kAuto ? "not locked yet" : p::to_string(coverage);
+}
+
+// The document's word for an enum value, or `unknown` for a code it does not list.
+template <class E>
+const char* name_or(E value, const char* unknown) {
+  const char* name = p::to_string(value);
+  return name ? name : unknown;
+}
+
+// Appends `name` to the comma-separated `list`.
+void append_name(std::string& list, const char* name) {
+  list += list.empty() ? name : std::string(", ") + name;
+}
+
+}  // namespace
+
+const HealthValue* HealthCheck::value(const std::string& key) const {
+  for (const auto& [name, v] : values) {
+    if (name == key) return &v;
+  }
+  return nullptr;
+}
+
+HealthCheck link_health(const DriverStats& s, const LinkContext& context) {
+  HealthCheck check;
+  const transport::LinkState state = s.session.link_state;
+  const double silent = s.seconds_since_last_frame;
+  if (context.replay) {
+    check.set(HealthLevel::kOk, silent < 0 ? "replay: no frame yet" : "replay");
+  } else if (state != transport::LinkState::kConnected) {
+    check.set(
+        HealthLevel::kError,
+        std::string("link ") + transport::to_string(state) + ": " +
+            (s.session.link.last_error.empty() ? "not connected" : s.session.link.last_error));
+  } else if (silent < 0) {
+    check.set(HealthLevel::kError, "connected, but the pod has sent nothing");
+  } else if (silent > context.silence_timeout_s) {
+    char text[64];
+    std::snprintf(text, sizeof text, "pod silent for %.1f s", silent);
+    check.set(HealthLevel::kError, text);
+  } else {
+    check.set(HealthLevel::kOk, "receiving");
+  }
+  const p::ParserStats& parser = s.session.parser;
+  check.add("device", context.replay ? std::string("replay of raw/rx") : context.device);
+  check.add("state", transport::to_string(state));
+  check.add("last error", s.session.link.last_error);
+  check.add("seconds since last frame", silent);
+  check.add("crc coverage", coverage_name(s.crc_coverage));
+  check.add("bytes received", parser.bytes_received);
+  check.add("bytes sent", s.session.link.bytes_sent);
+  check.add("frames received", parser.frames_good);
+  check.add("frames sent", s.session.frames_sent);
+  check.add("checksum errors", parser.checksum_errors);
+  check.add("length errors", parser.length_errors);
+  check.add("bytes discarded", parser.bytes_discarded);
+  check.add("unknown ids", parser.unknown_ids);
+  check.add("sequence gaps", parser.sequence_gaps);
+  check.add("frames lost", parser.frames_lost);
+  check.add("frames repeated", parser.frames_repeated);
+  check.add("decode errors", s.session.decode_errors);
+  check.add("requests", s.session.requests);
+  check.add("acks", s.session.acks);
+  check.add("nacks", s.session.nacks);
+  check.add("ack timeouts", s.session.ack_timeouts);
+  check.add("retries", s.session.retries);
+  check.add("late acks", s.session.late_acks);
+  check.add("connects", s.session.link.connects);
+  check.add("disconnects", s.session.link.disconnects);
+  check.add("pod online events", s.pod_online_events);
+  check.add("time syncs sent", s.time_syncs_sent);
+  check.add("gps requests answered", s.gps_requests_answered);
+  check.add("gps requests without fix", s.gps_requests_unanswerable);
+  check.add("gps requests time-matched", s.gps_requests_time_matched);
+  check.add("gps requests outside the history", s.gps_requests_out_of_history);
+  check.add("last geotag gap to a fix (s)", s.last_geotag_gap_s);
+  check.add("cmd_rate dead-man stops", s.deadman_stops);
+  return check;
+}
+
+HealthCheck self_test_health(const std::optional<p::GimbalStatus>& gimbal) {
+  HealthCheck check;
+  if (!gimbal) {
+    check.set(HealthLevel::kWarn, "no gimbal status report yet");
+    return check;
+  }
+  const p::GimbalStatus& g = *gimbal;
+  std::string failed;
+  auto sensor = [&](const char* name, bool ok) {
+    check.add(name, ok ? "passed" : "FAILED");
+    if (!ok) append_name(failed, name);
+  };
+  sensor("thermal", g.ir_ok);
+  sensor("tele", g.tele_ok);
+  sensor("wide", g.wide_ok);
+  sensor("laser", g.laser_ok);
+  const bool links_ok =
+      g.gimbal_link == p::GimbalLinkState::kNormal && g.camera_link == p::GimbalLinkState::kNormal;
+  check.add("gimbal link", name_or(g.gimbal_link, "unknown"));
+  check.add("camera link", name_or(g.camera_link, "unknown"));
+  check.add("upgrade", name_or(g.upgrade, "unknown"));
+  if (!failed.empty()) {
+    check.set(HealthLevel::kError, "self-test failed: " + failed);
+  } else if (!links_ok) {
+    check.set(HealthLevel::kError, "gimbal or camera connection abnormal");
+  } else if (g.upgrade != p::GimbalUpgradeState::kNormal) {
+    check.set(HealthLevel::kWarn, "firmware upgrade not completed");
+  } else {
+    check.set(HealthLevel::kOk, "all sensors passed");
+  }
+  return check;
+}
+
+HealthCheck stabilisation_health(const std::optional<p::GimbalStatus>& gimbal) {
+  HealthCheck check;
+  if (!gimbal) {
+    check.set(HealthLevel::kWarn, "no gimbal status report yet");
+    return check;
+  }
+  const bool trouble = gimbal->stabilisation == p::GimbalStabilisationState::kFailed ||
+                       gimbal->stabilisation == p::GimbalStabilisationState::kFeatureLost;
+  check.set(trouble ? HealthLevel::kWarn : HealthLevel::kOk,
+            name_or(gimbal->stabilisation, "unknown state"));
+  check.add("state code", static_cast<int>(gimbal->stabilisation));
+  return check;
+}
+
+HealthCheck sd_card_health(const std::optional<p::CameraSystemStatus>& camera) {
+  HealthCheck check;
+  if (!camera) {
+    check.set(HealthLevel::kWarn, "no camera status report yet");
+    return check;
+  }
+  const p::CameraSystemStatus& c = *camera;
+  HealthLevel level = HealthLevel::kOk;
+  switch (c.sd_state) {
+    case p::SdCardState::kNormal:
+      break;
+    case p::SdCardState::kAbnormal:
+    case p::SdCardState::kFormatError:
+      level = HealthLevel::kError;
+      break;
+    default:
+      level = HealthLevel::kWarn;
+      break;  // slow, missing, full, undocumented
+  }
+  check.set(level, name_or(c.sd_state, "unknown SD card state"));
+  check.add("total MB", c.sd_total_mb);
+  check.add("free MB", c.sd_free_mb);
+  check.add("used MB", c.sd_used_mb);
+  return check;
+}
+
+HealthCheck alarms_health(const std::optional<p::ThermalStatus>& thermal) {
+  HealthCheck check;
+  if (!thermal) {
+    check.set(HealthLevel::kWarn, "no thermal report yet");
+    return check;
+  }
+  const p::ThermalStatus& t = *thermal;
+  std::string active;
+  auto alarm = [&](const char* name, bool on) {
+    check.add(name, on);
+    if (on) append_name(active, name);
+  };
+  alarm("high temperature", t.high_alarm);
+  alarm("low temperature", t.low_alarm);
+  alarm("temperature difference", t.difference_alarm);
+  alarm("threshold", t.threshold_alarm);
+  check.add("max degC", t.max_degC);
+  check.add("min degC", t.min_degC);
+  if (active.empty()) {
+    check.set(HealthLevel::kOk, "no alarm");
+  } else {
+    check.set(HealthLevel::kWarn, "alarm: " + active);
+  }
+  return check;
+}
+
+HealthCheck settings_health(const SettingsState& s) {
+  HealthCheck check;
+  if (s.reads == 0) {
+    check.set(HealthLevel::kWarn, "settings not read from the pod yet");
+  } else if (!s.read_ok) {
+    check.set(HealthLevel::kWarn, "settings read-back incomplete: " + s.read_message);
+  } else if (!s.last_refusal.empty()) {
+    check.set(HealthLevel::kWarn, "last change refused and reverted: " + s.last_refusal);
+  } else {
+    check.set(HealthLevel::kOk, "in sync with the pod");
+  }
+  check.add("read-backs", s.reads);
+  check.add("last read-back", s.read_message);
+  check.add("changes applied", s.changes_applied);
+  check.add("changes refused", s.changes_refused);
+  check.add("last refusal", s.last_refusal);
+  return check;
+}
+
+}  // namespace k40t::driver
