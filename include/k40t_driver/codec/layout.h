@@ -26,14 +26,18 @@
 //      `Status extra_checks() const`, which validate() runs after the layout's checks.
 //   4. Reserved bytes `wire::reserved(n)`; a fixed command byte `wire::fixed(code, meaning)`;
 //      a two-code switch `wire::flag(on, off)`; bit fields: a small struct with its own layout()
-//      of `wire::bits(shift, width)`, carried as `wire::packed8`; a struct carried inline in
-//      another message `wire::nested` (it lists the shared fields in a static body(s, v)).
+//      of `wire::bits(shift, width)`, carried as `wire::packed8` (or, when the bits are members
+//      of the message itself, `wire::bit_group(wire::in_bits(...), ...)`); a value with an "off"
+//      code `wire::or_off(...)`; a struct carried inline in another message `wire::nested` (it
+//      lists the shared fields in a static body(s, v)).
 //   5. Optional trailing bytes: kMinSize < kSize. On decode, fields that start at or after
-//      kMinSize are value-initialised when the payload ends before them (a refusal ACK that is
-//      the code alone, a reserved byte left off).
+//      kMinSize keep their defaults when the payload ends before them (a refusal ACK that is
+//      the code alone, a reserved byte left off). A rule about the decoded size that depends on a
+//      field (settings that must follow an OK code) goes in `Status finish_decode(size_t size)`.
 //   6. Delete the .cpp bodies; keep the catalogue registration. Golden byte tests stay as they are.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -66,6 +70,11 @@ class LayoutWriter {
   void operator()(const char*, T v, wire::Real<Float> r) const {
     detail::write_real<Float>(w_, static_cast<Float>(static_cast<double>(v) * r.scale));
   }
+  template <class B, class D, class Int>
+  void operator()(const char*, const wire::Switchable<B, D>& p, wire::OrOff<Int> t) const {
+    const Int raw = *p.on ? protocol::to_wire<Int>(*p.value, t.value.scale) : t.off;
+    detail::write_int<Int>(w_, raw, detail::order_of(order_, t.value.order));
+  }
   void operator()(const char*, const std::string& v, wire::Text t) const { w_.text(v, t.width); }
   void operator()(const char*, const wire::Gap&, wire::Reserved r) const { w_.zeros(r.size); }
   void operator()(const char*, const wire::Gap&, wire::Fixed f) const { w_.u8(f.value); }
@@ -90,9 +99,10 @@ class LayoutWriter {
   ByteOrder order_;
 };
 
-// Reads a layout. Fields starting at or after `optional_from` are value-initialised when the
-// payload has ended before them. Decode errors (a fixed byte or a flag with another code) are
-// kept in `failure` (the first one); without it they are ignored.
+// Reads a layout. Fields starting at or after `optional_from` keep their default values when the
+// payload has ended before them, and reserved bytes from there on may be left off. Decode errors (a
+// fixed byte or a flag with another code) are kept in `failure` (the first one); without it they
+// are ignored.
 class LayoutReader {
  public:
   explicit LayoutReader(ByteReader& r, ByteOrder order = ByteOrder::kLittle,
@@ -102,7 +112,8 @@ class LayoutReader {
   template <class T, class Int>
   void operator()(const char*, T& v, wire::Raw<Int> t) const {
     if (absent(v)) return;
-    v = detail::from_raw<T>(detail::read_int<Int>(r_, detail::order_of(order_, t.order)), t.add);
+    const Int raw = detail::read_int<Int>(r_, detail::order_of(order_, t.order));
+    v = detail::from_raw<T>(static_cast<Int>(raw & t.used_bits), t.add);
   }
   template <class Int>
   void operator()(const char*, double& v, wire::Scaled<Int> s) const {
@@ -114,13 +125,22 @@ class LayoutReader {
     if (absent(v)) return;
     v = static_cast<T>(static_cast<double>(detail::read_real<Float>(r_)) / r.scale);
   }
+  template <class B, class D, class Int>
+  void operator()(const char*, const wire::Switchable<B, D>& p, wire::OrOff<Int> t) const {
+    if (absent()) return;
+    const Int raw = detail::read_int<Int>(r_, detail::order_of(order_, t.value.order));
+    *p.on = raw != t.off;
+    *p.value = *p.on ? static_cast<double>(raw) / t.value.scale : 0.0;
+  }
   void operator()(const char*, std::string& v, wire::Text t) const {
     if (absent(v)) return;
     v = r_.text(t.width);
   }
   void operator()(const char*, const wire::Gap&, wire::Reserved r) const {
-    if (r_.remaining() == 0 && r_.position() >= optional_from_) return;
-    r_.skip(r.size);
+    // Reserved bytes past kMinSize may be left off, wholly or in part.
+    const size_t required =
+        r_.position() < optional_from_ ? std::min(r.size, optional_from_ - r_.position()) : 0;
+    r_.skip(std::max(required, std::min(r.size, r_.remaining())));
   }
   void operator()(const char*, const wire::Gap&, wire::Fixed f) const {
     const size_t index = r_.position() + 1;  // the documents count bytes from 1
@@ -139,10 +159,11 @@ class LayoutReader {
     if (absent(v)) return;
     for (uint8_t& b : v) b = r_.u8();
   }
+  // Sub&&: a bit_group() of the message's own members arrives as a temporary.
   template <class Sub, class Int>
-  void operator()(const char*, Sub& v, wire::Packed<Int>) const {
-    if (absent(v)) return;
-    Sub::layout(v, detail::BitUnpacker<Int>{detail::read_int<Int>(r_, order_)});
+  void operator()(const char*, Sub&& v, wire::Packed<Int>) const {
+    if (absent()) return;
+    std::decay_t<Sub>::layout(v, detail::BitUnpacker<Int>{detail::read_int<Int>(r_, order_)});
   }
   template <class Sub>
   void operator()(const char*, Sub& v, wire::Nested) const {
@@ -151,11 +172,10 @@ class LayoutReader {
 
  private:
   template <class T>
-  bool absent(T& v) const {
-    if (r_.remaining() != 0 || r_.position() < optional_from_) return false;
-    v = T{};
-    return true;
+  bool absent(T&) const {
+    return absent();
   }
+  bool absent() const { return r_.remaining() == 0 && r_.position() >= optional_from_; }
   void fail(std::string message) const {
     if (failure_ != nullptr && failure_->is_ok()) *failure_ = Status::fail(std::move(message));
   }
@@ -180,6 +200,10 @@ class LayoutSizer {
   template <class T, class Float>
   void operator()(const char*, const T&, wire::Real<Float>) const {
     size_ += sizeof(Float);
+  }
+  template <class B, class D, class Int>
+  void operator()(const char*, const wire::Switchable<B, D>&, wire::OrOff<Int>) const {
+    size_ += sizeof(Int);
   }
   void operator()(const char*, const std::string&, wire::Text t) const { size_ += t.width; }
   void operator()(const char*, const wire::Gap&, wire::Reserved r) const { size_ += r.size; }
@@ -231,6 +255,11 @@ class LayoutValidator {
     const double limit = static_cast<double>(std::numeric_limits<Float>::max()) / r.scale;
     keep(protocol::check_range(name, static_cast<double>(v), -limit, limit));
   }
+  // The value is only meaningful, and only checked, while switched on.
+  template <class B, class D, class Int>
+  void operator()(const char*, const wire::Switchable<B, D>& p, wire::OrOff<Int> t) const {
+    if (*p.on) (*this)(p.value_name, static_cast<double>(*p.value), t.value);
+  }
   // A terminated width includes the NUL: a full-width name would not be terminated, which the
   // PSDK document's "with \0 as the ending character" rules out.
   void operator()(const char* name, const std::string& v, wire::Text t) const {
@@ -281,6 +310,15 @@ class FieldLister {
   template <class Sub, class Int>
   void operator()(const char*, Sub& v, wire::Packed<Int>) const {
     std::decay_t<Sub>::layout(v, *this);
+  }
+  template <class... T, class Int>
+  void operator()(const char*, const wire::BitGroup<T...>& group, wire::Packed<Int>) const {
+    wire::BitGroup<T...>::layout(group, *this);
+  }
+  template <class B, class D, class Int>
+  void operator()(const char*, const wire::Switchable<B, D>& p, wire::OrOff<Int>) const {
+    v_(p.on_name, *p.on);
+    v_(p.value_name, *p.value);
   }
   template <class Sub>
   void operator()(const char*, Sub& v, wire::Nested) const {

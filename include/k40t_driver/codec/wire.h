@@ -12,10 +12,14 @@
 //   v("command", wire::gap, wire::command(0x01))                        // the same, "command code"
 //   v("enable", s.enable, wire::on_off)                                 // 0 off / 1 on
 //   v("ae_lock_on", s.ae_lock_on, wire::flag(0x01, 0x02))               // on / off codes
+//   v("high_alarm", wire::switchable("high_alarm_on", s.high_alarm_on, "high_alarm_degC",
+//                                    s.high_alarm_degC),
+//     wire::or_off(wire::scaled<int16_t>(10).range(-100, 500, "degC"), int16_t{-2732}))
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <tuple>
 
 #include "k40t_driver/protocol/byte_io.h"
 
@@ -47,6 +51,7 @@ struct Raw {
   int64_t add = 0;  // field = wire + add (channel numbers 1..16 carried as 0..15)
   Order order = Order::kMessage;
   bool any_code = false;  // an enum whose undefined codes are still sent (response codes)
+  uint64_t used_bits = ~uint64_t{0};  // the bits that carry the value; the rest are reserved
   constexpr Raw range(double lo, double hi, const char* unit = "") const {
     Raw r = *this;
     r.limits = {true, lo, hi, unit};
@@ -60,6 +65,12 @@ struct Raw {
   constexpr Raw little() const {
     Raw r = *this;
     r.order = Order::kLittle;
+    return r;
+  }
+  // Only `bits` carry the value: the others are ignored on receive.
+  constexpr Raw mask(uint64_t bits) const {
+    Raw r = *this;
+    r.used_bits = bits;
     return r;
   }
 };
@@ -135,6 +146,39 @@ struct Bits {
   }
 };
 
+// Scaled, or the wire value `off` for "switched off" (the thermal alarm limits: -2732 = off). The
+// field is a Switchable: the message's bool and double, listed as two fields.
+template <class Int>
+struct OrOff {
+  Scaled<Int> value;
+  Int off;
+};
+template <class B, class D>
+struct Switchable {
+  const char* on_name;
+  B* on;
+  const char* value_name;
+  D* value;
+};
+
+// Bit fields of one integer whose fields are members of the message itself (not of a sub-struct):
+//   v("config", wire::bit_group(wire::in_bits("measurement_on", s.measurement_on,
+//                                             wire::inverted_bit(0)), ...), wire::packed8)
+template <class T>
+struct BitRef {
+  const char* name;
+  T* value;
+  Bits bits;
+};
+template <class... T>
+struct BitGroup {
+  std::tuple<BitRef<T>...> refs;
+  template <class G, class V>
+  static void layout(G& group, V&& v) {
+    std::apply([&v](const auto&... r) { (v(r.name, *r.value, r.bits), ...); }, group.refs);
+  }
+};
+
 inline constexpr Raw<uint8_t> u8{};
 // The pod's 2-byte response code: an enum, but a code the document does not define is reported
 // and may be sent (the simulator's fault injection), so it is not validated.
@@ -177,6 +221,23 @@ constexpr Bits inverted_bit(unsigned n) {
 }
 constexpr Bits bits(unsigned shift, unsigned width) {
   return {shift, width};
+}
+template <class Int>
+constexpr OrOff<Int> or_off(Scaled<Int> value, Int off) {
+  return {value, off};
+}
+template <class B, class D>
+constexpr Switchable<B, D> switchable(const char* on_name, B& on, const char* value_name,
+                                      D& value) {
+  return {on_name, &on, value_name, &value};
+}
+template <class T>
+constexpr BitRef<T> in_bits(const char* name, T& value, Bits bits) {
+  return {name, &value, bits};
+}
+template <class... T>
+constexpr BitGroup<T...> bit_group(BitRef<T>... refs) {
+  return {{refs...}};
 }
 }  // namespace wire
 

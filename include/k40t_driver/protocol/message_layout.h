@@ -15,7 +15,8 @@
 // encode(), decode() and fields(). Byte order: the struct's
 // `static constexpr ByteOrder CodecOptions::* kByteOrder` if it has one (ACKs:
 // &CodecOptions::ack_byte_order, docs/protocol/decisions.md#a2), else little-endian (section 2.1).
-// Fields from kMinSize on are optional on decode (value-initialised when the payload ends).
+// Fields from kMinSize on are optional on decode (they keep their defaults when the payload ends);
+// `Status finish_decode(size_t payload_size)`, if the struct has one, runs after a decode.
 #pragma once
 
 #include <type_traits>
@@ -38,6 +39,12 @@ template <class T, class = void>
 struct HasExtraChecks : std::false_type {};
 template <class T>
 struct HasExtraChecks<T, std::void_t<decltype(std::declval<const T&>().extra_checks())>>
+    : std::true_type {};
+
+template <class T, class = void>
+struct HasFinishDecode : std::false_type {};
+template <class T>
+struct HasFinishDecode<T, std::void_t<decltype(std::declval<T&>().finish_decode(size_t{}))>>
     : std::true_type {};
 
 template <class T>
@@ -66,7 +73,11 @@ void encode(const T& m, ByteWriter& w, const CodecOptions& o) {
 template <class T>
 Status decode(T& m, ByteReader& r, const CodecOptions& o) {
   Status failure = Status::ok();
+  [[maybe_unused]] const size_t size = r.remaining();
   T::layout(m, codec::LayoutReader(r, byte_order_of<T>(o), T::kMinSize, &failure));
+  if constexpr (HasFinishDecode<T>::value) {
+    if (failure.is_ok()) return m.finish_decode(size);
+  }
   return failure;
 }
 }  // namespace layout_detail

@@ -13,4 +13,13 @@ Status SbusRangeRequest::extra_checks() const {
   return Status::ok();
 }
 
+// ---- 0x010502 -------------------------------------------------------------------------------
+Status SbusConfigAck::finish_decode(size_t payload_size) {
+  if (payload_size <= kMinSize) {
+    range.max_value = range.min_value = 0;
+    channels = SbusChannelsRequest{0, 0, 0, 0, 0, 0, 0};
+  }
+  return Status::ok();
+}
+
 }  // namespace k40t::protocol

@@ -30,8 +30,9 @@ inline void unpack_switch_and_level(uint8_t byte, bool* on, uint8_t* level) {
 }
 
 // The "read all settings" ACKs carry either the response code alone (a refusal) or the code and
-// `settings_size` bytes. Sets *has_settings, or fails naming the byte counts.
-Status settings_follow(const ByteReader& r, ResponseCode code, size_t settings_size,
+// `settings_size` bytes; `after_code` bytes came after the code. Sets *has_settings, or fails
+// naming the byte counts.
+Status settings_follow(size_t after_code, ResponseCode code, size_t settings_size,
                        bool* has_settings);
 
 // An enum field as its raw byte.

@@ -259,7 +259,7 @@ void VisibleSettingsAck::encode(ByteWriter& w, const CodecOptions& o) const {
 Status VisibleSettingsAck::decode(ByteReader& r, const CodecOptions& o) {
   code = static_cast<ResponseCode>(r.u16(o.ack_byte_order));
   bool has_settings = false;
-  const Status follow = detail::settings_follow(r, code, kSettingsSize, &has_settings);
+  const Status follow = detail::settings_follow(r.remaining(), code, kSettingsSize, &has_settings);
   if (!follow || !has_settings) return follow;
   photo_resolution = static_cast<PhotoResolution>(r.u8());
   video_resolution = static_cast<VideoResolution>(r.u8());

@@ -98,7 +98,7 @@ struct SbusConfigAck {
   static constexpr const char* kSection = "3.2.6.3";
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 14;
-  static constexpr size_t kMinSize = 2;  // a refusal may carry the code only: all else reads 0
+  static constexpr size_t kMinSize = 2;  // a refusal may carry the code only: finish_decode()
   static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
 
   ResponseCode code = ResponseCode::kOk;
@@ -114,6 +114,8 @@ struct SbusConfigAck {
     v("reserved", wire::gap, wire::reserved(1));
   }
   Status extra_checks() const { return range.extra_checks(); }
+  // A refusal without the configuration reports none (all zeros), not the defaults.
+  Status finish_decode(size_t payload_size);
 };
 
 // 0x000502, section 3.2.6.3: byte 1 = 0x01 "get the SBUS configuration".
