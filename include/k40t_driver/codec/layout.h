@@ -46,6 +46,7 @@
 #include <type_traits>
 
 #include "k40t_driver/codec/layout_detail.h"
+#include "k40t_driver/codec/unchecked_bytes.h"
 #include "k40t_driver/protocol/field_visit.h"
 #include "k40t_driver/protocol/message.h"
 
@@ -53,18 +54,21 @@ namespace k40t::codec {
 
 using protocol::FieldSink;
 
-class LayoutWriter {
+// The message's byte order is a template argument: known at compile time, each multi-byte field
+// is written without a run-time test per byte (message_layout.h picks the instance once).
+// Out: ByteWriter, or UncheckedWriter once the whole size has been claimed.
+template <ByteOrder kOrder, class Out = ByteWriter>
+class BasicLayoutWriter {
  public:
-  explicit LayoutWriter(ByteWriter& w, ByteOrder order = ByteOrder::kLittle)
-      : w_(w), order_(order) {}
+  explicit BasicLayoutWriter(Out& w) : w_(w) {}
   template <class T, class Int>
   void operator()(const char*, const T& v, wire::Raw<Int> t) const {
-    detail::write_int<Int>(w_, detail::to_raw<Int>(v, t.add), detail::order_of(order_, t.order));
+    detail::write_int<Int>(w_, detail::to_raw<Int>(v, t.add), detail::order_of(kOrder, t.order));
   }
   template <class Int>
   void operator()(const char*, double v, wire::Scaled<Int> s) const {
     detail::write_int<Int>(w_, protocol::to_wire<Int>(v, s.scale),
-                           detail::order_of(order_, s.order));
+                           detail::order_of(kOrder, s.order));
   }
   template <class T, class Float>
   void operator()(const char*, T v, wire::Real<Float> r) const {
@@ -73,7 +77,7 @@ class LayoutWriter {
   template <class B, class D, class Int>
   void operator()(const char*, const wire::Switchable<B, D>& p, wire::OrOff<Int> t) const {
     const Int raw = *p.on ? protocol::to_wire<Int>(*p.value, t.value.scale) : t.off;
-    detail::write_int<Int>(w_, raw, detail::order_of(order_, t.value.order));
+    detail::write_int<Int>(w_, raw, detail::order_of(kOrder, t.value.order));
   }
   void operator()(const char*, const std::string& v, wire::Text t) const { w_.text(v, t.width); }
   void operator()(const char*, const wire::Gap&, wire::Reserved r) const { w_.zeros(r.size); }
@@ -87,7 +91,7 @@ class LayoutWriter {
   void operator()(const char*, const Sub& v, wire::Packed<Int>) const {
     Int word = 0;
     Sub::layout(v, detail::BitPacker<Int>{word});
-    detail::write_int<Int>(w_, word, order_);
+    detail::write_int<Int>(w_, word, kOrder);
   }
   template <class Sub>
   void operator()(const char*, const Sub& v, wire::Nested) const {
@@ -95,30 +99,30 @@ class LayoutWriter {
   }
 
  private:
-  ByteWriter& w_;
-  ByteOrder order_;
+  Out& w_;
 };
+using LayoutWriter = BasicLayoutWriter<ByteOrder::kLittle>;
 
 // Reads a layout. Fields starting at or after `optional_from` keep their default values when the
 // payload has ended before them, and reserved bytes from there on may be left off. Decode errors (a
 // fixed byte or a flag with another code) are kept in `failure` (the first one); without it they
 // are ignored.
-class LayoutReader {
+template <ByteOrder kOrder, class In = ByteReader>
+class BasicLayoutReader {
  public:
-  explicit LayoutReader(ByteReader& r, ByteOrder order = ByteOrder::kLittle,
-                        size_t optional_from = std::numeric_limits<size_t>::max(),
-                        Status* failure = nullptr)
-      : r_(r), order_(order), optional_from_(optional_from), failure_(failure) {}
+  explicit BasicLayoutReader(In& r, size_t optional_from = std::numeric_limits<size_t>::max(),
+                             Status* failure = nullptr)
+      : r_(r), optional_from_(optional_from), failure_(failure) {}
   template <class T, class Int>
   void operator()(const char*, T& v, wire::Raw<Int> t) const {
     if (absent(v)) return;
-    const Int raw = detail::read_int<Int>(r_, detail::order_of(order_, t.order));
+    const Int raw = detail::read_int<Int>(r_, detail::order_of(kOrder, t.order));
     v = detail::from_raw<T>(static_cast<Int>(raw & t.used_bits), t.add);
   }
   template <class Int>
   void operator()(const char*, double& v, wire::Scaled<Int> s) const {
     if (absent(v)) return;
-    v = static_cast<double>(detail::read_int<Int>(r_, detail::order_of(order_, s.order))) / s.scale;
+    v = static_cast<double>(detail::read_int<Int>(r_, detail::order_of(kOrder, s.order))) / s.scale;
   }
   template <class T, class Float>
   void operator()(const char*, T& v, wire::Real<Float> r) const {
@@ -128,7 +132,7 @@ class LayoutReader {
   template <class B, class D, class Int>
   void operator()(const char*, const wire::Switchable<B, D>& p, wire::OrOff<Int> t) const {
     if (absent()) return;
-    const Int raw = detail::read_int<Int>(r_, detail::order_of(order_, t.value.order));
+    const Int raw = detail::read_int<Int>(r_, detail::order_of(kOrder, t.value.order));
     *p.on = raw != t.off;
     *p.value = *p.on ? static_cast<double>(raw) / t.value.scale : 0.0;
   }
@@ -163,7 +167,7 @@ class LayoutReader {
   template <class Sub, class Int>
   void operator()(const char*, Sub&& v, wire::Packed<Int>) const {
     if (absent()) return;
-    std::decay_t<Sub>::layout(v, detail::BitUnpacker<Int>{detail::read_int<Int>(r_, order_)});
+    std::decay_t<Sub>::layout(v, detail::BitUnpacker<Int>{detail::read_int<Int>(r_, kOrder)});
   }
   template <class Sub>
   void operator()(const char*, Sub& v, wire::Nested) const {
@@ -175,15 +179,19 @@ class LayoutReader {
   bool absent(T&) const {
     return absent();
   }
-  bool absent() const { return r_.remaining() == 0 && r_.position() >= optional_from_; }
+  bool absent() const {
+    // The unchecked cursor is only used when the whole layout is there.
+    if constexpr (std::is_same_v<In, UncheckedReader>) return false;
+    return r_.remaining() == 0 && r_.position() >= optional_from_;
+  }
   void fail(std::string message) const {
     if (failure_ != nullptr && failure_->is_ok()) *failure_ = Status::fail(std::move(message));
   }
-  ByteReader& r_;
-  ByteOrder order_;
+  In& r_;
   size_t optional_from_;
   Status* failure_;
 };
+using LayoutReader = BasicLayoutReader<ByteOrder::kLittle>;
 
 // Counts the bytes a layout occupies (layouts are fixed-size by construction).
 class LayoutSizer {
@@ -282,9 +290,12 @@ class LayoutValidator {
   void operator()(const char* name, const T& v, wire::Bits b) const {
     if constexpr (std::is_enum_v<T>) keep(protocol::check_enum(name, v));
     const uint64_t raw = detail::to_raw<uint64_t>(v);
+    const auto most = static_cast<int64_t>(detail::bit_mask<uint64_t>(b.width));
     if (b.limits.set) keep(detail::check_int(name, static_cast<int64_t>(raw), b.limits));
-    keep(protocol::check_range(name, static_cast<int64_t>(raw), 0,
-                               static_cast<int64_t>(detail::bit_mask<uint64_t>(b.width))));
+    // A bool, or a range inside the width, cannot overflow it: no second check.
+    if (std::is_same_v<T, bool> || (b.limits.set && b.limits.lo >= 0 && b.limits.hi <= most))
+      return;
+    keep(protocol::check_range(name, static_cast<int64_t>(raw), 0, most));
   }
 
  private:

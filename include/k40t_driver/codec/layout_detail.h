@@ -17,8 +17,9 @@ constexpr ByteOrder order_of(ByteOrder message, wire::Order field) {
                                          : ByteOrder::kBig;
 }
 
-template <class Int>
-void write_int(ByteWriter& w, Int v, ByteOrder order) {
+// Out/In: ByteWriter/ByteReader, or the unchecked cursors of unchecked_bytes.h.
+template <class Int, class Out>
+void write_int(Out& w, Int v, ByteOrder order) {
   if constexpr (sizeof(Int) == 1)
     w.u8(static_cast<uint8_t>(v));
   else if constexpr (sizeof(Int) == 2)
@@ -29,8 +30,8 @@ void write_int(ByteWriter& w, Int v, ByteOrder order) {
     w.u64(static_cast<uint64_t>(v), order);
 }
 
-template <class Int>
-Int read_int(ByteReader& r, ByteOrder order) {
+template <class Int, class In>
+Int read_int(In& r, ByteOrder order) {
   if constexpr (sizeof(Int) == 1)
     return static_cast<Int>(r.u8());
   else if constexpr (sizeof(Int) == 2)
@@ -61,8 +62,8 @@ T from_raw(Int raw, int64_t add = 0) {
     return static_cast<T>(static_cast<int64_t>(raw) + add);
 }
 
-template <class Float>
-void write_real(ByteWriter& w, Float v) {
+template <class Float, class Out>
+void write_real(Out& w, Float v) {
   if constexpr (sizeof(Float) == 4) {
     uint32_t u = 0;
     std::memcpy(&u, &v, sizeof(u));
@@ -74,8 +75,8 @@ void write_real(ByteWriter& w, Float v) {
   }
 }
 
-template <class Float>
-Float read_real(ByteReader& r) {
+template <class Float, class In>
+Float read_real(In& r) {
   Float v{};
   if constexpr (sizeof(Float) == 4) {
     const uint32_t u = r.u32();

@@ -47,16 +47,21 @@ template <class T>
 struct HasFinishDecode<T, std::void_t<decltype(std::declval<T&>().finish_decode(size_t{}))>>
     : std::true_type {};
 
-template <class T>
-ByteOrder byte_order_of(const CodecOptions& o) {
-  if constexpr (HasByteOrder<T>::value)
-    return o.*T::kByteOrder;
-  else
-    return ByteOrder::kLittle;
+// Calls visit(std::integral_constant<ByteOrder, order>) with the struct's byte order: little-endian
+// unless it has a kByteOrder (then the option it names), chosen once per message, not per byte.
+template <class T, class Visit>
+void with_byte_order(const CodecOptions& o, Visit&& visit) {
+  if constexpr (HasByteOrder<T>::value) {
+    if (o.*T::kByteOrder == ByteOrder::kBig) {
+      visit(std::integral_constant<ByteOrder, ByteOrder::kBig>{});
+      return;
+    }
+  }
+  visit(std::integral_constant<ByteOrder, ByteOrder::kLittle>{});
 }
 
 template <class T>
-Status validate(const T& m) {
+[[gnu::flatten]] Status validate(const T& m) {
   Status result = Status::ok();
   T::layout(m, codec::LayoutValidator(result));
   if constexpr (HasExtraChecks<T>::value) {
@@ -65,16 +70,37 @@ Status validate(const T& m) {
   return result;
 }
 
+// Both claim the layout's kSize bytes once and then write or read them without a check per byte
+// (codec/unchecked_bytes.h); a shorter payload (optional trailing fields) is read checked. That
+// kSize is what the layout occupies is a unit test over every message (test_message_layouts.cpp).
+// flatten: the layout and its visitor are inlined here, so the cursor lives in a register instead
+// of being reloaded from memory after every byte stored (a byte store may alias anything).
 template <class T>
-void encode(const T& m, ByteWriter& w, const CodecOptions& o) {
-  T::layout(m, codec::LayoutWriter(w, byte_order_of<T>(o)));
+[[gnu::flatten]] void encode(const T& m, ByteWriter& w, const CodecOptions& o) {
+  uint8_t* out = w.claim(T::kSize);
+  if (out == nullptr) return;  // w has failed: encode_payload reports the overflow
+  codec::UncheckedWriter cursor(out);
+  with_byte_order<T>(o, [&](auto order) {
+    T::layout(m, codec::BasicLayoutWriter<decltype(order)::value, codec::UncheckedWriter>(cursor));
+  });
 }
 
 template <class T>
-Status decode(T& m, ByteReader& r, const CodecOptions& o) {
+[[gnu::flatten]] Status decode(T& m, ByteReader& r, const CodecOptions& o) {
   Status failure = Status::ok();
-  [[maybe_unused]] const size_t size = r.remaining();
-  T::layout(m, codec::LayoutReader(r, byte_order_of<T>(o), T::kMinSize, &failure));
+  const size_t size = r.remaining();
+  constexpr size_t full = T::kSize;
+  with_byte_order<T>(o, [&](auto order) {
+    constexpr ByteOrder kOrder = decltype(order)::value;
+    if (size >= full) {
+      const size_t start = r.position();
+      codec::UncheckedReader cursor(r.claim(full), full, start);
+      T::layout(m, codec::BasicLayoutReader<kOrder, codec::UncheckedReader>(cursor, T::kMinSize,
+                                                                            &failure));
+    } else {
+      T::layout(m, codec::BasicLayoutReader<kOrder>(r, T::kMinSize, &failure));
+    }
+  });
   if constexpr (HasFinishDecode<T>::value) {
     if (failure.is_ok()) return m.finish_decode(size);
   }
