@@ -1,17 +1,15 @@
 # Offline decoding of recorded flights (`k40t bag`, docs in README): the library k40t_ros_bag
-# (src/ros/bag/: the bag sink of the decoded topics, the decoder, the exports) and the program
-# k40t_bag that `k40t bag` runs. It reuses the k40t tool's argument parsing and frame JSON
-# (tools/k40t), and reads the driver's YAML parameter file with yaml-cpp (no parameter server).
+# (src/ros/bag/: the bag sink of the decoded topics, the decoder) and the program k40t_bag that
+# `k40t bag` runs. The exports and the k40t tool's argument parsing and frame JSON it reuses are
+# the ROS-free k40t_frame_export (cmake/tools.cmake). It reads the driver's YAML parameter file
+# with yaml-cpp (no parameter server).
 find_package(rosbag_storage REQUIRED)
 find_package(yaml-cpp REQUIRED)
 file(GLOB K40T_ROS_BAG_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/bag/*.cpp)
-add_library(k40t_ros_bag SHARED ${K40T_ROS_BAG_SOURCES}
-            ${PROJECT_SOURCE_DIR}/tools/k40t/args.cpp ${PROJECT_SOURCE_DIR}/tools/k40t/frame_text.cpp
-            ${PROJECT_SOURCE_DIR}/tools/k40t/json_sink.cpp ${PROJECT_SOURCE_DIR}/tools/k40t/input.cpp)
-target_include_directories(k40t_ros_bag PUBLIC ${PROJECT_SOURCE_DIR}/tools/k40t)
+add_library(k40t_ros_bag SHARED ${K40T_ROS_BAG_SOURCES})
 target_include_directories(k40t_ros_bag SYSTEM PUBLIC ${rosbag_storage_INCLUDE_DIRS}
                                                       ${YAML_CPP_INCLUDE_DIR})
-target_link_libraries(k40t_ros_bag PUBLIC k40t_ros ${rosbag_storage_LIBRARIES} ${YAML_CPP_LIBRARIES})
+target_link_libraries(k40t_ros_bag PUBLIC k40t_pod_nodelet k40t_frame_export ${rosbag_storage_LIBRARIES} ${YAML_CPP_LIBRARIES})
 
 add_executable(k40t_bag ${PROJECT_SOURCE_DIR}/tools/k40t_bag/main.cpp
                         ${PROJECT_SOURCE_DIR}/tools/k40t_bag/progress_bar.cpp)

@@ -21,7 +21,7 @@ add_custom_command(OUTPUT ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_INCLUDE_DESTIN
 
 catkin_package(
   INCLUDE_DIRS include
-  LIBRARIES k40t_ros k40t_ros_video k40t_ros_skyport
+  LIBRARIES k40t_ros_common k40t_pod_nodelet k40t_video_nodelet k40t_skyport_nodelet
   CATKIN_DEPENDS roscpp nodelet pluginlib std_msgs std_srvs sensor_msgs geometry_msgs nav_msgs
                  diagnostic_msgs diagnostic_updater dynamic_reconfigure tf2 tf2_ros actionlib actionlib_msgs
                  message_runtime)

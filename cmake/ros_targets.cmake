@@ -1,34 +1,53 @@
-# The ROS layer, one shared library per nodelet so that each loads only what it uses:
-#   k40t_ros          src/ros/*.cpp: the pod driver (PodNodelet, k40t_node) and the glue the
-#                     others share (parameters, conversions); no GStreamer or OpenSSL, and of
-#                     OpenCV only calib3d (k40t_camera: locate_pixel's lens distortion);
-#   k40t_ros_video    src/ros/video/: VideoNodelet, k40t_video_node (OpenCV, GStreamer,
-#                     image_transport, camera_info_manager; cmake/video_ros.cmake);
-#   k40t_ros_skyport  src/ros/skyport/: SkyportNodelet, k40t_skyport_node, the ROS glue of the
-#                     ROS-free bridge k40t_skyport_bridge (src/skyport/; the PSDK layer, OpenSSL);
-#   k40t_rviz_panel   src/rviz/: the rviz panel PodPanel (Qt; cmake/rviz_panel.cmake).
-# The standalone nodes, k40t_manager and the rostest programs under test/ros/ link them.
-file(GLOB K40T_ROS_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/*.cpp)
-file(GLOB K40T_ROS_SKYPORT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/skyport/*.cpp)
+# The ROS layer: one shared library per nodelet, so that each loads only what it uses, over a small
+# common one:
+#   k40t_ros_common       src/ros/param_reader.cpp, stop_signals.cpp: the glue all three share
+#                         (checked parameters, SIGTERM as SIGINT); roscpp only;
+#   k40t_pod_nodelet      the rest of src/ros/*.cpp: PodNodelet, k40t_node, k40t_manager (parameters,
+#                         topics, services, actions, reconfigure, diagnostics over driver/'s
+#                         PodDriver); no GStreamer or OpenSSL, and of OpenCV only calib3d
+#                         (k40t_camera: locate_pixel's lens distortion);
+#   k40t_video_nodelet    src/ros/video/: VideoNodelet, k40t_video_node (OpenCV, GStreamer,
+#                         image_transport, camera_info_manager; no OpenSSL; cmake/video_ros.cmake);
+#   k40t_skyport_nodelet  src/ros/skyport/: SkyportNodelet, k40t_skyport_node, the ROS glue of the
+#                         ROS-free bridge k40t_skyport_bridge (src/skyport/; the PSDK layer, OpenSSL);
+#                         no OpenCV or GStreamer: it talks to the pod only through PodNodelet's
+#                         ROS interface;
+#   k40t_rviz_panel       src/rviz/: the rviz panel PodPanel (Qt; cmake/rviz_panel.cmake).
+# test/launch/check_nodelet_libraries.py checks what each one loads. The standalone nodes and the
+# rostest programs under test/ros/ link them.
+set(K40T_ROS_COMMON_SOURCES ${PROJECT_SOURCE_DIR}/src/ros/param_reader.cpp
+                            ${PROJECT_SOURCE_DIR}/src/ros/stop_signals.cpp)
+file(GLOB K40T_POD_NODELET_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/*.cpp)
+list(REMOVE_ITEM K40T_POD_NODELET_SOURCES ${K40T_ROS_COMMON_SOURCES})
+file(GLOB K40T_SKYPORT_NODELET_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/skyport/*.cpp)
 
-add_library(k40t_ros SHARED ${K40T_ROS_SOURCES})
-target_include_directories(k40t_ros PUBLIC ${PROJECT_SOURCE_DIR}/include)
-target_include_directories(k40t_ros SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
-target_link_libraries(k40t_ros PUBLIC k40t_driver_core k40t_core k40t_geo k40t_camera ${catkin_LIBRARIES})
-# Generated message/service headers and the dynamic_reconfigure K40tConfig.h.
-add_dependencies(k40t_ros ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg)
+add_library(k40t_ros_common SHARED ${K40T_ROS_COMMON_SOURCES})
+target_include_directories(k40t_ros_common PUBLIC ${PROJECT_SOURCE_DIR}/include)
+target_include_directories(k40t_ros_common SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
+target_link_libraries(k40t_ros_common PUBLIC ${catkin_LIBRARIES})
+# Generated message/service headers and the dynamic_reconfigure K40tConfig.h, for all that link it.
+add_dependencies(k40t_ros_common ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg)
 
-add_library(k40t_ros_skyport SHARED ${K40T_ROS_SKYPORT_SOURCES})
-target_link_libraries(k40t_ros_skyport PUBLIC k40t_ros k40t_skyport_bridge)
-include(cmake/video_ros.cmake)  # k40t_ros_video
+add_library(k40t_pod_nodelet SHARED ${K40T_POD_NODELET_SOURCES})
+target_link_libraries(k40t_pod_nodelet PUBLIC k40t_ros_common k40t_driver_core k40t_core k40t_geo
+                                              k40t_camera)
+
+add_library(k40t_skyport_nodelet SHARED ${K40T_SKYPORT_NODELET_SOURCES})
+target_link_libraries(k40t_skyport_nodelet PUBLIC k40t_ros_common k40t_skyport_bridge)
+include(cmake/video_ros.cmake)  # k40t_video_nodelet
 include(cmake/bag.cmake)        # k40t_ros_bag, k40t_bag (`k40t bag`)
 include(cmake/rviz_panel.cmake)  # k40t_rviz_panel (Qt)
 
+# Every node catches SIGINT/SIGTERM from the start of its process (src/ros/early/: a static
+# library, as only an executable's .preinit_array runs before the shared libraries' initialisers).
+add_library(k40t_early_stop_signals STATIC ${PROJECT_SOURCE_DIR}/src/ros/early/early_stop_signals.cpp)
+target_include_directories(k40t_early_stop_signals PUBLIC ${PROJECT_SOURCE_DIR}/include)
+
 # One executable per src/ros/nodes/*.cpp, each a thin main() over the library it names.
-set(K40T_NODE_LIBRARY_k40t_node k40t_ros)
-set(K40T_NODE_LIBRARY_k40t_video_node k40t_ros_video)
-set(K40T_NODE_LIBRARY_k40t_skyport_node k40t_ros_skyport)
-set(K40T_NODE_LIBRARY_k40t_manager k40t_ros)
+set(K40T_NODE_LIBRARY_k40t_node k40t_pod_nodelet)
+set(K40T_NODE_LIBRARY_k40t_video_node k40t_video_nodelet)
+set(K40T_NODE_LIBRARY_k40t_skyport_node k40t_skyport_nodelet)
+set(K40T_NODE_LIBRARY_k40t_manager k40t_ros_common)
 file(GLOB K40T_ROS_NODES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/nodes/*.cpp)
 foreach(source ${K40T_ROS_NODES})
   get_filename_component(name ${source} NAME_WE)
@@ -36,11 +55,11 @@ foreach(source ${K40T_ROS_NODES})
     message(FATAL_ERROR "src/ros/nodes/${name}.cpp: say which library it links in ros_targets.cmake")
   endif()
   add_executable(${name} ${source})
-  target_link_libraries(${name} PRIVATE ${K40T_NODE_LIBRARY_${name}})
+  target_link_libraries(${name} PRIVATE ${K40T_NODE_LIBRARY_${name}} k40t_early_stop_signals)
   install(TARGETS ${name} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 endforeach()
 
-install(TARGETS k40t_ros k40t_ros_video k40t_ros_skyport
+install(TARGETS k40t_ros_common k40t_pod_nodelet k40t_video_nodelet k40t_skyport_nodelet
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 install(DIRECTORY include/k40t_driver/ DESTINATION ${CATKIN_PACKAGE_INCLUDE_DESTINATION})
@@ -60,7 +79,7 @@ if(CATKIN_ENABLE_TESTING)
   file(GLOB K40T_ROS_UNIT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/test/ros/unit/*.cpp)
   if(K40T_ROS_UNIT_SOURCES)
     add_executable(k40t_ros_unit_tests ${K40T_ROS_UNIT_SOURCES})
-    target_link_libraries(k40t_ros_unit_tests PRIVATE k40t_ros k40t_ros_skyport k40t_ros_bag GTest::gtest
+    target_link_libraries(k40t_ros_unit_tests PRIVATE k40t_pod_nodelet k40t_skyport_nodelet k40t_ros_bag GTest::gtest
                                                       GTest::gtest_main)
     # The settings table's test checks docs/ros_interface.md and cfg/ against the table.
     target_compile_definitions(k40t_ros_unit_tests PRIVATE
@@ -71,7 +90,8 @@ if(CATKIN_ENABLE_TESTING)
   foreach(source ${K40T_ROSTEST_SOURCES})
     get_filename_component(name ${source} NAME_WE)
     add_executable(${name} ${source})
-    target_link_libraries(${name} PRIVATE k40t_ros k40t_ros_video k40t_ros_skyport GTest::gtest)
+    target_link_libraries(${name} PRIVATE k40t_pod_nodelet k40t_video_nodelet k40t_skyport_nodelet
+                                  GTest::gtest)
   endforeach()
 endif()
 
@@ -80,11 +100,11 @@ endif()
 # bench/bench_nodelet_plugins.xml), and the service round-trip client.
 add_library(k40t_bench_nodelets SHARED ${PROJECT_SOURCE_DIR}/bench/ros/latency_probe.cpp
                                        ${PROJECT_SOURCE_DIR}/bench/ros/latency_probe_nodelet.cpp)
-target_link_libraries(k40t_bench_nodelets PUBLIC k40t_ros)
+target_link_libraries(k40t_bench_nodelets PUBLIC k40t_pod_nodelet)
 add_executable(k40t_latency_probe ${PROJECT_SOURCE_DIR}/bench/ros/latency_probe_node.cpp)
 target_link_libraries(k40t_latency_probe PRIVATE k40t_bench_nodelets)
 add_executable(k40t_service_rtt ${PROJECT_SOURCE_DIR}/bench/ros/service_rtt.cpp)
-target_link_libraries(k40t_service_rtt PRIVATE k40t_ros)
+target_link_libraries(k40t_service_rtt PRIVATE k40t_pod_nodelet)
 # The SKYPORT bridge's getter ACK latency while a pod call is blocked (no ROS master needed).
 add_executable(k40t_skyport_getter_latency ${PROJECT_SOURCE_DIR}/bench/ros/skyport_getter_latency.cpp)
 target_link_libraries(k40t_skyport_getter_latency PRIVATE k40t_skyport_bridge)

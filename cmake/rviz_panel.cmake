@@ -1,6 +1,6 @@
 # k40t_rviz_panel: the rviz panel k40t_driver/PodPanel (src/rviz/, listed in rviz_plugins.xml).
 # It talks to the driver only through its ROS interface (topics, services, dynamic_reconfigure),
-# so it links no pod library: Qt stays out of k40t_ros and everything below it. moc runs on the
+# so it links no pod library: Qt stays out of the nodelet libraries and everything below it. moc runs on the
 # Qt classes of src/rviz/ (AUTOMOC on this target only). catkin's result variables are restored
 # afterwards for whatever ros_targets.cmake does next.
 file(GLOB K40T_RVIZ_PANEL_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/rviz/*.cpp

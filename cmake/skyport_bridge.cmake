@@ -1,6 +1,6 @@
 # The SKYPORT bridge's ROS-free logic (src/skyport/): SkyportBridge answering the adapter's
 # commands through a PodPort, its worker queue, photo progress, gimbal frame, positioning requests
-# and the UTC push rule. The ROS build's k40t_ros_skyport (src/ros/skyport/) is only its glue.
+# and the UTC push rule. The ROS build's k40t_skyport_nodelet (src/ros/skyport/) is only its glue.
 file(GLOB K40T_SKYPORT_BRIDGE_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/skyport/*.cpp)
 if(K40T_SKYPORT_BRIDGE_SOURCES AND TARGET k40t_psdk)
   add_library(k40t_skyport_bridge STATIC ${K40T_SKYPORT_BRIDGE_SOURCES})

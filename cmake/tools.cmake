@@ -1,8 +1,23 @@
-# The k40t command-line tool (decode, monitor, send), ROS-free.
+# `k40t bag --jsonl / --csv`'s exports (tools/k40t_bag/frame_export.cpp) over the k40t tool's
+# argument parsing and frame JSON, ROS-free: unit-tested here, linked by the ROS build's
+# k40t_ros_bag (cmake/bag.cmake), which only adds the reading of bags.
+set(K40T_TOOL_SHARED_SOURCES
+    ${PROJECT_SOURCE_DIR}/tools/k40t/args.cpp ${PROJECT_SOURCE_DIR}/tools/k40t/frame_text.cpp
+    ${PROJECT_SOURCE_DIR}/tools/k40t/json_sink.cpp ${PROJECT_SOURCE_DIR}/tools/k40t/input.cpp)
+add_library(k40t_frame_export STATIC ${PROJECT_SOURCE_DIR}/tools/k40t_bag/frame_export.cpp
+                                     ${K40T_TOOL_SHARED_SOURCES})
+target_include_directories(k40t_frame_export PUBLIC ${PROJECT_SOURCE_DIR}/tools/k40t
+                                                    ${PROJECT_SOURCE_DIR}/tools/k40t_bag)
+target_link_libraries(k40t_frame_export PUBLIC k40t_core)
+set_target_properties(k40t_frame_export PROPERTIES POSITION_INDEPENDENT_CODE ON)
+
+# The k40t command-line tool (decode, monitor, send), ROS-free; its argument parsing and frame
+# JSON are compiled once, in k40t_frame_export.
 file(GLOB K40T_TOOL_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tools/k40t/*.cpp)
+list(REMOVE_ITEM K40T_TOOL_SOURCES ${K40T_TOOL_SHARED_SOURCES})
 if(K40T_TOOL_SOURCES)
   add_executable(k40t ${K40T_TOOL_SOURCES})
-  target_link_libraries(k40t PRIVATE k40t_core)
+  target_link_libraries(k40t PRIVATE k40t_frame_export)
   if(K40T_WITH_ROS)
     install(TARGETS k40t RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
   endif()

@@ -1,17 +1,17 @@
-# k40t_ros_video: the video nodelet (src/ros/video/), with the catkin packages it needs besides
+# k40t_video_nodelet: the video nodelet (src/ros/video/), with the catkin packages it needs besides
 # the driver's and the RTSP client it is built on. catkin's result variables are restored
 # afterwards for whatever ros_targets.cmake does next.
 file(GLOB K40T_ROS_VIDEO_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/video/*.cpp)
 set(K40T_SAVED_CATKIN_INCLUDE_DIRS ${catkin_INCLUDE_DIRS})
 set(K40T_SAVED_CATKIN_LIBRARIES ${catkin_LIBRARIES})
 find_package(catkin REQUIRED COMPONENTS image_transport camera_info_manager)
-add_library(k40t_ros_video SHARED ${K40T_ROS_VIDEO_SOURCES})
-target_include_directories(k40t_ros_video SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
-target_link_libraries(k40t_ros_video PUBLIC k40t_ros k40t_video ${catkin_LIBRARIES})
+add_library(k40t_video_nodelet SHARED ${K40T_ROS_VIDEO_SOURCES})
+target_include_directories(k40t_video_nodelet SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
+target_link_libraries(k40t_video_nodelet PUBLIC k40t_ros_common k40t_video ${catkin_LIBRARIES})
 set(catkin_INCLUDE_DIRS ${K40T_SAVED_CATKIN_INCLUDE_DIRS})
 set(catkin_LIBRARIES ${K40T_SAVED_CATKIN_LIBRARIES})
 
 # The video benchmark's probe nodelet (bench/video/, run by bench/video/run_video_bench.sh; listed
 # in bench/bench_nodelet_plugins.xml): it reads the simulator's frame stamps.
 add_library(k40t_video_bench SHARED ${PROJECT_SOURCE_DIR}/bench/video/video_latency_probe.cpp)
-target_link_libraries(k40t_video_bench PUBLIC k40t_ros_video k40t_sim_model)
+target_link_libraries(k40t_video_bench PUBLIC k40t_video_nodelet k40t_sim_model)

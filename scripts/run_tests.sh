@@ -6,7 +6,8 @@
 #           same check run without one package of the list must fail
 #   unit    gtest of the ROS-free core (build/core/bin/k40t_unit_tests)
 #   fuzz    each libFuzzer target for a few seconds (scripts/fuzz.sh)
-#   launch  roslaunch checks of every launch file (test/launch/check_launch_files.py)
+#   launch  roslaunch checks of every launch file (test/launch/check_launch_files.py), and what
+#           the nodelet libraries link and declare (test/launch/check_nodelet_libraries.py)
 #   stop    every nodelet unloaded and every manager and node stopped at random moments
 #           (test/stop/clean_stop.py); runs beside the other tiers
 #   ros     every rostest under test/ros/*.test against the simulated pod, K40T_ROSTEST_JOBS
@@ -95,6 +96,9 @@ if has_tier launch && [ -f "$K40T_ROOT/test/launch/check_launch_files.py" ]; the
   (source "$K40T_ROOT/scripts/ros_env.sh" && /usr/bin/python3 "$K40T_ROOT/test/launch/check_launch_files.py" \
      --junit "$results/launch/launch_files.xml") || [ -f "$results/launch/launch_files.xml" ] \
      || failed_steps+=("launch checks")
+  /usr/bin/python3 "$K40T_ROOT/test/launch/check_nodelet_libraries.py" \
+     --junit "$results/launch/nodelet_libraries.xml" || [ -f "$results/launch/nodelet_libraries.xml" ] \
+     || failed_steps+=("nodelet library checks")
   tier_done "launch"
 fi
 

@@ -29,11 +29,6 @@ int64_t unix_time_ms_now() {
 
 }  // namespace
 
-std::string device_url_with_baud(const std::string& url, int baud) {
-  if (url.rfind("serial://", 0) != 0 || url.find("baud=") != std::string::npos) return url;
-  return url + (url.find('?') == std::string::npos ? "?" : "&") + "baud=" + std::to_string(baud);
-}
-
 Result<std::unique_ptr<PodDriver>> PodDriver::create(DriverOptions options, Clock clock) {
   std::unique_ptr<PodDriver> driver(new PodDriver(std::move(options), std::move(clock)));
   const DriverOptions& o = driver->options_;

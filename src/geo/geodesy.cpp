@@ -57,4 +57,11 @@ Geodetic LocalFrame::to_geodetic(const Enu& point) const {
   return out;
 }
 
+double distance_m(const Geodetic& a, const Geodetic& b) {
+  const Result<LocalFrame> frame = LocalFrame::at(a);
+  if (!frame) return std::nan("");
+  const Enu d = frame->to_enu(b);
+  return std::sqrt(d.east * d.east + d.north * d.north + d.up * d.up);
+}
+
 }  // namespace k40t::geo

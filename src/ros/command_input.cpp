@@ -9,7 +9,6 @@
 namespace k40t::driver {
 
 namespace {
-constexpr double kRadToDeg = 180.0 / M_PI;
 
 // A message's stamp, or its time of arrival when it has none.
 StampNs stamp_of(const std_msgs::Header& header) {
@@ -32,9 +31,10 @@ CommandInput::CommandInput(ros::NodeHandle nh, PodDriver& driver) : driver_(driv
 }
 
 void CommandInput::on_cmd_angle(const geometry_msgs::Vector3Stamped::ConstPtr& msg) {
+  const PodAngles pod = pod_from_rep103({msg->vector.z, msg->vector.x, msg->vector.y});
   protocol::GimbalAngleRequest request;
-  request.pitch_deg = -msg->vector.y * kRadToDeg;  // REP 103 down-positive -> pod up-positive
-  request.yaw_deg = -msg->vector.z * kRadToDeg;    // REP 103 left-positive -> pod right-positive
+  request.pitch_deg = pod.pitch_deg;
+  request.yaw_deg = pod.yaw_deg;
   driver_.request_async(request, [](const session::AckResult& result) {
     if (!result.ok())
       ROS_WARN_THROTTLE(1.0, "gimbal/cmd_angle not applied: %s", result.message.c_str());
@@ -42,7 +42,8 @@ void CommandInput::on_cmd_angle(const geometry_msgs::Vector3Stamped::ConstPtr& m
 }
 
 void CommandInput::on_cmd_rate(const geometry_msgs::Twist::ConstPtr& msg) {
-  driver_.command_rate(-msg->angular.y * kRadToDeg, -msg->angular.z * kRadToDeg);
+  const PodAngles pod = pod_from_rep103({msg->angular.z, msg->angular.x, msg->angular.y});
+  driver_.command_rate(pod.pitch_deg, pod.yaw_deg);
 }
 
 void CommandInput::on_fix(const sensor_msgs::NavSatFix::ConstPtr& msg) {

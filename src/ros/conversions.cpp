@@ -1,9 +1,9 @@
 #include "k40t_driver/ros/conversions.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include <tf2/LinearMath/Matrix3x3.h>
 #include <tf2/LinearMath/Quaternion.h>
 
 #include "k40t_driver/driver/code_text.h"
@@ -12,9 +12,6 @@
 namespace k40t::driver {
 
 namespace {
-
-constexpr double kDegToRad = M_PI / 180.0;
-constexpr double kRadToDeg = 180.0 / M_PI;
 
 std_msgs::Header header(const ros::Time& stamp, const std::string& frame_id = "") {
   std_msgs::Header h;
@@ -52,24 +49,6 @@ geometry_msgs::TransformStamped transform(const ros::Time& stamp, const std::str
 const Rep103Angles kOptical{-M_PI / 2, -M_PI / 2, 0};
 
 }  // namespace
-
-Rep103Angles rep103_from_pod(double yaw_deg, double roll_deg, double pitch_deg) {
-  return Rep103Angles{-yaw_deg * kDegToRad, roll_deg * kDegToRad, -pitch_deg * kDegToRad};
-}
-
-FrameIds::FrameIds(const std::string& frame_prefix, const std::string& joint_prefix)
-    : base(frame_prefix + "base_link"),
-      yaw(frame_prefix + "yaw_link"),
-      roll(frame_prefix + "roll_link"),
-      pitch(frame_prefix + "pitch_link"),
-      tele(frame_prefix + "tele_optical_frame"),
-      wide(frame_prefix + "wide_optical_frame"),
-      thermal(frame_prefix + "thermal_optical_frame"),
-      laser(frame_prefix + "laser_frame"),
-      level(frame_prefix + "level"),
-      yaw_joint(joint_prefix + "yaw_joint"),
-      roll_joint(joint_prefix + "roll_joint"),
-      pitch_joint(joint_prefix + "pitch_joint") {}
 
 sensor_msgs::JointState to_joint_state(const protocol::GimbalAttitude& attitude,
                                        const ros::Time& stamp, const FrameIds& ids) {
@@ -278,56 +257,35 @@ k40t_driver::Frame to_frame_msg(const uint8_t* bytes, size_t size, const ros::Ti
 
 void update_from_fix(VehicleState& state, const sensor_msgs::NavSatFix& fix,
                      double* reference_altitude_m) {
-  const bool usable = fix.status.status >= sensor_msgs::NavSatStatus::STATUS_FIX &&
-                      std::isfinite(fix.latitude) && std::isfinite(fix.longitude);
-  state.has_fix = usable;
+  GnssFix in;
   switch (fix.status.status) {
     case sensor_msgs::NavSatStatus::STATUS_FIX:
-      state.gps_status = 3;
-      break;  // 3D
+      in.quality = GnssFix::Quality::kFix;
+      break;
     case sensor_msgs::NavSatStatus::STATUS_SBAS_FIX:
-      state.gps_status = 4;
-      break;  // DGPS/SBAS
+      in.quality = GnssFix::Quality::kSbas;
+      break;
     case sensor_msgs::NavSatStatus::STATUS_GBAS_FIX:
-      state.gps_status = 6;
-      break;  // RTK fixed
+      in.quality = GnssFix::Quality::kGbas;
+      break;
     default:
-      state.gps_status = 1;
-      break;  // no position
+      break;  // STATUS_NO_FIX
   }
-  if (!usable) return;
-  const double altitude = std::isfinite(fix.altitude) ? fix.altitude : 0.0;
-  // NavSatFix heights are above the ellipsoid; the pod wants sea level. Without the geoid (no
-  // proj-data) there is no height to send: the fix is not usable.
-  const Result<double> msl =
-      geo::Geoid::egm96().msl_from_ellipsoid(fix.latitude, fix.longitude, altitude);
-  if (!msl) {
-    state.has_fix = false;
-    return;
-  }
-  if (reference_altitude_m && std::isnan(*reference_altitude_m)) *reference_altitude_m = altitude;
-  state.utc_ms = static_cast<int64_t>(fix.header.stamp.toNSec() / 1000000);
-  state.latitude_deg = fix.latitude;
-  state.longitude_deg = fix.longitude;
-  state.altitude_m = altitude;
-  state.altitude_msl_m = msl.value();
+  in.stamp_ns = static_cast<int64_t>(fix.header.stamp.toNSec());
+  in.latitude_deg = fix.latitude;
+  in.longitude_deg = fix.longitude;
+  in.altitude_m = fix.altitude;
   if (fix.position_covariance_type != sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN) {
-    for (size_t i = 0; i < 9; ++i) state.position_covariance[i] = fix.position_covariance[i];
+    in.covariance.emplace();
+    std::copy(fix.position_covariance.begin(), fix.position_covariance.end(),
+              in.covariance->begin());
   }
-  state.relative_altitude_m = reference_altitude_m ? altitude - *reference_altitude_m : 0.0;
+  apply_fix(state, in, reference_altitude_m);
 }
 
 void update_from_imu(VehicleState& state, const sensor_msgs::Imu& imu) {
-  const tf2::Quaternion q(imu.orientation.x, imu.orientation.y, imu.orientation.z,
-                          imu.orientation.w);
-  if (q.length2() < 1e-6) return;  // an Imu without orientation (all zeros)
-  double roll = 0, pitch = 0, yaw = 0;
-  tf2::Matrix3x3(q.normalized()).getRPY(roll, pitch, yaw);
-  // ENU yaw is counter-clockwise from east; a heading is clockwise from north.
-  state.heading_deg = std::fmod(90.0 - yaw * kRadToDeg + 720.0, 360.0);
-  state.pitch_deg = -pitch * kRadToDeg;  // REP 103 pitch is nose-down positive
-  state.roll_deg = roll * kRadToDeg;     // right side down positive in both
-  state.has_attitude = true;
+  apply_enu_orientation(
+      state, {imu.orientation.x, imu.orientation.y, imu.orientation.z, imu.orientation.w});
 }
 
 }  // namespace k40t::driver

@@ -1,24 +1,12 @@
 #include "k40t_driver/ros/geo_glue.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <tf2/LinearMath/Quaternion.h>
 #include <tf2/LinearMath/Vector3.h>
 
 namespace k40t::driver {
-
-Result<geo::VehiclePose> vehicle_pose(const VehicleState& state) {
-  if (!state.has_fix) return Result<geo::VehiclePose>::fail("no vehicle fix (topic fix)");
-  if (!state.has_attitude)
-    return Result<geo::VehiclePose>::fail("no vehicle attitude (topic attitude)");
-  geo::VehiclePose pose;
-  pose.position = {state.latitude_deg, state.longitude_deg, state.altitude_m};
-  pose.position_covariance = state.position_covariance;
-  pose.heading_deg = state.heading_deg;
-  pose.pitch_deg = state.pitch_deg;
-  pose.roll_deg = state.roll_deg;
-  return pose;
-}
 
 Result<geo::BodyRay> ray_in_vehicle(const tf2_ros::Buffer& tf, const std::string& vehicle_frame,
                                     const std::string& sensor_frame, const ros::Time& stamp,
@@ -73,17 +61,11 @@ k40t_driver::LaserTarget to_laser_target(const protocol::TargetGpsAck& target,
       target.latitude_deg, target.longitude_deg, target.altitude_m);
   report.altitude = h ? h.value() : std::nan("");
   report.position_covariance.fill(-1.0);
-  if (target.code != protocol::ResponseCode::kOk || !h || !vehicle.has_fix) return report;
-  const Result<geo::LocalFrame> frame =
-      geo::LocalFrame::at({vehicle.latitude_deg, vehicle.longitude_deg, vehicle.altitude_m});
-  if (!frame) return report;
-  const geo::Enu d = frame->to_enu({target.latitude_deg, target.longitude_deg, h.value()});
-  const double slant = std::sqrt(d.east * d.east + d.north * d.north + d.up * d.up);
-  const geo::RayUncertainty u;
-  const double angular = slant * u.attitude_sigma_deg * M_PI / 180.0;
-  const double extra = angular * angular + u.range_sigma_m * u.range_sigma_m;
-  for (size_t i = 0; i < 9; ++i) report.position_covariance[i] = vehicle.position_covariance[i];
-  for (size_t i = 0; i < 3; ++i) report.position_covariance[i * 4] += extra;
+  if (target.code != protocol::ResponseCode::kOk || !h) return report;
+  const std::optional<geo::Covariance3> covariance =
+      laser_target_covariance({target.latitude_deg, target.longitude_deg, h.value()}, vehicle);
+  if (covariance)
+    std::copy(covariance->begin(), covariance->end(), report.position_covariance.begin());
   return report;
 }
 

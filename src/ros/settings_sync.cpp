@@ -4,26 +4,8 @@
 
 namespace k40t::driver {
 
-namespace {
-// How long read_from_pod() waits for the periodic camera (1 Hz) and gimbal (2 Hz) reports.
-constexpr std::chrono::milliseconds kReportWait{2500};
-}  // namespace
-
-SettingsSync::SettingsSync(ros::NodeHandle private_nh, PodDriver& driver) : driver_(driver) {
-  // The reports are kept by the I/O thread and absorbed by read_from_pod(): the I/O thread must
-  // never wait for the server's mutex, which a reconfigure callback holds while it waits for an
-  // ACK that only the I/O thread can deliver.
-  driver.on<protocol::CameraSystemStatus>(
-      [this](const protocol::CameraSystemStatus& report, StampNs) {
-        std::lock_guard<std::mutex> lock(mutex_);
-        camera_report_ = report;
-        reports_arrived_.notify_all();
-      });
-  driver.on<protocol::GimbalStatus>([this](const protocol::GimbalStatus& report, StampNs) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    gimbal_report_ = report;
-    reports_arrived_.notify_all();
-  });
+SettingsSync::SettingsSync(ros::NodeHandle private_nh, PodDriver& driver)
+    : driver_(driver), reader_(driver) {
   server_ = std::make_unique<dynamic_reconfigure::Server<Config>>(server_mutex_, private_nh);
   server_->setCallback([this](Config& config, uint32_t level) { on_reconfigure(config, level); });
 }
@@ -77,33 +59,15 @@ session::AckResult SettingsSync::write(const std::string& name,
 SettingsState SettingsSync::read_from_pod() {
   std::lock_guard<std::mutex> one_read(read_mutex_);
   {
-    std::lock_guard<std::mutex> lock(mutex_);
-    camera_report_.reset();  // wait for reports sent after the pod came online
-    gimbal_report_.reset();
-  }
-  {
     boost::recursive_mutex::scoped_lock server_lock(server_mutex_);
     written_during_read_.clear();
   }
-  const PodSettings settings = read_settings(driver_);
-  std::optional<protocol::CameraSystemStatus> camera;
-  std::optional<protocol::GimbalStatus> gimbal;
-  {
-    std::unique_lock<std::mutex> lock(mutex_);
-    reports_arrived_.wait_for(lock, kReportWait, [&] { return camera_report_ && gimbal_report_; });
-    camera = camera_report_;
-    gimbal = gimbal_report_;
-  }
-
-  std::string message = settings.error.empty() ? "read 0x000100 and 0x000200" : settings.error;
-  if (!camera) message += "; no camera status report (0x000003) to read modes from";
-  if (!gimbal) message += "; no gimbal status report (0x000001) to read stabilisation from";
+  const SettingsRead read = reader_.read();
+  std::string message = read.message;
   {
     boost::recursive_mutex::scoped_lock server_lock(server_mutex_);
     Config config = current_;
-    absorb(config, SettingReports{settings.thermal ? &*settings.thermal : nullptr,
-                                  settings.visible ? &*settings.visible : nullptr,
-                                  camera ? &*camera : nullptr, gimbal ? &*gimbal : nullptr});
+    absorb(config, read.reports());
     // A setting written meanwhile (a service called as soon as it exists) was accepted by the
     // pod after, or while, its value was read: the written value is the pod's now.
     for (const std::string& name : written_during_read_) find_binding(name)->copy(config, current_);
@@ -117,7 +81,7 @@ SettingsState SettingsSync::read_from_pod() {
   }
   std::lock_guard<std::mutex> lock(mutex_);
   ++state_.reads;
-  state_.read_ok = settings.error.empty();
+  state_.read_ok = read.ok();
   state_.read_message = message;
   if (!state_.read_ok) ROS_WARN("K40T settings read-back incomplete: %s", message.c_str());
   return state_;

@@ -20,14 +20,6 @@ ros::Time to_ros_time(StampNs stamp) {
   return t;
 }
 
-// Metres between two positions (in the ENU frame of the first).
-double distance_m(const geo::Geodetic& a, const geo::Geodetic& b) {
-  const Result<geo::LocalFrame> frame = geo::LocalFrame::at(a);
-  if (!frame) return std::nan("");
-  const geo::Enu d = frame->to_enu(b);
-  return std::sqrt(d.east * d.east + d.north * d.north + d.up * d.up);
-}
-
 }  // namespace
 
 TargetLocator::TargetLocator(ros::NodeHandle nh, const ros::NodeHandle& private_nh,
@@ -93,7 +85,7 @@ void TargetLocator::on_pod_target(const protocol::TargetGpsAck& target, StampNs 
 void TargetLocator::compare_locked() {
   if (!last_local_ || !last_pod_) return;
   if (std::llabs(last_local_->second - last_pod_->second) > kSecondNs) return;
-  disagreement_m_ = distance_m(last_local_->first, last_pod_->first);
+  disagreement_m_ = geo::distance_m(last_local_->first, last_pod_->first);
 }
 
 void TargetLocator::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
@@ -160,17 +152,15 @@ bool TargetLocator::locate_pixel(k40t_driver::LocatePixel::Request& req,
   if (on_axis) {
     located = geo::locate_at_range(pose.value(), ray.value(), range->first, uncertainty_);
   } else {
-    double plane_h = 0;
-    if (req.plane_reference == k40t_driver::LocatePixel::Request::ABOVE_TAKEOFF) {
-      plane_h = state.altitude_m - state.relative_altitude_m + req.plane_height;
-    } else {
-      const Result<double> h = geo::Geoid::egm96().ellipsoid_from_msl(
-          state.latitude_deg, state.longitude_deg, req.plane_height);
-      if (!h) return fail(h.error());
-      plane_h = h.value();
-    }
-    located =
-        geo::locate_on_plane(pose.value(), ray.value(), plane_h - state.altitude_m, uncertainty_);
+    const Result<double> plane_h = plane_height_ellipsoid(
+        state,
+        req.plane_reference == k40t_driver::LocatePixel::Request::ABOVE_TAKEOFF
+            ? PlaneReference::kAboveTakeoff
+            : PlaneReference::kMeanSeaLevel,
+        req.plane_height);
+    if (!plane_h) return fail(plane_h.error());
+    located = geo::locate_on_plane(pose.value(), ray.value(), plane_h.value() - state.altitude_m,
+                                   uncertainty_);
     if (!located)
       return fail("the pixel's ray misses the ground plane (above the horizon or beyond 10 km)");
   }

@@ -186,4 +186,9 @@ Result<DeviceUrl> parse_device_url(const std::string& text, const UrlRules& rule
   return url;
 }
 
+std::string device_url_with_baud(const std::string& url, int baud) {
+  if (url.rfind("serial://", 0) != 0 || url.find("baud=") != std::string::npos) return url;
+  return url + (url.find('?') == std::string::npos ? "?" : "&") + "baud=" + std::to_string(baud);
+}
+
 }  // namespace k40t::transport

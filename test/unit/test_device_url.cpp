@@ -127,5 +127,15 @@ INSTANTIATE_TEST_SUITE_P(
         BadUrl{"udp://127.0.0.1:5000?bind=127.0.0.1:70000", "bind: port 70000 is out of range"},
         BadUrl{"serial:///dev/tty USB0", "white space"}));
 
+TEST(DeviceUrl, BaudIsAddedToSerialUrlsOnly) {
+  EXPECT_EQ(device_url_with_baud("serial:///dev/ttyUSB0", 115200),
+            "serial:///dev/ttyUSB0?baud=115200");
+  EXPECT_EQ(device_url_with_baud("serial:///dev/ttyUSB0?x=1", 9600),
+            "serial:///dev/ttyUSB0?x=1&baud=9600");
+  EXPECT_EQ(device_url_with_baud("serial:///dev/ttyS1?baud=57600", 115200),
+            "serial:///dev/ttyS1?baud=57600");
+  EXPECT_EQ(device_url_with_baud("udp://192.168.144.64:2000", 115200), "udp://192.168.144.64:2000");
+}
+
 }  // namespace
 }  // namespace k40t::transport

@@ -91,6 +91,14 @@ TEST(Geodesy, LocalFrameRoundTripsFarAway) {
 struct GeoidCheck {
   double latitude_deg, longitude_deg, undulation_m;
 };
+TEST(Geodesy, DistanceIsTheStraightLineBetweenTwoPositions) {
+  EXPECT_NEAR(distance_m({47.1, 8.5, 500.0}, {47.1, 8.5, 400.0}), 100.0, 1e-6);  // plumb line
+  // 0.001 deg of latitude on the equator: the meridian's radius of curvature there is b^2 / a =
+  // 6356752.3^2 / 6378137 = 6335439 m (WGS 84), so 6335439 * 0.001 * pi / 180 = 110.574 m.
+  EXPECT_NEAR(distance_m({0.0, 10.0, 0.0}, {0.001, 10.0, 0.0}), 110.574, 0.001);
+  EXPECT_TRUE(std::isnan(distance_m({91.0, 0.0, 0.0}, {0.0, 0.0, 0.0})));
+}
+
 TEST(Geoid, Egm96MatchesTheNgaCheckValues) {
   const GeoidCheck checks[] = {
       {38.6281550, 269.7791550, -31.628}, {-14.6212170, 305.0211140, -2.969},

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "k40t_driver/session/session.h"
+#include "k40t_driver/transport/device_url.h"
 
 namespace k40t::driver {
 
@@ -19,7 +20,7 @@ struct DriverOptions {
   // how long after the pod's return the topics resume.
   double reconnect_max_delay_s = 1.0;
 
-  // Codec decisions (docs/protocol/decisions.md#a1-A5), ACK timeout and retries.
+  // Codec decisions (docs/protocol/decisions.md#a1 to #a5), ACK timeout and retries.
   session::SessionOptions session;
 
   // Seconds between time syncs (0x00030E, docs/protocol/decisions.md#a8); 0 disables.
@@ -48,8 +49,6 @@ struct DriverOptions {
   double silence_timeout_s = 0.5;
 };
 
-// The device URL with the baud rate applied: serial URLs without "baud=" get "?baud=N" (or
-// "&baud=N"); other URLs are returned unchanged.
-std::string device_url_with_baud(const std::string& url, int baud);
+using transport::device_url_with_baud;  // the ~device URL with ~baud applied
 
 }  // namespace k40t::driver

@@ -59,6 +59,10 @@ class LocalFrame {
   Geodetic origin_;
 };
 
+// Straight-line metres between two positions (through the Earth, not along it); NaN when `a` is
+// not a position check_geodetic() accepts.
+double distance_m(const Geodetic& a, const Geodetic& b);
+
 // The EGM96 geoid through PROJ (grid egm96_15.gtx of proj-data). One shared instance, thread-safe.
 class Geoid {
  public:

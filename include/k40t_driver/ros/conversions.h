@@ -29,6 +29,8 @@
 #include "k40t_driver/RecordStatus.h"
 #include "k40t_driver/ThermalStats.h"
 #include "k40t_driver/VisibleStatus.h"
+#include "k40t_driver/driver/pod_frames.h"
+#include "k40t_driver/driver/vehicle_inputs.h"
 #include "k40t_driver/driver/vehicle_state.h"
 #include "k40t_driver/protocol/frame.h"
 #include "k40t_driver/protocol/messages/camera_reports.h"
@@ -39,43 +41,6 @@
 #include "k40t_driver/protocol/messages/visible.h"
 
 namespace k40t::driver {
-
-// Gimbal angles or rates in REP 103 convention, radians (per second).
-struct Rep103Angles {
-  double yaw = 0;
-  double roll = 0;
-  double pitch = 0;
-};
-Rep103Angles rep103_from_pod(double yaw_deg, double roll_deg, double pitch_deg);
-
-// Every frame id the driver uses, from ~frame_prefix; the joint names from ~joint_prefix.
-struct FrameIds {
-  explicit FrameIds(const std::string& frame_prefix = "k40t_",
-                    const std::string& joint_prefix = "k40t_");
-  std::string base, yaw, roll, pitch;      // the gimbal chain
-  std::string tele, wide, thermal, laser;  // sensors (optical frames, laser x along the beam)
-  std::string level;                       // gravity-aligned frame of gimbal/attitude
-  std::string yaw_joint, roll_joint, pitch_joint;
-};
-
-// Translations of the gimbal chain (metres, parent frame), the same as urdf/k40t.urdf.
-struct GimbalGeometry {
-  std::array<double, 3> yaw_joint{0, 0, -0.02};    // base -> yaw link
-  std::array<double, 3> roll_joint{0, 0, -0.04};   // yaw -> roll link
-  std::array<double, 3> pitch_joint{0, 0, -0.06};  // roll -> pitch link
-  // Sensor positions in the pitch link (parameters *_offset).
-  std::array<double, 3> tele{0.05, 0.02, 0.015};
-  std::array<double, 3> wide{0.05, -0.02, 0.015};
-  std::array<double, 3> thermal{0.05, 0.02, -0.015};
-  std::array<double, 3> laser{0.05, -0.02, -0.015};
-};
-
-// Limits written into every laser/range message.
-struct RangeLimits {
-  float min_range = 5.0f;
-  float max_range = 1500.0f;
-  float field_of_view = 0.003f;
-};
 
 sensor_msgs::JointState to_joint_state(const protocol::GimbalAttitude& attitude,
                                        const ros::Time& stamp, const FrameIds& ids);
@@ -113,8 +78,8 @@ sensor_msgs::NavSatFix to_nav_sat_fix(const protocol::TargetGpsAck& target, cons
 k40t_driver::Frame to_frame_msg(const uint8_t* bytes, size_t size, const ros::Time& stamp,
                                 uint8_t direction);
 
-// Vehicle topics -> VehicleState. The first fix with a position sets the reference of
-// relative_altitude_m (the take-off point).
+// Vehicle topics -> VehicleState, by driver/vehicle_inputs.h's rules. The first fix with a
+// position sets the reference of relative_altitude_m (the take-off point).
 void update_from_fix(VehicleState& state, const sensor_msgs::NavSatFix& fix,
                      double* reference_altitude_m);
 // Orientation in ENU (REP 103) -> aviation heading/pitch/roll; the angular velocity is ignored.

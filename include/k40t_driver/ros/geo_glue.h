@@ -1,6 +1,6 @@
-// What laser/target_local and locate_pixel share: the vehicle pose of geo/ray_locator.h from
-// the driver's time-matched VehicleState, a ray of a sensor frame in the vehicle frame from TF,
-// a NavSatFix of a located point, and the uncertainty parameters.
+// What laser/target_local and locate_pixel share, as ROS glue: a ray of a sensor frame in the
+// vehicle frame from TF, a NavSatFix of a located point, the laser target report, and the
+// uncertainty parameters. The vehicle pose and the report's covariance are driver/vehicle_geo.h's.
 #pragma once
 
 #include <optional>
@@ -12,13 +12,11 @@
 #include "k40t_driver/LaserTarget.h"
 #include "k40t_driver/protocol/messages/flight_controller.h"
 
+#include "k40t_driver/driver/vehicle_geo.h"
 #include "k40t_driver/driver/vehicle_state.h"
 #include "k40t_driver/geo/ray_locator.h"
 
 namespace k40t::driver {
-
-// The pose, or a reason: no fix, no attitude.
-Result<geo::VehiclePose> vehicle_pose(const VehicleState& state);
 
 // The ray from `sensor_frame`'s origin along `direction` (in that frame) expressed in
 // `vehicle_frame`, at `stamp` or, when TF has nothing that old or new, the latest transform.

@@ -11,7 +11,6 @@
 // (setting_binding.h, settings_bindings.cpp).
 #pragma once
 
-#include <condition_variable>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -26,6 +25,7 @@
 
 #include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/driver/pod_queries.h"
+#include "k40t_driver/driver/settings_reader.h"
 #include "k40t_driver/driver/settings_state.h"
 #include "k40t_driver/protocol/messages/camera_reports.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
@@ -54,6 +54,7 @@ class SettingsSync {
   session::AckResult apply(const SettingBinding& binding, Config& next);
 
   PodDriver& driver_;
+  SettingsReader reader_;  // the read side: settings ACKs and the next status reports
   boost::recursive_mutex server_mutex_;
   std::unique_ptr<dynamic_reconfigure::Server<Config>> server_;
   Config current_;
@@ -65,9 +66,6 @@ class SettingsSync {
   std::mutex read_mutex_;  // one read_from_pod() at a time
 
   mutable std::mutex mutex_;  // guards what follows; never held while waiting for the pod
-  std::condition_variable reports_arrived_;
-  std::optional<protocol::CameraSystemStatus> camera_report_;
-  std::optional<protocol::GimbalStatus> gimbal_report_;
   SettingsState state_;
 };
 

@@ -56,4 +56,8 @@ Result<HostPort> parse_host_port(const std::string& text);
 // `bad device URL "<url>": <what>` — the common shape of every URL error.
 std::string url_error(const std::string& url, const std::string& what);
 
+// The URL with a baud rate parameter applied (the drivers' ~device and ~baud): serial URLs without
+// "baud=" get "?baud=N" (or "&baud=N"); other URLs are returned unchanged.
+std::string device_url_with_baud(const std::string& url, int baud);
+
 }  // namespace k40t::transport

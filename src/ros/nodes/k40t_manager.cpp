@@ -18,6 +18,8 @@
 #include <nodelet/loader.h>
 #include <ros/ros.h>
 
+#include "k40t_driver/ros/stop_signals.h"
+
 namespace {
 
 std::atomic<bool> g_stop_requested{false};
@@ -39,6 +41,7 @@ void install_stop_handlers() {
 int main(int argc, char** argv) {
   ros::init(argc, argv, "manager", ros::init_options::NoSigintHandler);
   install_stop_handlers();
+  if (k40t::driver::stop_requested_before_ros_start()) g_stop_requested = true;  // while loading
   ros::NodeHandle private_nh("~");
   nodelet::Loader loader(private_nh);  // load_nodelet, unload_nodelet, list, bonds
   // The manager's services and the nodelets' default queue, as `nodelet manager`'s ros::spin().

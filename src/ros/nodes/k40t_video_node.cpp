@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   k40t::driver::shutdown_on_sigterm();
   ros::NodeHandle nh;
   ros::NodeHandle private_nh("~");
+  if (k40t::driver::stop_requested_before_ros_start()) return 0;  // Ctrl-C while loading
   auto streamer = k40t::driver::VideoStreamer::create(nh, private_nh);
   if (!streamer) {
     ROS_FATAL("K40T video not started: %s", streamer.error().c_str());

@@ -18,11 +18,11 @@
 #include "k40t_driver/LinkBandwidth.h"
 #include "k40t_driver/OtherPayload.h"
 #include "k40t_driver/UavState.h"
-#include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/psdk/commands/all.h"
 #include "k40t_driver/ros/skyport/push_conversions.h"
 #include "k40t_driver/skyport/link_health.h"
 #include "k40t_driver/skyport/transparent_chunks.h"
+#include "k40t_driver/transport/device_url.h"
 #include "k40t_driver/transport/transport.h"
 
 namespace k40t::driver::skyport {
@@ -33,7 +33,8 @@ Result<std::unique_ptr<SkyportRos>> SkyportRos::create(ros::NodeHandle nh,
                                                        ros::NodeHandle private_nh) {
   Result<SkyportConfig> config = read_skyport_config(private_nh);
   if (!config) return Result<std::unique_ptr<SkyportRos>>::fail(config.error());
-  auto link = transport::make_transport(device_url_with_baud(config->device, config->baud));
+  auto link =
+      transport::make_transport(transport::device_url_with_baud(config->device, config->baud));
   if (!link) return Result<std::unique_ptr<SkyportRos>>::fail(link.error());
   SessionOptions options;
   options.role = Sender::kPayload;

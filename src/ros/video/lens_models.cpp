@@ -32,19 +32,6 @@ video::Intrinsics from_message(const sensor_msgs::CameraInfo& info) {
 
 }  // namespace
 
-TeleZoom tele_zoom(const VideoConfig& config, const ZoomState& zoom, double reference_focal_mm) {
-  const double ratio = std::max(1.0, zoom.zoom_ratio);
-  const double one_x = config.tele.focal_length_mm;
-  // Without a reported focal length the optical part is the ratio up to the optical maximum.
-  const double focal = zoom.focal_length_mm > 0
-                           ? zoom.focal_length_mm
-                           : one_x * std::min(ratio, config.tele_max_optical_zoom);
-  TeleZoom out;
-  out.optical = focal / reference_focal_mm;
-  out.digital = std::max(1.0, ratio * one_x / focal);
-  return out;
-}
-
 LensModels::LensModels(const ros::NodeHandle& private_nh, const VideoConfig& config)
     : config_(config) {
   for (video::Lens lens : kLenses) {
@@ -77,9 +64,10 @@ video::Intrinsics LensModels::zoomed(video::Lens lens, cv::Size image,
   video::Intrinsics in = at_1x(lens, image);
   switch (lens) {
     case video::Lens::kTele: {
-      const TeleZoom z = tele_zoom(config_, zoom,
-                                   manager.isCalibrated() ? config_.tele_calibration_focal_length_mm
-                                                          : config_.tele.focal_length_mm);
+      const TeleZoom z =
+          video::tele_zoom(config_.tele.focal_length_mm, config_.tele_max_optical_zoom, zoom,
+                           manager.isCalibrated() ? config_.tele_calibration_focal_length_mm
+                                                  : config_.tele.focal_length_mm);
       return video::zoom_digital(video::zoom_optical(in, z.optical), z.digital);
     }
     case video::Lens::kThermal:

@@ -1,4 +1,6 @@
-// Conversions: REP 103 signs, units, frame ids, and the vehicle topics -> VehicleState.
+// Conversions to and from ROS messages: units, frame ids, TF, the laser target, and what the
+// vehicle messages hand to driver/vehicle_inputs.h (whose rules test/unit/test_vehicle_inputs.cpp
+// checks).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,7 +8,6 @@
 #include <tf2/LinearMath/Quaternion.h>
 #include <tf2/LinearMath/Vector3.h>
 
-#include "k40t_driver/driver/driver_options.h"
 #include "k40t_driver/ros/conversions.h"
 #include "k40t_driver/ros/geo_glue.h"
 
@@ -17,13 +18,6 @@ constexpr double kEps = 1e-9;
 
 tf2::Quaternion as_tf(const geometry_msgs::Quaternion& q) {
   return tf2::Quaternion(q.x, q.y, q.z, q.w);
-}
-
-TEST(Rep103, PodUpAndRightBecomeNegativePitchAndYaw) {
-  const Rep103Angles a = rep103_from_pod(90.0, 10.0, 30.0);  // right 90, roll 10, up 30
-  EXPECT_NEAR(a.yaw, -M_PI / 2, kEps);                       // REP 103: left positive
-  EXPECT_NEAR(a.roll, 10.0 * M_PI / 180, kEps);
-  EXPECT_NEAR(a.pitch, -M_PI / 6, kEps);  // REP 103: down positive
 }
 
 TEST(JointState, NamesPositionsVelocitiesAndStamp) {
@@ -142,70 +136,35 @@ TEST(ThermalStats, DegreesCoordinatesAndAlarms) {
   EXPECT_EQ(m.header.frame_id, "k40t_thermal_optical_frame");
 }
 
-TEST(VehicleState, ImuEnuBecomesAviationAngles) {
-  VehicleState s;
-  sensor_msgs::Imu imu;
-  tf2::Quaternion q;
-  q.setRPY(0.0, 0.1, M_PI / 2);  // facing north (ENU yaw 90 deg), nose down 0.1 rad
-  imu.orientation.x = q.x();
-  imu.orientation.y = q.y();
-  imu.orientation.z = q.z();
-  imu.orientation.w = q.w();
-  update_from_imu(s, imu);
-  EXPECT_TRUE(s.has_attitude);
-  EXPECT_NEAR(s.heading_deg, 0.0, 1e-6);
-  EXPECT_NEAR(s.pitch_deg, -0.1 * 180 / M_PI, 1e-6);  // nose down is negative in aviation
-  q.setRPY(0.2, 0.0, 0.0);                            // facing east, right side down
-  imu.orientation.x = q.x();
-  imu.orientation.y = q.y();
-  imu.orientation.z = q.z();
-  imu.orientation.w = q.w();
-  update_from_imu(s, imu);
-  EXPECT_NEAR(s.heading_deg, 90.0, 1e-6);
-  EXPECT_NEAR(s.roll_deg, 0.2 * 180 / M_PI, 1e-6);
-}
-
-TEST(VehicleState, ImuWithoutOrientationIsIgnored) {
-  VehicleState s;
-  sensor_msgs::Imu imu;
-  imu.orientation.w = 0.0;  // all zeros: "no orientation"
-  update_from_imu(s, imu);
-  EXPECT_FALSE(s.has_attitude);
-}
-
-TEST(VehicleState, FirstFixIsTheRelativeAltitudeReference) {
-  VehicleState s;
-  double reference = std::nan("");
+TEST(VehicleState, NavSatFixStatusAndCovarianceTypeAreCopied) {
   sensor_msgs::NavSatFix fix;
-  fix.status.status = sensor_msgs::NavSatStatus::STATUS_FIX;
   fix.latitude = 47.1;
   fix.longitude = 8.5;
   fix.altitude = 500.0;
-  fix.header.stamp = ros::Time(1700000000, 250000000);
-  update_from_fix(s, fix, &reference);
-  EXPECT_TRUE(s.has_fix);
-  EXPECT_EQ(s.gps_status, 3);
-  EXPECT_EQ(s.utc_ms, 1700000000250);
-  EXPECT_DOUBLE_EQ(s.relative_altitude_m, 0.0);
-  fix.altitude = 530.0;
-  update_from_fix(s, fix, &reference);
-  EXPECT_DOUBLE_EQ(s.relative_altitude_m, 30.0);
-  EXPECT_DOUBLE_EQ(s.altitude_m, 530.0);
-  // Sea level for the pod: the EGM96 geoid is 47.9 m above the ellipsoid at 47.1N 8.5E.
-  EXPECT_NEAR(s.altitude_msl_m, 530.0 - 47.9, 0.2);
-  fix.status.status = sensor_msgs::NavSatStatus::STATUS_NO_FIX;
-  update_from_fix(s, fix, &reference);
-  EXPECT_FALSE(s.has_fix);
-}
-
-TEST(DeviceUrl, BaudIsAddedToSerialUrlsOnly) {
-  EXPECT_EQ(device_url_with_baud("serial:///dev/ttyUSB0", 115200),
-            "serial:///dev/ttyUSB0?baud=115200");
-  EXPECT_EQ(device_url_with_baud("serial:///dev/ttyUSB0?x=1", 9600),
-            "serial:///dev/ttyUSB0?x=1&baud=9600");
-  EXPECT_EQ(device_url_with_baud("serial:///dev/ttyS1?baud=57600", 115200),
-            "serial:///dev/ttyS1?baud=57600");
-  EXPECT_EQ(device_url_with_baud("udp://192.168.144.64:2000", 115200), "udp://192.168.144.64:2000");
+  fix.position_covariance = {1, 0, 0, 0, 1, 0, 0, 0, 9};
+  fix.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN;
+  const std::pair<int8_t, uint8_t> statuses[] = {{sensor_msgs::NavSatStatus::STATUS_FIX, 3},
+                                                 {sensor_msgs::NavSatStatus::STATUS_SBAS_FIX, 4},
+                                                 {sensor_msgs::NavSatStatus::STATUS_GBAS_FIX, 6},
+                                                 {sensor_msgs::NavSatStatus::STATUS_NO_FIX, 1}};
+  for (const auto& [status, pod_status] : statuses) {
+    VehicleState s;
+    fix.status.status = status;
+    update_from_fix(s, fix, nullptr);
+    EXPECT_EQ(s.gps_status, pod_status) << int(status);
+    EXPECT_EQ(s.has_fix, status != sensor_msgs::NavSatStatus::STATUS_NO_FIX) << int(status);
+    EXPECT_EQ(s.position_covariance, VehicleState().position_covariance);  // type unknown
+  }
+  VehicleState s;
+  fix.status.status = sensor_msgs::NavSatStatus::STATUS_FIX;
+  fix.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_DIAGONAL_KNOWN;
+  update_from_fix(s, fix, nullptr);
+  EXPECT_EQ(s.position_covariance[8], 9.0);
+  sensor_msgs::Imu imu;
+  imu.orientation.w = 1.0;  // level, facing east
+  update_from_imu(s, imu);
+  EXPECT_TRUE(s.has_attitude);
+  EXPECT_NEAR(s.heading_deg, 90.0, 1e-9);
 }
 
 }  // namespace

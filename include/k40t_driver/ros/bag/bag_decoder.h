@@ -18,7 +18,7 @@
 
 #include <rosbag/bag.h>
 
-#include "k40t_driver/ros/bag/frame_export.h"
+#include "frame_export.h"  // tools/k40t_bag: the exports, ROS-free
 #include "k40t_driver/ros/ros_params.h"
 
 namespace k40t::driver {

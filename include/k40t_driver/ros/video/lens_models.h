@@ -21,24 +21,12 @@
 
 #include "k40t_driver/ros/video/video_config.h"
 #include "k40t_driver/video/intrinsics.h"
+#include "k40t_driver/video/lens_zoom.h"
 
 namespace k40t::driver {
 
-// What the pod last said about its zoom.
-struct ZoomState {
-  double focal_length_mm = 0;  // 0: not reported yet
-  double zoom_ratio = 1;
-  int thermal_zoom = 1;
-};
-
-// The tele's optical and digital zoom factors relative to intrinsics taken at
-// `reference_focal_mm` (the calibration's focal length, or the 1x focal length of the nominal
-// optics).
-struct TeleZoom {
-  double optical = 1;
-  double digital = 1;
-};
-TeleZoom tele_zoom(const VideoConfig& config, const ZoomState& zoom, double reference_focal_mm);
+using video::TeleZoom;
+using video::ZoomState;
 
 class LensModels {
  public:

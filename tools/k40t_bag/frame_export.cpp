@@ -1,4 +1,4 @@
-#include "k40t_driver/ros/bag/frame_export.h"
+#include "frame_export.h"
 
 #include <sys/stat.h>
 
