@@ -7,6 +7,8 @@ file(GLOB_RECURSE K40T_CORE_SOURCES CONFIGURE_DEPENDS
   ${PROJECT_SOURCE_DIR}/src/operations/*.cpp)  # ROS-free logic of the driver's actions
 add_library(k40t_core STATIC ${K40T_CORE_SOURCES})
 target_include_directories(k40t_core PUBLIC ${PROJECT_SOURCE_DIR}/include)
+include(${CMAKE_CURRENT_LIST_DIR}/cfg_enum_names.cmake)  # the enum names of cfg/setting_enums.txt
+target_include_directories(k40t_core PRIVATE ${K40T_GENERATED_INCLUDE})
 target_link_libraries(k40t_core PUBLIC Threads::Threads util)
 set_target_properties(k40t_core PROPERTIES POSITION_INDEPENDENT_CODE ON)
 
@@ -38,5 +40,5 @@ endif()
 file(GLOB K40T_DRIVER_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/driver/*.cpp)
 add_library(k40t_driver_core STATIC ${K40T_DRIVER_SOURCES})
 target_include_directories(k40t_driver_core PUBLIC ${PROJECT_SOURCE_DIR}/include)
-target_link_libraries(k40t_driver_core PUBLIC k40t_core k40t_geo)
+target_link_libraries(k40t_driver_core PUBLIC k40t_core k40t_geo k40t_camera)
 set_target_properties(k40t_driver_core PROPERTIES POSITION_INDEPENDENT_CODE ON)

@@ -6,7 +6,7 @@
 
 #include <dynamic_reconfigure/config_tools.h>
 
-#include "k40t_driver/protocol/catalogue.h"
+#include "k40t_driver/protocol/message_id.h"
 
 namespace k40t::driver {
 
@@ -76,29 +76,22 @@ std::vector<std::string> parameters_of(const SettingBinding& binding) {
 
 namespace {
 
-std::string id_and_name(protocol::MessageId id) {
+std::string hex_id(protocol::MessageId id) {
   char hex[16];
   std::snprintf(hex, sizeof hex, "0x%06X", static_cast<unsigned>(id));
-  const protocol::MessageInfo* info = protocol::find_message(id);
-  return std::string(hex) + " `" + (info ? info->name : "?") + "`";
+  return hex;
 }
 
 }  // namespace
 
-std::string settings_table_markdown() {
-  std::string table =
-      "| setting | cfg parameters | request | read back from | service |\n"
-      "|---|---|---|---|---|\n";
-  for (const SettingBinding& binding : setting_bindings()) {
-    std::string parameters;
-    for (const std::string& name : parameters_of(binding)) {
-      parameters += (parameters.empty() ? "`" : ", `") + name + "`";
-    }
-    table += "| " + binding.name + " | " + parameters + " | " + id_and_name(binding.request) +
-             " | " + (binding.readable() ? id_and_name(binding.read_from) : "write-only") + " | " +
-             (binding.service.empty() ? "" : "`" + binding.service + "`") + " |\n";
+std::string settings_docs_cell(const SettingBinding& binding) {
+  std::string cell;
+  for (const std::string& name : parameters_of(binding)) {
+    cell += (cell.empty() ? "`" : ", `") + name + "`";
   }
-  return table;
+  cell += binding.readable() ? "; read back from " + hex_id(binding.read_from) : "; write-only";
+  if (!binding.service.empty()) cell += "; service `" + binding.service + "`";
+  return cell;
 }
 
 }  // namespace k40t::driver

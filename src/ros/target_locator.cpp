@@ -32,7 +32,9 @@ TargetLocator::TargetLocator(ros::NodeHandle nh, const ros::NodeHandle& private_
       camera_views_(nh) {
   vehicle_frame_ = private_nh.param<std::string>("vehicle_frame", ids_.base);
   uncertainty_ = read_uncertainty(private_nh);
-  private_nh.param("laser_axis_tolerance_px", laser_axis_tolerance_px_, laser_axis_tolerance_px_);
+  pixel_setup_ = {
+      vehicle_frame_, ids_.laser, uncertainty_,
+      private_nh.param("laser_axis_tolerance_px", pixel_setup_.laser_axis_tolerance_px)};
 
   target_local_ = nh.advertise<sensor_msgs::NavSatFix>("laser/target_local", 10);
   located_point_ = nh.advertise<geometry_msgs::PointStamped>("located_point", 1, true);
@@ -102,85 +104,51 @@ void TargetLocator::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) 
 
 bool TargetLocator::locate_pixel(k40t_driver::LocatePixel::Request& req,
                                  k40t_driver::LocatePixel::Response& res) {
-  auto fail = [&](const std::string& why) {
-    res.success = false;
-    res.message = why;
-    return true;
-  };
-  std::optional<std::pair<double, StampNs>> range;
+  std::optional<double> range_m;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    range = last_range_;
+    if (last_range_) range_m = last_range_->first;
   }
-  if (!std::isfinite(req.u) || !std::isfinite(req.v)) return fail("u, v must be finite");
+  res.success = false;
+  if (!std::isfinite(req.u) || !std::isfinite(req.v)) {
+    res.message = "u, v must be finite";
+    return true;
+  }
   // The image's camera_info, or in split screen the panel's that holds the pixel.
   const Result<sensor_msgs::CameraInfo> info = camera_views_.for_pixel(req.u, req.v);
-  if (!info) return fail(info.error());
-  if (req.u < 0 || req.v < 0 || (info->width > 0 && req.u > info->width) ||
-      (info->height > 0 && req.v > info->height))
-    return fail("u, v must be inside the " + std::to_string(info->width) + "x" +
-                std::to_string(info->height) + " image");
-  const camera::CameraModel lens = camera_model(info.value());
-  // Undistorted (OpenCV, with the camera_info's D) normalised coordinates of the pixel.
-  const Result<std::array<double, 2>> normalised = camera::pixel_to_normalised(lens, req.u, req.v);
-  if (!normalised) return fail(normalised.error());
-  if (req.plane_reference > k40t_driver::LocatePixel::Request::MSL)
-    return fail("plane_reference must be 0 (ABOVE_TAKEOFF) or 1 (MSL)");
-  if (!std::isfinite(req.plane_height)) return fail("plane_height must be finite");
-
+  if (!info) {
+    res.message = info.error();
+    return true;
+  }
   const ros::Time stamp = info->header.stamp;
-  const VehicleState state = driver_.vehicle_state_at(static_cast<StampNs>(stamp.toNSec()));
-  const Result<geo::VehiclePose> pose = vehicle_pose(state);
-  if (!pose) return fail(pose.error());
-  const std::string& camera = info->header.frame_id;
-  // Optical frame: z forward, x right, y down.
-  const geo::Vector3 optical{(*normalised)[0], (*normalised)[1], 1.0};
-  const Result<geo::BodyRay> ray = ray_in_vehicle(tf_, vehicle_frame_, camera, stamp, optical);
-  if (!ray) return fail(ray.error());
-
-  // Is the pixel on the laser axis? The laser's x axis projected into this image.
-  bool on_axis = false;
-  if (req.use_laser && range) {
-    const Result<geo::BodyRay> laser = ray_in_vehicle(tf_, camera, ids_.laser, stamp, {1, 0, 0});
-    const Result<std::array<double, 2>> spot =
-        laser ? camera::project_ray(lens, laser->direction)
-              : Result<std::array<double, 2>>::fail(laser.error());
-    if (spot)
-      on_axis = std::hypot((*spot)[0] - req.u, (*spot)[1] - req.v) <= laser_axis_tolerance_px_;
+  const CameraView view{camera_model(info.value()), info->width, info->height,
+                        info->header.frame_id};
+  const FrameRay frame_ray = [&](const std::string& target, const std::string& source,
+                                 const geo::Vector3& direction) {
+    return ray_in_vehicle(tf_, target, source, stamp, direction);
+  };
+  const PixelQuery query{req.u, req.v, req.plane_reference, req.plane_height, req.use_laser != 0};
+  const Result<PixelLocation> where = driver::locate_pixel(
+      query, view, driver_.vehicle_state_at(static_cast<StampNs>(stamp.toNSec())), range_m,
+      frame_ray, pixel_setup_);
+  if (!where) {
+    res.message = where.error();
+    return true;
   }
-  Result<geo::Located> located = Result<geo::Located>::fail("not located");
-  if (on_axis) {
-    located = geo::locate_at_range(pose.value(), ray.value(), range->first, uncertainty_);
-  } else {
-    const Result<double> plane_h = plane_height_ellipsoid(
-        state,
-        req.plane_reference == k40t_driver::LocatePixel::Request::ABOVE_TAKEOFF
-            ? PlaneReference::kAboveTakeoff
-            : PlaneReference::kMeanSeaLevel,
-        req.plane_height);
-    if (!plane_h) return fail(plane_h.error());
-    located = geo::locate_on_plane(pose.value(), ray.value(), plane_h.value() - state.altitude_m,
-                                   uncertainty_);
-    if (!located)
-      return fail("the pixel's ray misses the ground plane (above the horizon or beyond 10 km)");
-  }
-  if (!located) return fail(located.error());
-  const Result<double> msl = geo::Geoid::egm96().msl_from_ellipsoid(
-      located->position.latitude_deg, located->position.longitude_deg,
-      located->position.height_ellipsoid_m);
   res.success = true;
   res.message = "ok";
-  res.fix = to_nav_sat_fix(located.value(), stamp, camera);
-  res.altitude_msl = msl ? msl.value() : std::nan("");
-  res.slant_range = located->slant_range_m;
-  res.on_laser_axis = on_axis;
+  res.fix = to_nav_sat_fix(where->located, stamp, view.frame);
+  res.altitude_msl = where->altitude_msl ? *where->altitude_msl : std::nan("");
+  res.slant_range = where->located.slant_range_m;
+  res.on_laser_axis = where->on_laser_axis;
   // For rviz: the point in the camera frame, along the pixel's ray.
   geometry_msgs::PointStamped point;
   point.header = res.fix.header;
+  const geo::Vector3& optical = where->optical;
   const double n = std::sqrt(optical[0] * optical[0] + optical[1] * optical[1] + 1.0);
-  point.point.x = optical[0] / n * located->slant_range_m;
-  point.point.y = optical[1] / n * located->slant_range_m;
-  point.point.z = optical[2] / n * located->slant_range_m;
+  point.point.x = optical[0] / n * where->located.slant_range_m;
+  point.point.y = optical[1] / n * where->located.slant_range_m;
+  point.point.z = optical[2] / n * where->located.slant_range_m;
   located_point_.publish(point);
   located_fix_.publish(res.fix);
   return true;

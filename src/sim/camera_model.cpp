@@ -61,7 +61,7 @@ PhotoPixels photo_pixels(uint8_t resolution_code) {
 }
 
 double CameraModel::photo_size_mb(uint8_t lens_mode) const {
-  return photo_size_mb(lens_mode, visible_.photo_resolution);
+  return photo_size_mb(lens_mode, static_cast<uint8_t>(visible_.photo_resolution));
 }
 
 double CameraModel::photo_size_mb(uint8_t lens_mode, uint8_t resolution_code) const {
@@ -84,8 +84,9 @@ double CameraModel::photo_size_mb(uint8_t lens_mode, uint8_t resolution_code) co
 
 double CameraModel::video_rate_mb_s(uint8_t lens_mode) const {
   const double infrared = config_.infrared_video_mbps * kBytesPerBit;
-  const double visible =
-      visible_video_mbps(visible_.video_resolution, visible_.video_bitrate) * kBytesPerBit;
+  const double visible = visible_video_mbps(static_cast<uint8_t>(visible_.video_resolution),
+                                            visible_.video_bitrate_code) *
+                         kBytesPerBit;
   switch (lens_mode) {
     case 1:
       return infrared;
@@ -135,7 +136,7 @@ Outcome CameraModel::take_photo(uint8_t lens_mode, const std::string& folder,
   job.mode = settings_.photo_mode;
   job.folder = folder;
   job.name = name;
-  job.resolution = visible_.photo_resolution;
+  job.resolution = static_cast<uint8_t>(visible_.photo_resolution);
   job_ = job;
   return Outcome::kOk;
 }
@@ -206,14 +207,14 @@ Outcome CameraModel::start_tf_upgrade() {
 Outcome CameraModel::set_backlight(bool on, uint8_t value) {
   if (on && visible_.strong_light_on) return Outcome::kFailure;
   visible_.backlight_on = on;
-  visible_.backlight = value;
+  visible_.backlight_value = value;
   return Outcome::kOk;
 }
 
 Outcome CameraModel::set_strong_light(bool on, uint8_t value) {
   if (on && visible_.backlight_on) return Outcome::kFailure;
   visible_.strong_light_on = on;
-  visible_.strong_light = value;
+  visible_.strong_light_value = value;
   return Outcome::kOk;
 }
 
@@ -229,7 +230,7 @@ bool CameraModel::attach_gps(uint64_t photo_id, const GpsAnswer& answer) {
 
 void CameraModel::restore_defaults() {
   settings_ = CameraSettings{};
-  visible_ = VisibleSettings{};
+  visible_ = factory_visible_settings();
 }
 
 void CameraModel::abort_activity() {

@@ -39,4 +39,25 @@ double visible_video_mbps(uint8_t resolution, uint8_t bitrate) {
   }
 }
 
+VisibleSettings factory_visible_settings() {
+  namespace p = protocol;
+  VisibleSettings v;
+  v.photo_resolution = p::PhotoResolution::k4000x3000;
+  v.video_resolution = p::VideoResolution::k1920x1080;
+  v.video_bitrate_code = 1;  // 0..3 within the resolution's table
+  v.white_balance = p::WhiteBalance::kAuto;
+  v.ev = p::ExposureValue::kAuto;
+  v.iso = p::Iso::kAuto;
+  v.shutter = p::Shutter::kAuto;
+  v.zoom_fine_tune = 50;
+  v.backlight_on = false;
+  v.backlight_value = 0;
+  v.strong_light_on = false;
+  v.strong_light_value = 0;
+  v.ae_lock_on = false;
+  v.anti_flicker = p::AntiFlicker::kAuto;
+  v.metering = p::MeteringMode::kCenterWeighted;
+  return v;
+}
+
 }  // namespace k40t::sim

@@ -137,7 +137,7 @@ std::string run_photo_resolution(const Args& args, ControlTarget& target) {
   const auto code = number(args[0], "CODE", 0x14, 0x16);
   if (!code) return error(code.error());
   target.with_model([&](PodModel& pod) {
-    pod.camera().visible().photo_resolution = static_cast<uint8_t>(*code);
+    pod.camera().visible().photo_resolution = static_cast<protocol::PhotoResolution>(*code);
   });
   return "ok photo-resolution " + args[0];
 }

@@ -10,25 +10,10 @@ namespace {
 using namespace handlers;
 namespace p = protocol;
 
+// The read-all ACK is what the model keeps (camera_settings.h): every handler below writes it.
 p::VisibleSettingsAck read_all(RequestContext& ctx, const p::VisibleReadSettingsRequest&) {
-  const VisibleSettings& v = ctx.pod.camera().visible();
-  p::VisibleSettingsAck ack;
-  ack.photo_resolution = same_code<p::PhotoResolution>(v.photo_resolution);
-  ack.video_resolution = same_code<p::VideoResolution>(v.video_resolution);
-  ack.video_bitrate_code = v.video_bitrate;
-  ack.white_balance = same_code<p::WhiteBalance>(v.white_balance);
-  ack.ev = same_code<p::ExposureValue>(v.ev);
-  ack.iso = same_code<p::Iso>(v.iso);
-  ack.shutter = same_code<p::Shutter>(v.shutter);
-  ack.zoom_fine_tune = v.zoom_fine_tune;
-  ack.backlight_on = v.backlight_on;
-  ack.backlight_value = v.backlight;
-  ack.strong_light_on = v.strong_light_on;
-  ack.strong_light_value = v.strong_light;
-  ack.ae_lock_on = v.ae_lock;
-  ack.watermark_on = ctx.pod.camera().settings().watermark;
-  ack.anti_flicker = same_code<p::AntiFlicker>(v.anti_flicker);
-  ack.metering = same_code<p::MeteringMode>(v.metering);
+  p::VisibleSettingsAck ack = ctx.pod.camera().visible();
+  ack.watermark_on = ctx.pod.camera().settings().watermark;  // set by 0x000314
   return ack;
 }
 
@@ -36,6 +21,7 @@ VisibleSettings& visible_settings(PodModel& pod) {
   return pod.camera().visible();
 }
 
+// A setting the pod stores as it is and reports in 0x010200: ack.*field = request.*value.
 template <class Req, class Field, class Value>
 HandlerEntry visible_setting(Field VisibleSettings::*field, Value Req::*value) {
   return stored_setting<Req>(visible_settings, field, value);
@@ -64,7 +50,8 @@ void add_visible_handlers(std::vector<HandlerEntry>& out) {
       plain<p::VisibleBacklightRequest>([](PodModel& pod, const p::VisibleBacklightRequest& req) {
         return pod.camera().set_backlight(req.backlight_on, req.backlight_value);
       }));
-  out.push_back(visible_setting(&VisibleSettings::ae_lock, &p::VisibleAeLockRequest::ae_lock_on));
+  out.push_back(
+      visible_setting(&VisibleSettings::ae_lock_on, &p::VisibleAeLockRequest::ae_lock_on));
   out.push_back(visible_setting(&VisibleSettings::metering, &p::VisibleMeteringRequest::metering));
 }
 

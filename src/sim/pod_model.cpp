@@ -60,9 +60,11 @@ std::optional<Vec3> PodModel::laser_spot() const {
 Exposure PodModel::exposure() const {
   const VisibleSettings& v = camera_.visible();
   Exposure e;
-  e.ev_code = v.ev;
-  e.iso_db = iso_code_db(v.iso);
-  e.shutter_us = v.shutter != 0 ? shutter_code_us(v.shutter) : locked_shutter_us_;
+  e.ev_code = static_cast<uint8_t>(v.ev);
+  e.iso_db = iso_code_db(static_cast<uint8_t>(v.iso));
+  e.shutter_us = v.shutter != protocol::Shutter::kAuto
+                     ? shutter_code_us(static_cast<uint8_t>(v.shutter))
+                     : locked_shutter_us_;
   return e;
 }
 
@@ -168,14 +170,15 @@ void PodModel::step(double dt_s) {
   gimbal_.step(dt_s, events_);
   zoom_.step(dt_s, events_);
   camera_.step(dt_s, zoom_.zooming() || zoom_.focusing(), events_);
-  if (!camera_.visible().ae_lock) update_auto_exposure();
+  if (!camera_.visible().ae_lock_on) update_auto_exposure();
 }
 
 void PodModel::update_auto_exposure() {
   // The sky is brighter than the ground; EV shifts the choice by whole stops.
   const bool sky =
       world_.trace(direction(boresight_yaw_deg(), boresight_pitch_deg())).surface == Surface::kSky;
-  locked_shutter_us_ = (sky ? 500.0 : 2000.0) * std::pow(2.0, ev_stops(camera_.visible().ev));
+  locked_shutter_us_ =
+      (sky ? 500.0 : 2000.0) * std::pow(2.0, ev_stops(static_cast<uint8_t>(camera_.visible().ev)));
 }
 
 EventQueue PodModel::take_events() {

@@ -120,7 +120,7 @@ Result<p::Payload> visible_status(const PodModel& pod, const p::CodecOptions& co
   report.ev = same_code<p::ExposureValue>(exposure.ev_code);
   report.iso_db = exposure.iso_db;
   report.shutter_us = static_cast<uint16_t>(std::lround(exposure.shutter_us));
-  report.ae_lock_on = pod.camera().visible().ae_lock;
+  report.ae_lock_on = pod.camera().visible().ae_lock_on;
   report.focusing = pod.zoom().focusing();
   // The document gives this field no unit; read as 0.01 mm like the focal length.
   report.precise_shot_focal_length_mm = pod.camera().settings().precise_focal_length_raw / 100.0;

@@ -57,17 +57,18 @@ def test_value(description, current):
 
 
 def write_only_parameters():
-    """The cfg parameters of the write-only rows of the settings table in docs/ros_interface.md
-    (generated from the driver's settings table and checked against it by a unit test)."""
-    doc = os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "..", "docs", "ros_interface.md")
-    with open(doc) as f:
-        text = f.read()
-    table = text.split("<!-- settings table begin")[1].split("<!-- settings table end")[0]
-    rows = [[cell.strip() for cell in line.split("|")[1:-1]] for line in table.splitlines()[3:]]
+    """The cfg parameters whose "reconfigure" cell in the message tables of docs/protocol/*.md says
+    write-only (checked against the driver's settings table by a unit test)."""
+    folder = os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "..", "docs", "protocol")
     names = set()
-    for row in rows:
-        if row[3] == "write-only":
-            names.update(re.findall(r"`(\w+)`", row[1]))
+    for file_name in sorted(os.listdir(folder)):
+        if not file_name.endswith(".md"):
+            continue
+        with open(os.path.join(folder, file_name)) as f:
+            for line in f:
+                cells = [cell.strip() for cell in line.split("|")[1:-1]]
+                if cells and cells[0].startswith("0x") and cells[-1].endswith("; write-only"):
+                    names.update(re.findall(r"`(\w+)`", cells[-1]))
     return names
 
 
@@ -113,7 +114,7 @@ class Reconfigure(unittest.TestCase):
                 self.assertTrue(d["min"] <= value <= d["max"], "%s: %r outside the cfg range" % (key, value))
             if enum_values(d) is not None:
                 self.assertIn(value, enum_values(d), key)
-        self.assertTrue(self.write_only, "the docs' settings table lists no write-only setting")
+        self.assertTrue(self.write_only, "no reconfigure cell of docs/protocol/*.md says write-only")
 
     def test_every_parameter_round_trips_through_the_pod(self):
         # One at a time, so a refusal names its parameter.

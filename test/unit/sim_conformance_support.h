@@ -8,9 +8,12 @@
 #include <cmath>
 
 #include "k40t_driver/protocol/messages/gimbal.h"
+#include "request_with.h"
 #include "sim_link_harness.h"
 
 namespace k40t::sim::testing {
+
+using k40t::testing::request_with;
 
 using protocol::ResponseCode;
 
@@ -36,12 +39,16 @@ inline protocol::GimbalAngleRequest angles(double pitch_deg, double yaw_deg) {
   return request;
 }
 
+inline protocol::GimbalDialSpeedRequest dial_speed(double pitch_deg_s, double yaw_deg_s) {
+  protocol::GimbalDialSpeedRequest request;
+  request.pitch_speed_deg_s = pitch_deg_s;
+  request.yaw_speed_deg_s = yaw_deg_s;
+  return request;
+}
+
 // Turns the gimbal at full speed and waits until the attitude report shows it there.
 inline void aim(SimLink& link, double pitch_deg, double yaw_deg) {
-  protocol::GimbalDialSpeedRequest speed;
-  speed.pitch_speed_deg_s = 30;
-  speed.yaw_speed_deg_s = 30;
-  ASSERT_EQ(link.send(speed), ResponseCode::kOk);
+  ASSERT_EQ(link.send(dial_speed(30, 30)), ResponseCode::kOk);
   ASSERT_EQ(link.send(angles(pitch_deg, yaw_deg)), ResponseCode::kOk);
   ASSERT_TRUE(link.wait_report<protocol::GimbalAttitude>(
       [&](const protocol::GimbalAttitude& a) {

@@ -12,8 +12,11 @@
 #include "k40t_driver/sim/pod_model.h"
 #include "k40t_driver/sim/pod_reports.h"
 #include "k40t_driver/sim/request_handlers.h"
+#include "request_with.h"
 
 namespace k40t::sim::testing {
+
+using k40t::testing::request_with;
 
 class PodHarness {
  public:

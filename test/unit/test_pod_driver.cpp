@@ -118,15 +118,23 @@ TEST(PodDriver, RateCommandsStopHalfASecondAfterTheLast) {
   EXPECT_EQ(driver->stats().deadman_stops, 1u);
 }
 
-TEST(PodDriver, TimeSyncEveryPeriodWithTheWallClock) {
-  const std::string pty = unique_pty("timesync");
+// The first `count` time syncs of a driver that syncs every 0.25 s, its clock `offset_ms` off the
+// system clock (set_clock_offset_ms, as the SKYPORT's UTC does).
+std::vector<SentFrame> quarter_second_time_syncs(const char* name, size_t count,
+                                                 int64_t offset_ms) {
+  const std::string pty = unique_pty(name);
   FakePod pod(pty);
   DriverOptions o = options_for(pty);
   o.time_sync_period_s = 0.25;
   std::unique_ptr<PodDriver> driver = make_driver(o);
-  ASSERT_TRUE(driver->start().is_ok());
+  if (offset_ms != 0) driver->set_clock_offset_ms(offset_ms);
+  EXPECT_TRUE(driver->start().is_ok());
   wait_until_linked(pod, *driver);
-  const std::vector<SentFrame> syncs = wait_for_time_syncs(pod, 4);
+  return wait_for_time_syncs(pod, count);
+}
+
+TEST(PodDriver, TimeSyncEveryPeriodWithTheWallClock) {
+  const std::vector<SentFrame> syncs = quarter_second_time_syncs("timesync", 4, 0);
   ASSERT_GE(syncs.size(), 4u);
   const std::optional<int64_t> sent_ms = time_sync_ms(syncs.back());
   ASSERT_TRUE(sent_ms);
@@ -137,15 +145,7 @@ TEST(PodDriver, TimeSyncEveryPeriodWithTheWallClock) {
 
 TEST(PodDriver, TimeSyncFollowsABetterClock) {
   // The SKYPORT's UTC says the system clock is an hour ahead: the pod is set an hour back.
-  const std::string pty = unique_pty("timeref");
-  FakePod pod(pty);
-  DriverOptions o = options_for(pty);
-  o.time_sync_period_s = 0.25;
-  std::unique_ptr<PodDriver> driver = make_driver(o);
-  driver->set_clock_offset_ms(-3'600'000);
-  ASSERT_TRUE(driver->start().is_ok());
-  wait_until_linked(pod, *driver);
-  const std::vector<SentFrame> syncs = wait_for_time_syncs(pod, 2);
+  const std::vector<SentFrame> syncs = quarter_second_time_syncs("timeref", 2, -3'600'000);
   ASSERT_GE(syncs.size(), 2u);
   const std::optional<int64_t> sent_ms = time_sync_ms(syncs.back());
   ASSERT_TRUE(sent_ms);

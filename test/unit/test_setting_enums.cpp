@@ -1,8 +1,9 @@
 // cfg/setting_enums.txt, the one list of the enumerated settings' names that cfg/K40t.cfg builds
-// its constants from, against the C++ code that names or takes the same codes: every code is one
-// the protocol knows (to_string), the palettes, white balances, anti-flicker, gain, capture and
-// encoding names are the protocol's, the simulator's palettes are the same 20 under the same
-// names, and every setting request that takes an enum has its list.
+// its constants from and the build turns into the protocol's to_string() tables
+// (cmake/cfg_enum_names.cmake), against the C++ code that still names or takes the same codes:
+// every code is one the protocol knows (to_string), the names are the protocol's, the simulator's
+// palettes are the same 20 under the same names, and every setting request that takes an enum has
+// its list.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -10,6 +10,7 @@ namespace k40t::sim {
 namespace {
 
 namespace p = protocol;
+using testing::request_with;
 using p::ResponseCode;
 using testing::PodHarness;
 
@@ -41,15 +42,12 @@ TEST(SimCameraRequests, ModesAndPhotoSettingsShowInTheSystemStatus) {
   settings.time_lapse_interval_s = 30;
   settings.burst_count = 5;
   EXPECT_EQ(h.send(settings), ResponseCode::kOk);
-  p::StreamBitrateRequest bitrate;
-  bitrate.bitrate = p::StreamBitrate::k12Mbps;
-  EXPECT_EQ(h.send(bitrate), ResponseCode::kOk);
-  p::StreamEncodingRequest encoding;
-  encoding.encoding = p::VideoEncoding::kH265;
-  EXPECT_EQ(h.send(encoding), ResponseCode::kOk);
-  p::ImageModeRequest image;
-  image.mode = p::ImageMode::kSplit;
-  EXPECT_EQ(h.send(image), ResponseCode::kOk);
+  EXPECT_EQ(h.send(request_with(&p::StreamBitrateRequest::bitrate, p::StreamBitrate::k12Mbps)),
+            ResponseCode::kOk);
+  EXPECT_EQ(h.send(request_with(&p::StreamEncodingRequest::encoding, p::VideoEncoding::kH265)),
+            ResponseCode::kOk);
+  EXPECT_EQ(h.send(request_with(&p::ImageModeRequest::mode, p::ImageMode::kSplit)),
+            ResponseCode::kOk);
 
   const auto status = h.report<p::CameraSystemStatus>();
   EXPECT_EQ(status.capture_mode, p::CaptureMode::kVideo);
@@ -149,23 +147,19 @@ TEST(SimCameraRequests, BadPayloadsAreRefusedAndUnknownIdsIgnored) {
 
 TEST(SimCameraRequests, ZoomMovesAndReportsItsStatus) {
   PodHarness h;
-  p::ZoomRatioRequest zoom;
-  zoom.zoom_x = 4.0;
-  EXPECT_EQ(h.send(zoom), ResponseCode::kOk);
+  EXPECT_EQ(h.send(request_with(&p::ZoomRatioRequest::zoom_x, 4.0)), ResponseCode::kOk);
   h.run(1.2);
   const auto frames = h.status_frames<p::ZoomStatus>();
   ASSERT_GE(frames.size(), 2u);
   EXPECT_EQ(frames.front().progress, p::ZoomProgress::kZooming);
   EXPECT_EQ(frames.back().progress, p::ZoomProgress::kDone);
   EXPECT_DOUBLE_EQ(h.pod.zoom().zoom(), 4.0);
-  p::ContinuousZoomRequest step;
-  step.command = p::ZoomCommand::kStepOut;
-  EXPECT_EQ(h.send(step), ResponseCode::kOk);
+  EXPECT_EQ(h.send(request_with(&p::ContinuousZoomRequest::command, p::ZoomCommand::kStepOut)),
+            ResponseCode::kOk);
   h.run(1.0);
   EXPECT_NEAR(h.pod.zoom().zoom(), 4.0 / std::sqrt(2.0), 1e-9);
-  p::FocusRequest focus;
-  focus.command = p::FocusCommand::kOneShot;
-  EXPECT_EQ(h.send(focus), ResponseCode::kOk);
+  EXPECT_EQ(h.send(request_with(&p::FocusRequest::command, p::FocusCommand::kOneShot)),
+            ResponseCode::kOk);
   EXPECT_TRUE(h.pod.zoom().focusing());
 }
 
@@ -214,9 +208,7 @@ TEST(SimCameraRequests, SystemRequestsAnswerWithData) {
   ASSERT_EQ(h.pod.camera().photos().size(), 1u);
   EXPECT_EQ(h.pod.camera().photos()[0].path, "IMG_20250304_130607_099.jpg");
 
-  p::OsdWatermarkRequest osd;
-  osd.enabled = true;
-  EXPECT_EQ(h.send(osd), ResponseCode::kOk);
+  EXPECT_EQ(h.send(request_with(&p::OsdWatermarkRequest::enabled, true)), ResponseCode::kOk);
   EXPECT_TRUE(h.pod.camera().settings().watermark);
 }
 

@@ -74,9 +74,8 @@ TEST(SimConformance, BurstRecordingAndModeRules) {
   record.lens = p::RecordLensMode::kVisible;
   record.action = p::RecordAction::kStart;
   EXPECT_EQ(link.send(record), ResponseCode::kFailure);  // photo mode
-  p::CaptureModeRequest video;
-  video.mode = p::CaptureMode::kVideo;
-  EXPECT_EQ(link.send(video), ResponseCode::kOk);
+  EXPECT_EQ(link.send(request_with(&p::CaptureModeRequest::mode, p::CaptureMode::kVideo)),
+            ResponseCode::kOk);
   EXPECT_EQ(link.send(record), ResponseCode::kOk);
   EXPECT_EQ(link.send(photo), ResponseCode::kRecording);
   EXPECT_TRUE(link.wait_report<p::RecordStatus>(
@@ -97,18 +96,13 @@ TEST(SimConformance, BurstRecordingAndModeRules) {
 
 TEST(SimConformance, StreamNetworkAiAndSystemRequests) {
   SimLink link(quick_pod());
-  p::StreamBitrateRequest bitrate;
-  bitrate.bitrate = p::StreamBitrate::k2Mbps;
-  p::StreamResolutionRequest resolution;
-  resolution.resolution = p::StreamResolution::k1080p30;
-  p::StreamEncodingRequest encoding;
-  encoding.encoding = p::VideoEncoding::kH265;
-  p::ImageModeRequest image;
-  image.mode = p::ImageMode::kInfrared;
-  p::OsdWatermarkRequest osd;
-  osd.enabled = true;
-  for (ResponseCode code : {link.send(bitrate), link.send(resolution), link.send(encoding),
-                            link.send(image), link.send(osd)}) {
+  for (ResponseCode code :
+       {link.send(request_with(&p::StreamBitrateRequest::bitrate, p::StreamBitrate::k2Mbps)),
+        link.send(
+            request_with(&p::StreamResolutionRequest::resolution, p::StreamResolution::k1080p30)),
+        link.send(request_with(&p::StreamEncodingRequest::encoding, p::VideoEncoding::kH265)),
+        link.send(request_with(&p::ImageModeRequest::mode, p::ImageMode::kInfrared)),
+        link.send(request_with(&p::OsdWatermarkRequest::enabled, true))}) {
     EXPECT_EQ(code, ResponseCode::kOk);
   }
   EXPECT_TRUE(link.wait_report<p::CameraSystemStatus>([](const p::CameraSystemStatus& s) {
@@ -133,9 +127,8 @@ TEST(SimConformance, StreamNetworkAiAndSystemRequests) {
   track.width_px = 100;
   track.height_px = 100;
   EXPECT_EQ(link.send(track), ResponseCode::kFailure);  // AI recognition is off
-  p::AiRecognitionRequest ai;
-  ai.recognition = p::FeatureSwitch::kOn;
-  EXPECT_EQ(link.send(ai), ResponseCode::kOk);
+  EXPECT_EQ(link.send(request_with(&p::AiRecognitionRequest::recognition, p::FeatureSwitch::kOn)),
+            ResponseCode::kOk);
   EXPECT_EQ(link.send(track), ResponseCode::kOk);
 
   p::PreciseReshootRequest reshoot;
@@ -186,9 +179,8 @@ TEST(SimConformance, NoSdCardRefusesPhotos) {
 
 TEST(SimConformance, ShutdownAndFactoryReset) {
   SimLink link(quick_pod());
-  p::CaptureModeRequest video;
-  video.mode = p::CaptureMode::kVideo;
-  EXPECT_EQ(link.send(video), ResponseCode::kOk);
+  EXPECT_EQ(link.send(request_with(&p::CaptureModeRequest::mode, p::CaptureMode::kVideo)),
+            ResponseCode::kOk);
   EXPECT_EQ(link.send(p::FactoryResetRequest{}), ResponseCode::kOk);
   // The camera restarts: its link drops in 0x000001, then it comes back with factory settings.
   EXPECT_TRUE(link.wait_report<p::GimbalStatus>(
@@ -303,9 +295,8 @@ TEST(SimConformance, LittleEndianAcks) {
   EXPECT_EQ(range.code, ResponseCode::kOk);
   EXPECT_NEAR(range.distance_m, 30.0, 0.05);
   EXPECT_EQ(link.send(p::TakePhotoRequest{}), ResponseCode::kOk);
-  p::CaptureModeRequest video;
-  video.mode = p::CaptureMode::kVideo;
-  EXPECT_EQ(link.send(video), ResponseCode::kPhotoInProgress);  // 0x0203, read little-endian
+  EXPECT_EQ(link.send(request_with(&p::CaptureModeRequest::mode, p::CaptureMode::kVideo)),
+            ResponseCode::kPhotoInProgress);  // 0x0203, read little-endian
 }
 
 }  // namespace

@@ -19,10 +19,7 @@ using namespace std::chrono_literals;
 
 TEST(SimConformance, GimbalMovesAsCommandedAtTheDialSpeed) {
   SimLink link(quick_pod());
-  p::GimbalDialSpeedRequest speed;
-  speed.pitch_speed_deg_s = 10;
-  speed.yaw_speed_deg_s = 20;
-  EXPECT_EQ(link.send(speed), ResponseCode::kOk);
+  EXPECT_EQ(link.send(dial_speed(10, 20)), ResponseCode::kOk);
   EXPECT_EQ(link.send(angles(-10, 40)), ResponseCode::kOk);
   // Moving: the reported rates are the dial speeds.
   const auto moving = link.wait_report<p::GimbalAttitude>(
@@ -37,27 +34,22 @@ TEST(SimConformance, GimbalMovesAsCommandedAtTheDialSpeed) {
   EXPECT_NEAR(there->yaw_deg, 40, 0.001);  // attitude: level vehicle heading north
   EXPECT_NEAR(there->pitch_deg, -10, 0.001);
 
-  p::GimbalControlRequest right;
-  right.yaw = p::GimbalYawDirection::kRight;
-  EXPECT_EQ(link.send(right), ResponseCode::kOk);
+  EXPECT_EQ(link.send(request_with(&p::GimbalControlRequest::yaw, p::GimbalYawDirection::kRight)),
+            ResponseCode::kOk);
   ASSERT_TRUE(link.wait_report<p::GimbalAttitude>(
       [](const p::GimbalAttitude& a) { return a.joint_yaw_deg > 45; }));
   EXPECT_EQ(link.send(p::GimbalControlRequest{}), ResponseCode::kOk);  // stop, stop
   ASSERT_TRUE(link.wait_report<p::GimbalAttitude>(
       [](const p::GimbalAttitude& a) { return a.yaw_rate_deg_s == 0; }));
 
-  speed.pitch_speed_deg_s = 30;
-  speed.yaw_speed_deg_s = 30;
-  EXPECT_EQ(link.send(speed), ResponseCode::kOk);
-  p::GimbalControlRequest look_down;
-  look_down.mode = p::GimbalMode::kLookDown;
-  EXPECT_EQ(link.send(look_down), ResponseCode::kOk);
+  EXPECT_EQ(link.send(dial_speed(30, 30)), ResponseCode::kOk);
+  EXPECT_EQ(link.send(request_with(&p::GimbalControlRequest::mode, p::GimbalMode::kLookDown)),
+            ResponseCode::kOk);
   EXPECT_TRUE(link.wait_report<p::GimbalAttitude>(
       [](const p::GimbalAttitude& a) { return a.joint_pitch_deg == -90 && a.joint_yaw_deg == 0; },
       15s));
-  p::GimbalControlRequest centre;
-  centre.mode = p::GimbalMode::kCentre;
-  EXPECT_EQ(link.send(centre), ResponseCode::kOk);
+  EXPECT_EQ(link.send(request_with(&p::GimbalControlRequest::mode, p::GimbalMode::kCentre)),
+            ResponseCode::kOk);
   EXPECT_TRUE(link.wait_report<p::GimbalAttitude>(
       [](const p::GimbalAttitude& a) { return a.joint_pitch_deg == 0 && a.joint_yaw_deg == 0; },
       15s));
@@ -65,10 +57,7 @@ TEST(SimConformance, GimbalMovesAsCommandedAtTheDialSpeed) {
 
 TEST(SimConformance, GimbalPointAtUsesTheLensFieldOfView) {
   SimLink link(quick_pod());
-  p::GimbalDialSpeedRequest speed;
-  speed.pitch_speed_deg_s = 30;
-  speed.yaw_speed_deg_s = 30;
-  ASSERT_EQ(link.send(speed), ResponseCode::kOk);
+  ASSERT_EQ(link.send(dial_speed(30, 30)), ResponseCode::kOk);
   p::GimbalPointAtRequest point;
   point.lens = p::GimbalAimLens::kThermal;
   point.zoom_x = 1;
@@ -92,15 +81,14 @@ TEST(SimConformance, GimbalServoStabilisationVersionAndRestart) {
   EXPECT_TRUE(link.wait_report<p::GimbalStatus>([](const p::GimbalStatus& s) {
     return s.stabilisation == p::GimbalStabilisationState::kOff;
   }));
-  p::GimbalControlRequest centre;
-  centre.mode = p::GimbalMode::kCentre;
-  EXPECT_EQ(link.send(centre), ResponseCode::kOk);  // the servo comes back on
+  EXPECT_EQ(link.send(request_with(&p::GimbalControlRequest::mode, p::GimbalMode::kCentre)),
+            ResponseCode::kOk);  // the servo comes back on
   EXPECT_TRUE(link.wait_report<p::GimbalStatus>([](const p::GimbalStatus& s) {
     return s.stabilisation == p::GimbalStabilisationState::kStabilising;
   }));
-  p::GimbalStabilisationRequest stabilisation;
-  stabilisation.enable = false;
-  EXPECT_EQ(link.send(stabilisation), ResponseCode::kOk);
+  EXPECT_EQ(link.send(request_with<p::GimbalStabilisationRequest>(
+                &p::GimbalStabilisationRequest::enable, false)),
+            ResponseCode::kOk);
   EXPECT_TRUE(link.wait_report<p::GimbalStatus>([](const p::GimbalStatus& s) {
     return s.stabilisation == p::GimbalStabilisationState::kOff;
   }));

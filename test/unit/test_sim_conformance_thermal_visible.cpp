@@ -29,23 +29,9 @@ TEST(SimConformance, ThermalSettingsAreStoredAndReadBack) {
 
   p::ThermalPaletteRequest palette;
   palette.palette = p::Palette::kIronRed;
-  p::ThermalZoomRequest zoom;
-  zoom.zoom_x = 2;
-  p::ThermalSharpnessRequest sharpness;
-  sharpness.sharpness = 40;
-  p::ThermalBrightnessRequest brightness;
-  brightness.brightness = 60;
-  p::ThermalContrastRequest contrast;
-  contrast.contrast = 70;
   p::ThermalDenoiseRequest denoise;
   denoise.denoise_on = true;
   denoise.denoise_level = 30;
-  p::ThermalEnhancementRequest enhancement;
-  enhancement.enhancement_level = 4;
-  p::ThermalGainModeRequest gain;
-  gain.gain_mode = p::ThermalGainMode::kLow;
-  p::ThermalOverlayRequest overlay;
-  overlay.overlay_on = true;
   p::ThermalAlarmsRequest alarms;
   alarms.high_alarm_on = true;
   alarms.high_alarm_degC = 80;
@@ -61,9 +47,14 @@ TEST(SimConformance, ThermalSettingsAreStoredAndReadBack) {
   area.center_x_px = 800;
   area.center_y_px = 528;
   for (ResponseCode code :
-       {link.send(palette), link.send(zoom), link.send(sharpness), link.send(brightness),
-        link.send(contrast), link.send(denoise), link.send(enhancement), link.send(gain),
-        link.send(overlay), link.send(alarms), link.send(threshold), link.send(area)}) {
+       {link.send(palette), link.send(request_with(&p::ThermalZoomRequest::zoom_x, 2)),
+        link.send(request_with(&p::ThermalSharpnessRequest::sharpness, 40)),
+        link.send(request_with(&p::ThermalBrightnessRequest::brightness, 60)),
+        link.send(request_with(&p::ThermalContrastRequest::contrast, 70)), link.send(denoise),
+        link.send(request_with(&p::ThermalEnhancementRequest::enhancement_level, 4)),
+        link.send(request_with(&p::ThermalGainModeRequest::gain_mode, p::ThermalGainMode::kLow)),
+        link.send(request_with(&p::ThermalOverlayRequest::overlay_on, true)), link.send(alarms),
+        link.send(threshold), link.send(area)}) {
     EXPECT_EQ(code, ResponseCode::kOk);
   }
   const auto s = link.ask(p::ThermalReadSettingsRequest{});
@@ -100,9 +91,8 @@ TEST(SimConformance, ThermalSettingsAreStoredAndReadBack) {
 TEST(SimConformance, ThermalMeasurementSwitchStartsAndStopsTheReport) {
   SimLink link(quick_pod());
   ASSERT_TRUE(link.wait_for([&] { return link.count(p::ThermalStatus::kId) > 0; }));
-  p::ThermalMeasurementRequest off;
-  off.measurement_on = false;
-  EXPECT_EQ(link.send(off), ResponseCode::kOk);
+  EXPECT_EQ(link.send(request_with(&p::ThermalMeasurementRequest::measurement_on, false)),
+            ResponseCode::kOk);
   std::this_thread::sleep_for(300ms);  // frames already on their way
   const size_t after_off = link.count(p::ThermalStatus::kId);
   // Other reports go on meanwhile; thermal ones do not.
@@ -110,9 +100,8 @@ TEST(SimConformance, ThermalMeasurementSwitchStartsAndStopsTheReport) {
   ASSERT_TRUE(
       link.wait_for([&] { return link.count(p::VisibleStatus::kId) >= visible_before + 5; }));
   EXPECT_EQ(link.count(p::ThermalStatus::kId), after_off);
-  p::ThermalMeasurementRequest on;
-  on.measurement_on = true;
-  EXPECT_EQ(link.send(on), ResponseCode::kOk);
+  EXPECT_EQ(link.send(request_with(&p::ThermalMeasurementRequest::measurement_on, true)),
+            ResponseCode::kOk);
   EXPECT_TRUE(link.wait_for([&] { return link.count(p::ThermalStatus::kId) > after_off; }));
 }
 
@@ -154,30 +143,24 @@ TEST(SimConformance, ThermalStatsFollowTheSceneAndTripAlarms) {
 
 TEST(SimConformance, VisibleSettingsAreStoredReadBackAndReported) {
   SimLink link(quick_pod());
-  p::VisibleVideoResolutionRequest video;
-  video.video_resolution = p::VideoResolution::k3840x2160;
-  p::VisiblePhotoResolutionRequest photo;
-  photo.photo_resolution = p::PhotoResolution::k8000x6000;
-  p::VisibleIsoRequest iso;
-  iso.iso = p::Iso::k400;
-  p::VisibleShutterRequest shutter;
-  shutter.shutter = p::Shutter::k1_1000;
   p::VisibleEvRequest ev;
   ev.ev = p::ExposureValue::kPlus1;
-  p::VisibleWhiteBalanceRequest white;
-  white.white_balance = p::WhiteBalance::kDaylight;
-  p::VisibleAntiFlickerRequest flicker;
-  flicker.anti_flicker = p::AntiFlicker::k50Hz;
   p::VisibleStrongLightRequest strong;
   strong.strong_light_on = true;
   strong.strong_light_value = 40;
-  p::VisibleAeLockRequest ae;
-  ae.ae_lock_on = true;
-  p::VisibleMeteringRequest metering;
-  metering.metering = p::MeteringMode::kAverage;
-  for (ResponseCode code : {link.send(video), link.send(photo), link.send(iso), link.send(shutter),
-                            link.send(ev), link.send(white), link.send(flicker), link.send(strong),
-                            link.send(ae), link.send(metering)}) {
+  for (ResponseCode code :
+       {link.send(request_with(&p::VisibleVideoResolutionRequest::video_resolution,
+                               p::VideoResolution::k3840x2160)),
+        link.send(request_with(&p::VisiblePhotoResolutionRequest::photo_resolution,
+                               p::PhotoResolution::k8000x6000)),
+        link.send(request_with(&p::VisibleIsoRequest::iso, p::Iso::k400)),
+        link.send(request_with(&p::VisibleShutterRequest::shutter, p::Shutter::k1_1000)),
+        link.send(ev),
+        link.send(request_with(&p::VisibleWhiteBalanceRequest::white_balance,
+                               p::WhiteBalance::kDaylight)),
+        link.send(request_with(&p::VisibleAntiFlickerRequest::anti_flicker, p::AntiFlicker::k50Hz)),
+        link.send(strong), link.send(request_with(&p::VisibleAeLockRequest::ae_lock_on, true)),
+        link.send(request_with(&p::VisibleMeteringRequest::metering, p::MeteringMode::kAverage))}) {
     EXPECT_EQ(code, ResponseCode::kOk);
   }
   p::VisibleBacklightRequest backlight;

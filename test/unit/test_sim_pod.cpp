@@ -46,18 +46,18 @@ TEST(SimPod, AutoExposureIsFasterOnTheSkyAndAeLockHoldsIt) {
   ASSERT_EQ(pod.gimbal().command_angles(20.0, std::nullopt), Outcome::kOk);
   run(pod, 1.0);
   EXPECT_DOUBLE_EQ(pod.exposure().shutter_us, 500);
-  pod.camera().visible().ae_lock = true;
+  pod.camera().visible().ae_lock_on = true;
   ASSERT_EQ(pod.gimbal().command_angles(-60.0, std::nullopt), Outcome::kOk);
   run(pod, 3.0);
   EXPECT_DOUBLE_EQ(pod.exposure().shutter_us, 500);
-  pod.camera().visible().ae_lock = false;
+  pod.camera().visible().ae_lock_on = false;
   run(pod, 0.1);
   EXPECT_DOUBLE_EQ(pod.exposure().shutter_us, 2000);
-  pod.camera().visible().ev = 0x10;  // +1 EV: twice as long
+  pod.camera().visible().ev = protocol::ExposureValue::kPlus1;  // 0x10: twice as long
   run(pod, 0.1);
   EXPECT_DOUBLE_EQ(pod.exposure().shutter_us, 4000);
-  pod.camera().visible().shutter = 0x09;  // manual 1/1000
-  pod.camera().visible().iso = 0x03;      // ISO 400: 12 dB
+  pod.camera().visible().shutter = protocol::Shutter::k1_1000;  // 0x09, manual
+  pod.camera().visible().iso = protocol::Iso::k400;             // 0x03: 12 dB
   EXPECT_DOUBLE_EQ(pod.exposure().shutter_us, 1000);
   EXPECT_NEAR(pod.exposure().iso_db, 12.04, 0.01);
 }

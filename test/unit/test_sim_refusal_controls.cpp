@@ -43,9 +43,9 @@ TEST(SimRefuse, BadArgumentsAreErrors) {
 TEST(SimPhotoResolution, SetsWhatTheCameraReports) {
   FakeTarget target;
   EXPECT_EQ(execute_control_command("photo-resolution 0x16", target).rfind("ok", 0), 0u);
-  EXPECT_EQ(target.pod.camera().visible().photo_resolution, 0x16);
+  EXPECT_EQ(target.pod.camera().visible().photo_resolution, protocol::PhotoResolution::k5160x3870);
   EXPECT_EQ(execute_control_command("photo-resolution 0x17", target).rfind("error", 0), 0u);
-  EXPECT_EQ(target.pod.camera().visible().photo_resolution, 0x16);
+  EXPECT_EQ(target.pod.camera().visible().photo_resolution, protocol::PhotoResolution::k5160x3870);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@ namespace k40t::sim {
 namespace {
 
 namespace p = protocol;
+using testing::request_with;
 using p::ResponseCode;
 using testing::PodHarness;
 
@@ -22,22 +23,17 @@ TEST(SimThermalRequests, SettingsAreStoredAndReadBack) {
   EXPECT_TRUE(defaults.measurement_on);
   EXPECT_EQ(defaults.core_type, p::ThermalCoreType::kRadiometric);
 
-  p::ThermalPaletteRequest palette;
-  palette.palette = p::Palette::kRainbow;
-  EXPECT_EQ(h.send(palette), ResponseCode::kOk);
-  p::ThermalZoomRequest zoom;
-  zoom.zoom_x = 4;
-  EXPECT_EQ(h.send(zoom), ResponseCode::kOk);
+  EXPECT_EQ(h.send(request_with(&p::ThermalPaletteRequest::palette, p::Palette::kRainbow)),
+            ResponseCode::kOk);
+  EXPECT_EQ(h.send(request_with(&p::ThermalZoomRequest::zoom_x, 4)), ResponseCode::kOk);
   p::ThermalDenoiseRequest denoise;
   denoise.denoise_on = true;
   denoise.denoise_level = 66;
   EXPECT_EQ(h.send(denoise), ResponseCode::kOk);
-  p::ThermalEnhancementRequest enhancement;
-  enhancement.enhancement_level = 7;
-  EXPECT_EQ(h.send(enhancement), ResponseCode::kOk);
-  p::ThermalGainModeRequest gain;
-  gain.gain_mode = p::ThermalGainMode::kAuto;
-  EXPECT_EQ(h.send(gain), ResponseCode::kOk);
+  EXPECT_EQ(h.send(request_with(&p::ThermalEnhancementRequest::enhancement_level, 7)),
+            ResponseCode::kOk);
+  EXPECT_EQ(h.send(request_with(&p::ThermalGainModeRequest::gain_mode, p::ThermalGainMode::kAuto)),
+            ResponseCode::kOk);
   p::ThermalAlarmsRequest alarms;
   alarms.difference_alarm_on = true;
   alarms.difference_alarm_degC = 25.5;
@@ -93,9 +89,8 @@ TEST(SimThermalRequests, MeasurementOffStopsTheReport) {
     return false;
   };
   EXPECT_TRUE(active());
-  p::ThermalMeasurementRequest off;
-  off.measurement_on = false;
-  EXPECT_EQ(h.send(off), ResponseCode::kOk);
+  EXPECT_EQ(h.send(request_with(&p::ThermalMeasurementRequest::measurement_on, false)),
+            ResponseCode::kOk);
   EXPECT_FALSE(active());
   EXPECT_FALSE(h.ask(p::ThermalReadSettingsRequest{}).measurement_on);
 }
@@ -119,9 +114,7 @@ TEST(SimThermalRequests, ReportFollowsTheGimbalAndTripsAlarms) {
   const auto alarmed = h.report<p::ThermalStatus>();
   EXPECT_TRUE(alarmed.high_alarm);
   EXPECT_FALSE(alarmed.low_alarm);
-  p::ThermalZoomRequest zoom;
-  zoom.zoom_x = 2;
-  EXPECT_EQ(h.send(zoom), ResponseCode::kOk);
+  EXPECT_EQ(h.send(request_with(&p::ThermalZoomRequest::zoom_x, 2)), ResponseCode::kOk);
   ASSERT_EQ(h.pod.gimbal().command_angles(pitch_of(hot), yaw_of(hot) - 2), Outcome::kOk);
   h.run(1.0);
   const auto zoomed = h.report<p::ThermalStatus>();
@@ -130,15 +123,15 @@ TEST(SimThermalRequests, ReportFollowsTheGimbalAndTripsAlarms) {
 
 TEST(SimVisibleRequests, SettingsAreStoredAndReadBack) {
   PodHarness h;
-  p::VisibleVideoResolutionRequest video;
-  video.video_resolution = p::VideoResolution::k4000x3000;
-  EXPECT_EQ(h.send(video), ResponseCode::kOk);
-  p::VisibleWhiteBalanceRequest white;
-  white.white_balance = p::WhiteBalance::kCloudy;
-  EXPECT_EQ(h.send(white), ResponseCode::kOk);
-  p::VisibleMeteringRequest metering;
-  metering.metering = p::MeteringMode::kCenterWeighted;
-  EXPECT_EQ(h.send(metering), ResponseCode::kOk);
+  EXPECT_EQ(h.send(request_with(&p::VisibleVideoResolutionRequest::video_resolution,
+                                p::VideoResolution::k4000x3000)),
+            ResponseCode::kOk);
+  EXPECT_EQ(
+      h.send(request_with(&p::VisibleWhiteBalanceRequest::white_balance, p::WhiteBalance::kCloudy)),
+      ResponseCode::kOk);
+  EXPECT_EQ(
+      h.send(request_with(&p::VisibleMeteringRequest::metering, p::MeteringMode::kCenterWeighted)),
+      ResponseCode::kOk);
   p::VisibleBacklightRequest backlight;
   backlight.backlight_on = true;
   backlight.backlight_value = 35;
@@ -161,15 +154,10 @@ TEST(SimVisibleRequests, ExposureAndZoomShowInTheStatus) {
   auto status = h.report<p::VisibleStatus>();
   EXPECT_EQ(status.ev, p::ExposureValue::kAuto);
   EXPECT_EQ(status.shutter_us, 500);  // auto, looking at the horizon: sky above the centre line
-  p::VisibleShutterRequest shutter;
-  shutter.shutter = p::Shutter::k1_6000;
-  EXPECT_EQ(h.send(shutter), ResponseCode::kOk);
-  p::VisibleIsoRequest iso;
-  iso.iso = p::Iso::k6400;
-  EXPECT_EQ(h.send(iso), ResponseCode::kOk);
-  p::VisibleAeLockRequest ae;
-  ae.ae_lock_on = true;
-  EXPECT_EQ(h.send(ae), ResponseCode::kOk);
+  EXPECT_EQ(h.send(request_with(&p::VisibleShutterRequest::shutter, p::Shutter::k1_6000)),
+            ResponseCode::kOk);
+  EXPECT_EQ(h.send(request_with(&p::VisibleIsoRequest::iso, p::Iso::k6400)), ResponseCode::kOk);
+  EXPECT_EQ(h.send(request_with(&p::VisibleAeLockRequest::ae_lock_on, true)), ResponseCode::kOk);
   status = h.report<p::VisibleStatus>();
   EXPECT_EQ(status.shutter_us, 167);  // docs/protocol/decisions.md#a7: 0x0D = 1/6000
   EXPECT_NEAR(status.iso_db, 36.1, 0.05);

@@ -281,7 +281,7 @@ TEST(VisibleEnums, NamesOfTheDocument) {
   EXPECT_STREQ(to_string(ExposureValue::kPlus2), "+2");
   EXPECT_STREQ(to_string(ExposureValue::kZero), "0");
   EXPECT_STREQ(to_string(ExposureValue::kMinus2), "-2");
-  EXPECT_STREQ(to_string(Iso::k6400), "iso6400");
+  EXPECT_STREQ(to_string(Iso::k6400), "ISO 6400");
   EXPECT_STREQ(to_string(WhiteBalance::kWarmFluorescent), "warm_fluorescent");
   EXPECT_STREQ(to_string(WhiteBalance::kDark), "dark");
   EXPECT_STREQ(to_string(AntiFlicker::k50Hz), "50hz");

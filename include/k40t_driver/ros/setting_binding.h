@@ -1,8 +1,9 @@
 // One entry per pod setting (src/ros/settings_bindings.cpp): the dynamic_reconfigure parameters
 // of cfg/K40t.cfg it covers, the request that sets them, the report that reads them back (or none:
-// write-only), and the service that also writes it. The settings sync, the read-back, the docs
-// table of docs/ros_interface.md ("Settings") and the tests are derived from this table; a unit
-// test fails when a cfg parameter has no entry or an entry covers no cfg parameter.
+// write-only), and the service that also writes it. The settings sync, the read-back and the
+// tests are derived from this table, and the "reconfigure" column of docs/protocol/*.md is checked
+// against it; a unit test fails when a cfg parameter has no entry or an entry covers no cfg
+// parameter.
 #pragma once
 
 #include <string>
@@ -29,7 +30,9 @@ std::vector<std::string> parameters_of(const SettingBinding& binding);
 // Read-back: the pod's reports -> the parameters they carry, for every binding read from them.
 void absorb(Config& config, const SettingReports& reports);
 
-// The table of docs/ros_interface.md ("Settings"), one row per binding (markdown).
-std::string settings_table_markdown();
+// The binding's cell in the "reconfigure" column of its request's row in docs/protocol/*.md: its
+// cfg parameters, where it is read back from (or write-only) and the service that also writes it,
+// e.g. "`palette`; read back from 0x010100; service `set_palette`".
+std::string settings_docs_cell(const SettingBinding& binding);
 
 }  // namespace k40t::driver

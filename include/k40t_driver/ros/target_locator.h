@@ -6,8 +6,8 @@
 //                       from the fix, ~attitude_sigma, ~pointing_sigma and ~range_sigma
 //   locate_pixel        k40t_driver/LocatePixel  a pixel of the current image to a position: the
 //                       camera_info of the pixel's view (camera_views.h: in split screen, the
-//                       panel's), undistorted by OpenCV (camera/pixel_ray.h), TF, then the laser
-//                       range or a horizontal plane
+//                       panel's) and TF given to the ROS-free rule driver/pixel_locator.h (the
+//                       laser range on the laser's axis, or a horizontal plane)
 //   located_point       geometry_msgs/PointStamped  the last located pixel, in its camera frame
 //   located_fix         sensor_msgs/NavSatFix       the same on the Earth
 // and a diagnostic "geolocation": the distance between laser/target_local and the pod's own
@@ -28,6 +28,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include "k40t_driver/LocatePixel.h"
+#include "k40t_driver/driver/pixel_locator.h"
 #include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/geo/ray_locator.h"
 #include "k40t_driver/ros/camera_views.h"
@@ -53,7 +54,7 @@ class TargetLocator {
   FrameIds ids_;
   std::string vehicle_frame_;
   geo::RayUncertainty uncertainty_;
-  double laser_axis_tolerance_px_ = 8;
+  PixelLocatorSetup pixel_setup_;  // locate_pixel's frames, uncertainty and laser-axis tolerance
   tf2_ros::Buffer tf_;
   tf2_ros::TransformListener listener_;
   ros::Publisher target_local_, located_point_, located_fix_;

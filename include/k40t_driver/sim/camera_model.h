@@ -154,7 +154,7 @@ class CameraModel {
 
   CameraConfig config_;
   CameraSettings settings_;
-  VisibleSettings visible_;
+  VisibleSettings visible_ = factory_visible_settings();
   SdCard sd_;
   PodClock clock_;
   std::optional<ShootingJob> job_;

@@ -5,6 +5,8 @@
 
 #include <cstdint>
 
+#include "k40t_driver/protocol/messages/visible.h"
+
 namespace k40t::sim {
 
 enum class CaptureMode : uint8_t { kPhoto = 0, kVideo = 1 };
@@ -24,24 +26,13 @@ struct CameraSettings {
   uint16_t precise_focal_length_raw = 0;  // last 0x000307's focal length, reported by 0x000005
 };
 
-// Visible camera (3.2.3).
-struct VisibleSettings {
-  uint8_t photo_resolution = 0x15;  // 0x14 8000x6000, 0x15 4000x3000
-  uint8_t video_resolution = 0x08;  // 0x08 1080p, 0x26 4K, 0x36 4000x3000
-  uint8_t video_bitrate = 0x01;     // 0..3 within the resolution's table
-  uint8_t white_balance = 1;        // 1..8, auto
-  uint8_t ev = 0x00;                // 0x00 auto, 0x0A +2, 0x10 +1, 0x16 0, 0x1C -1, 0x23 -2
-  uint8_t iso = 0;                  // 0 auto, 1..7 ISO100..6400
-  uint8_t shutter = 0;              // 0 auto, 1..0x0E 1/4 .. 1/8000 (docs/protocol/decisions.md#a7)
-  uint8_t zoom_fine_tune = 50;      // 0..100
-  bool backlight_on = false;
-  uint8_t backlight = 0;  // 0..100
-  bool strong_light_on = false;
-  uint8_t strong_light = 0;  // 0..100
-  bool ae_lock = false;
-  uint8_t anti_flicker = 4;  // 1 off, 2 50 Hz, 3 60 Hz, 4 auto
-  uint8_t metering = 1;      // 1 centre-weighted, 2 area, 3 average
-};
+// Visible camera (3.2.3): the settings the pod reports in the read-all ACK 0x010200 are kept as
+// that ACK itself (the protocol's struct, with the simulated pod's factory defaults), so a
+// reported setting needs no field of its own here: its request handler writes the ACK field and
+// the read-all returns it. (The OSD watermark, byte 16, is CameraSettings::watermark: 0x000003
+// reports it too.)
+using VisibleSettings = protocol::VisibleSettingsAck;
+VisibleSettings factory_visible_settings();
 
 // Exposure time of a manual shutter code, in microseconds (0 for auto or an unknown code).
 double shutter_code_us(uint8_t code);

@@ -1,17 +1,14 @@
 #include "k40t_driver/protocol/messages/camera_enums.h"
 
+#include "k40t_driver/protocol/cfg_enum_names.h"
+
 namespace k40t::protocol {
 
-// The texts follow the document's wording (Chinese original, sections 3.2.1.1 and 3.2.4).
+// The texts follow the document's wording (Chinese original, sections 3.2.1.1 and 3.2.4); those
+// of the settings cfg/K40t.cfg offers come from cfg/setting_enums.txt (cfg_enum_names.h).
 
 const char* to_string(CaptureMode v) {
-  switch (v) {
-    case CaptureMode::kPhoto:
-      return "photo";
-    case CaptureMode::kVideo:
-      return "video";
-  }
-  return nullptr;
+  return cfg_enums::constant_of(cfg_enums::camera_mode, static_cast<int>(v), "mode_");
 }
 
 const char* to_string(ReportedStreamResolution v) {
@@ -35,13 +32,7 @@ const char* to_string(StreamResolution v) {
 }
 
 const char* to_string(VideoEncoding v) {
-  switch (v) {
-    case VideoEncoding::kH264:
-      return "H264";
-    case VideoEncoding::kH265:
-      return "H265";
-  }
-  return nullptr;
+  return cfg_enums::description_of(cfg_enums::stream_encoding, static_cast<int>(v));
 }
 
 const char* to_string(ImageMode v) {
@@ -59,21 +50,7 @@ const char* to_string(ImageMode v) {
 }
 
 const char* to_string(StreamBitrate v) {
-  switch (v) {
-    case StreamBitrate::k1Mbps:
-      return "1 Mbit/s";
-    case StreamBitrate::k1_5Mbps:
-      return "1.5 Mbit/s";
-    case StreamBitrate::k2Mbps:
-      return "2 Mbit/s";
-    case StreamBitrate::k4Mbps:
-      return "4 Mbit/s";
-    case StreamBitrate::k8Mbps:
-      return "8 Mbit/s";
-    case StreamBitrate::k12Mbps:
-      return "12 Mbit/s";
-  }
-  return nullptr;
+  return cfg_enums::description_of(cfg_enums::stream_bitrate, static_cast<int>(v));
 }
 
 double bitrate_mbps(StreamBitrate v) {

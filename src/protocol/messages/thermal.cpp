@@ -2,66 +2,17 @@
 
 #include <string>
 
+#include "k40t_driver/protocol/cfg_enum_names.h"
 #include "setting_bytes.h"
 
 namespace k40t::protocol {
 
 const char* to_string(Palette palette) {
-  switch (palette) {
-    case Palette::kWhiteHot:
-      return "white_hot";
-    case Palette::kBlackHot:
-      return "black_hot";
-    case Palette::kRainbow:
-      return "rainbow";
-    case Palette::kHighContrastRainbow:
-      return "high_contrast_rainbow";
-    case Palette::kIronRed:
-      return "iron_red";
-    case Palette::kMagma:
-      return "magma";
-    case Palette::kSky:
-      return "sky";
-    case Palette::kMediumGrey:
-      return "medium_grey";
-    case Palette::kGreyRed:
-      return "grey_red";
-    case Palette::kPurpleOrange:
-      return "purple_orange";
-    case Palette::kSpecial1:
-      return "special_1";
-    case Palette::kWarningRed:
-      return "warning_red";
-    case Palette::kIceFire:
-      return "ice_fire";
-    case Palette::kCyanRed:
-      return "cyan_red";
-    case Palette::kSpecial2:
-      return "special_2";
-    case Palette::kGradientRed:
-      return "gradient_red";
-    case Palette::kGradientGreen:
-      return "gradient_green";
-    case Palette::kGradientYellow:
-      return "gradient_yellow";
-    case Palette::kWarningGreen:
-      return "warning_green";
-    case Palette::kWarningBlue:
-      return "warning_blue";
-  }
-  return nullptr;
+  return cfg_enums::constant_of(cfg_enums::palette, static_cast<int>(palette), "palette_");
 }
 
 const char* to_string(ThermalGainMode mode) {
-  switch (mode) {
-    case ThermalGainMode::kHigh:
-      return "high";
-    case ThermalGainMode::kLow:
-      return "low";
-    case ThermalGainMode::kAuto:
-      return "auto";
-  }
-  return nullptr;
+  return cfg_enums::constant_of(cfg_enums::thermal_gain, static_cast<int>(mode), "gain_");
 }
 
 const char* to_string(ThermalMeasurementType type) {

@@ -1,5 +1,6 @@
 #include "k40t_driver/protocol/messages/visible.h"
 
+#include "k40t_driver/protocol/cfg_enum_names.h"
 #include "setting_bytes.h"
 
 namespace k40t::protocol {
@@ -8,15 +9,7 @@ using detail::check_level;
 using detail::code_of;
 
 const char* to_string(VideoResolution resolution) {
-  switch (resolution) {
-    case VideoResolution::k1920x1080:
-      return "1920x1080";
-    case VideoResolution::k3840x2160:
-      return "3840x2160";
-    case VideoResolution::k4000x3000:
-      return "4000x3000";
-  }
-  return nullptr;
+  return cfg_enums::description_of(cfg_enums::video_resolution, static_cast<int>(resolution));
 }
 
 const char* to_string(PhotoResolution resolution) {
@@ -32,115 +25,24 @@ const char* to_string(PhotoResolution resolution) {
 }
 
 const char* to_string(Iso iso) {
-  switch (iso) {
-    case Iso::kAuto:
-      return "auto";
-    case Iso::k100:
-      return "iso100";
-    case Iso::k200:
-      return "iso200";
-    case Iso::k400:
-      return "iso400";
-    case Iso::k800:
-      return "iso800";
-    case Iso::k1600:
-      return "iso1600";
-    case Iso::k3200:
-      return "iso3200";
-    case Iso::k6400:
-      return "iso6400";
-  }
-  return nullptr;
+  return cfg_enums::description_of(cfg_enums::iso, static_cast<int>(iso));
 }
 
 const char* to_string(Shutter shutter) {
-  switch (shutter) {
-    case Shutter::kAuto:
-      return "auto";
-    case Shutter::k1_4:
-      return "1/4";
-    case Shutter::k1_8:
-      return "1/8";
-    case Shutter::k1_15:
-      return "1/15";
-    case Shutter::k1_30:
-      return "1/30";
-    case Shutter::k1_60:
-      return "1/60";
-    case Shutter::k1_125:
-      return "1/125";
-    case Shutter::k1_250:
-      return "1/250";
-    case Shutter::k1_500:
-      return "1/500";
-    case Shutter::k1_1000:
-      return "1/1000";
-    case Shutter::k1_2000:
-      return "1/2000";
-    case Shutter::k1_4000:
-      return "1/4000";
-    case Shutter::k1_5000:
-      return "1/5000";
-    case Shutter::k1_6000:
-      return "1/6000";
-    case Shutter::k1_8000:
-      return "1/8000";
-  }
-  return nullptr;
+  return cfg_enums::description_of(cfg_enums::shutter, static_cast<int>(shutter));
 }
 
 const char* to_string(ExposureValue ev) {
-  switch (ev) {
-    case ExposureValue::kAuto:
-      return "auto";
-    case ExposureValue::kPlus2:
-      return "+2";
-    case ExposureValue::kPlus1:
-      return "+1";
-    case ExposureValue::kZero:
-      return "0";
-    case ExposureValue::kMinus1:
-      return "-1";
-    case ExposureValue::kMinus2:
-      return "-2";
-  }
-  return nullptr;
+  return cfg_enums::description_of(cfg_enums::ev, static_cast<int>(ev));
 }
 
 const char* to_string(WhiteBalance white_balance) {
-  switch (white_balance) {
-    case WhiteBalance::kAuto:
-      return "auto";
-    case WhiteBalance::kIncandescent:
-      return "incandescent";
-    case WhiteBalance::kFluorescent:
-      return "fluorescent";
-    case WhiteBalance::kWarmFluorescent:
-      return "warm_fluorescent";
-    case WhiteBalance::kDaylight:
-      return "daylight";
-    case WhiteBalance::kCloudy:
-      return "cloudy";
-    case WhiteBalance::kDusk:
-      return "dusk";
-    case WhiteBalance::kDark:
-      return "dark";
-  }
-  return nullptr;
+  return cfg_enums::constant_of(cfg_enums::white_balance, static_cast<int>(white_balance), "wb_");
 }
 
 const char* to_string(AntiFlicker anti_flicker) {
-  switch (anti_flicker) {
-    case AntiFlicker::kOff:
-      return "off";
-    case AntiFlicker::k50Hz:
-      return "50hz";
-    case AntiFlicker::k60Hz:
-      return "60hz";
-    case AntiFlicker::kAuto:
-      return "auto";
-  }
-  return nullptr;
+  return cfg_enums::constant_of(cfg_enums::anti_flicker, static_cast<int>(anti_flicker),
+                                "flicker_");
 }
 
 const char* to_string(MeteringMode mode) {
