@@ -155,7 +155,8 @@ class BasicLayoutReader {
     if (absent(v)) return;
     const size_t index = r_.position() + 1;
     const uint8_t got = r_.u8();
-    if (r_.ok() && got != f.on && got != f.off) fail(detail::flag_error(name, index, f, got));
+    if (f.strict && r_.ok() && got != f.on && got != f.off)
+      fail(detail::flag_error(name, index, f, got));
     v = got == f.on;
   }
   template <size_t N>

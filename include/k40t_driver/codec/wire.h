@@ -12,6 +12,7 @@
 //   v("command", wire::gap, wire::command(0x01))                        // the same, "command code"
 //   v("enable", s.enable, wire::on_off)                                 // 0 off / 1 on
 //   v("ae_lock_on", s.ae_lock_on, wire::flag(0x01, 0x02))               // on / off codes
+//   v("ae_lock_on", s.ae_lock_on, wire::report_flag(0x01, 0x02))        // the same, in a report
 //   v("high_alarm", wire::switchable("high_alarm_on", s.high_alarm_on, "high_alarm_degC",
 //                                    s.high_alarm_degC),
 //     wire::or_off(wire::scaled<int16_t>(10).range(-100, 500, "degC"), int16_t{-2732}))
@@ -131,6 +132,7 @@ struct Flag {
   uint8_t on;
   uint8_t off;
   bool decimal = false;
+  bool strict = true;  // false: a report, where any code but `on` reads as off (report_flag)
 };
 // Inside a Packed struct: `width` bits starting at bit `shift`; `inverted`: a 1-bit bool that
 // is 0 on the wire when true.
@@ -213,6 +215,11 @@ constexpr Flag flag(uint8_t on, uint8_t off) {
   return {on, off};
 }
 inline constexpr Flag on_off{1, 0, true};  // "0 off / 1 on"
+// A switch in a report: sent as `on` / `off`, but read as what the pod says, `on` or not, without
+// failing on another code (a status must not be lost over one odd byte).
+constexpr Flag report_flag(uint8_t on, uint8_t off) {
+  return {on, off, false, false};
+}
 constexpr Bits bit(unsigned n) {
   return {n, 1};
 }

@@ -37,8 +37,7 @@ const char* to_string(ThermalCoreType type) {
 
 // ---- 0x010100 ------------------------------------------------------------------------------
 Status ThermalSettingsAck::finish_decode(size_t payload_size) const {
-  bool has_settings = false;
-  return detail::settings_follow(payload_size - 2, code, kSettingsMinSize, &has_settings);
+  return detail::settings_follow(payload_size, code, kSettingsMinSize);
 }
 
 // ---- 0x000110 ------------------------------------------------------------------------------

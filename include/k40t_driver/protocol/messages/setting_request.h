@@ -26,15 +26,6 @@ namespace k40t::protocol {
 
 constexpr uint8_t kStartSettingByte = 0x00;  // byte 1 of every visible-camera setting request
 
-namespace detail {
-// A fixed command byte ("0x01 read all settings", "0x00 start setting"). Any other value is not
-// a message the struct can represent: decoding fails, naming the byte and what it must be.
-Status expect_command_byte(ByteReader& r, uint8_t expected, const char* meaning);
-// A two-valued byte into a bool: `on_code` -> true, `off_code` -> false, anything else is an
-// error naming the field (the simulator must be able to refuse such a request).
-Status read_switch(ByteReader& r, const char* field, uint8_t on_code, uint8_t off_code, bool* on);
-}  // namespace detail
-
 // "0x01 read all settings, 1 reserved" (sections 3.2.2.1 and 3.2.3.1); the settings come back
 // in the data ACK `AckT`. A request derives from ReadAllSettingsRequest<AckT> and declares kId,
 // kName and kSection.
