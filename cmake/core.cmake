@@ -1,5 +1,6 @@
 # The ROS-free core. Sources are globbed per layer so each layer grows by adding files.
 file(GLOB_RECURSE K40T_CORE_SOURCES CONFIGURE_DEPENDS
+  ${PROJECT_SOURCE_DIR}/src/codec/*.cpp     # declarative layouts shared by protocol/ and psdk/
   ${PROJECT_SOURCE_DIR}/src/protocol/*.cpp
   ${PROJECT_SOURCE_DIR}/src/transport/*.cpp
   ${PROJECT_SOURCE_DIR}/src/session/*.cpp

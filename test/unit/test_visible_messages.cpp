@@ -184,6 +184,18 @@ TEST(VisibleStatus, ReservedByteIsOptionalOnReceive) {
   expect_decode_error<VisibleStatus>(std::vector<uint8_t>(13, 0), "need 14");
 }
 
+// A report is read as the pod sends it: an AE-lock byte other than 0x01 (on) reads as off, where
+// a request with such a switch byte is refused (OnOffSwitchesAreOneAndTwo).
+TEST(VisibleStatus, AeLockOtherThanOneReadsAsOff) {  // 3.2.1.3 byte 11
+  for (const uint8_t code : {uint8_t{0x00}, uint8_t{0x02}, uint8_t{0x03}}) {
+    std::vector<uint8_t> payload(15, 0);
+    payload[10] = code;
+    auto decoded = decode_payload<VisibleStatus>(payload.data(), payload.size());
+    ASSERT_TRUE(decoded) << decoded.error();
+    EXPECT_FALSE(decoded->ae_lock_on) << int{code};
+  }
+}
+
 TEST(VisibleBitrate, TableOfSection3231Byte5) {
   EXPECT_DOUBLE_EQ(video_bitrate_mbps(0, VideoResolution::k1920x1080, false), 6);
   EXPECT_DOUBLE_EQ(video_bitrate_mbps(3, VideoResolution::k1920x1080, true), 6);

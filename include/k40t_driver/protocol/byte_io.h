@@ -50,6 +50,15 @@ class ByteReader {
     if (need(n)) pos_ += n;
   }
 
+  // The next `n` bytes, the reader moving past them; nullptr (and failed) when fewer remain. For
+  // decoders of fixed size that then read without a check per byte.
+  const uint8_t* claim(size_t n) {
+    if (!need(n)) return nullptr;
+    const uint8_t* p = data_ + pos_;
+    pos_ += n;
+    return p;
+  }
+
  private:
   bool need(size_t n) {
     if (failed_ || size_ - pos_ < n) {
@@ -112,6 +121,15 @@ class ByteWriter {
   // `n` zero bytes: the reserved bytes every request carries (docs/protocol/decisions.md#a11).
   void zeros(size_t n) {
     for (size_t i = 0; i < n; ++i) u8(0);
+  }
+
+  // `n` bytes to fill in place, the writer moving past them; nullptr (and failed) when they do
+  // not fit. For encoders of fixed size that then write without a check per byte.
+  uint8_t* claim(size_t n) {
+    if (!need(n)) return nullptr;
+    uint8_t* p = data_ + pos_;
+    pos_ += n;
+    return p;
   }
 
  private:

@@ -5,11 +5,6 @@
 
 namespace k40t::protocol {
 
-namespace {
-constexpr double kCentiDegMax = 327.67;  // int16 / 100
-constexpr double kCentiDegMin = -327.68;
-}  // namespace
-
 // ---- enums ----------------------------------------------------------------------------------
 const char* to_string(GimbalLinkState state) {
   switch (state) {
@@ -95,87 +90,6 @@ const char* to_string(GimbalAimLens lens) {
   return nullptr;
 }
 
-// ---- 0x000001 -------------------------------------------------------------------------------
-Status GimbalStatus::validate() const {
-  return first_failure(check_enum("gimbal_link", gimbal_link),
-                       check_enum("camera_link", camera_link), check_enum("upgrade", upgrade),
-                       check_enum("stabilisation", stabilisation));
-}
-
-void GimbalStatus::encode(ByteWriter& w, const CodecOptions&) const {
-  w.u8(static_cast<uint8_t>(static_cast<uint8_t>(camera_link) << 4 |
-                            (static_cast<uint8_t>(gimbal_link) & 0x0F)));
-  w.u8(static_cast<uint8_t>(upgrade));
-  w.u8(static_cast<uint8_t>((ir_ok ? 0x01 : 0) | (tele_ok ? 0x02 : 0) | (wide_ok ? 0x04 : 0) |
-                            (laser_ok ? 0x08 : 0)));
-  w.u8(static_cast<uint8_t>(stabilisation));
-  w.zeros(3);
-}
-
-Status GimbalStatus::decode(ByteReader& r, const CodecOptions&) {
-  const uint8_t links = r.u8();
-  gimbal_link = static_cast<GimbalLinkState>(links & 0x0F);
-  camera_link = static_cast<GimbalLinkState>(links >> 4);
-  upgrade = static_cast<GimbalUpgradeState>(r.u8());
-  const uint8_t self_test = r.u8();
-  ir_ok = (self_test & 0x01) != 0;
-  tele_ok = (self_test & 0x02) != 0;
-  wide_ok = (self_test & 0x04) != 0;
-  laser_ok = (self_test & 0x08) != 0;
-  stabilisation = static_cast<GimbalStabilisationState>(r.u8());
-  return Status::ok();
-}
-
-// ---- 0x000002 -------------------------------------------------------------------------------
-Status GimbalAttitude::validate() const {
-  return first_failure(
-      check_range("joint_yaw_deg", joint_yaw_deg, kCentiDegMin, kCentiDegMax, "deg"),
-      check_range("joint_roll_deg", joint_roll_deg, kCentiDegMin, kCentiDegMax, "deg"),
-      check_range("joint_pitch_deg", joint_pitch_deg, kCentiDegMin, kCentiDegMax, "deg"),
-      check_range("yaw_deg", yaw_deg, kCentiDegMin, kCentiDegMax, "deg"),
-      check_range("roll_deg", roll_deg, kCentiDegMin, kCentiDegMax, "deg"),
-      check_range("pitch_deg", pitch_deg, kCentiDegMin, kCentiDegMax, "deg"),
-      check_range("yaw_rate_deg_s", yaw_rate_deg_s, kCentiDegMin, kCentiDegMax, "deg/s"),
-      check_range("pitch_rate_deg_s", pitch_rate_deg_s, kCentiDegMin, kCentiDegMax, "deg/s"),
-      check_range("roll_rate_deg_s", roll_rate_deg_s, kCentiDegMin, kCentiDegMax, "deg/s"));
-}
-
-void GimbalAttitude::encode(ByteWriter& w, const CodecOptions&) const {
-  for (double v : {joint_yaw_deg, joint_roll_deg, joint_pitch_deg, yaw_deg, roll_deg, pitch_deg,
-                   yaw_rate_deg_s, pitch_rate_deg_s, roll_rate_deg_s}) {
-    w.i16(to_wire<int16_t>(v, 100));
-  }
-  w.zeros(2);
-}
-
-Status GimbalAttitude::decode(ByteReader& r, const CodecOptions&) {
-  for (double* v : {&joint_yaw_deg, &joint_roll_deg, &joint_pitch_deg, &yaw_deg, &roll_deg,
-                    &pitch_deg, &yaw_rate_deg_s, &pitch_rate_deg_s, &roll_rate_deg_s}) {
-    *v = r.i16() / 100.0;
-  }
-  return Status::ok();
-}
-
-// ---- 0x000010 -------------------------------------------------------------------------------
-Status GimbalControlRequest::validate() const {
-  return first_failure(check_enum("mode", mode), check_enum("yaw", yaw),
-                       check_enum("pitch", pitch));
-}
-
-void GimbalControlRequest::encode(ByteWriter& w, const CodecOptions&) const {
-  w.u8(static_cast<uint8_t>(static_cast<uint8_t>(mode) << 4));  // low nibble reserved
-  w.u8(static_cast<uint8_t>(yaw));
-  w.u8(static_cast<uint8_t>(pitch));
-  w.zeros(1);
-}
-
-Status GimbalControlRequest::decode(ByteReader& r, const CodecOptions&) {
-  mode = static_cast<GimbalMode>(r.u8() >> 4);
-  yaw = static_cast<GimbalYawDirection>(r.u8());
-  pitch = static_cast<GimbalPitchDirection>(r.u8());
-  return Status::ok();
-}
-
 // ---- 0x000012 -------------------------------------------------------------------------------
 namespace {
 
@@ -241,43 +155,11 @@ Status GimbalAngleRequest::decode(ByteReader& r, const CodecOptions& o) {
   return decode_axis(r, kYawAxis, o.angle_command_scale, &yaw_move, &yaw_deg);
 }
 
-// ---- 0x000017 -------------------------------------------------------------------------------
-Status GimbalDialSpeedRequest::validate() const {
-  return first_failure(
-      check_range("pitch_speed_deg_s", pitch_speed_deg_s, kMinDegS, kMaxDegS, "deg/s"),
-      check_range("yaw_speed_deg_s", yaw_speed_deg_s, kMinDegS, kMaxDegS, "deg/s"));
-}
-
-void GimbalDialSpeedRequest::encode(ByteWriter& w, const CodecOptions&) const {
-  w.u8(to_wire<uint8_t>(pitch_speed_deg_s, kWirePerDegS));
-  w.u8(to_wire<uint8_t>(yaw_speed_deg_s, kWirePerDegS));
-  w.zeros(1);
-}
-
-Status GimbalDialSpeedRequest::decode(ByteReader& r, const CodecOptions&) {
-  pitch_speed_deg_s = r.u8() / kWirePerDegS;
-  yaw_speed_deg_s = r.u8() / kWirePerDegS;
-  return Status::ok();
-}
-
 // ---- 0x010018 -------------------------------------------------------------------------------
-void GimbalVersionAck::encode(ByteWriter& w, const CodecOptions& o) const {
-  w.u16(static_cast<uint16_t>(code), o.ack_byte_order);
-  for (uint8_t v : {hardware_major, hardware_minor, hardware_patch, software_major, software_minor,
-                    software_patch}) {
-    w.u8(v);
-  }
-  w.zeros(1);
-}
-
-Status GimbalVersionAck::decode(ByteReader& r, const CodecOptions& o) {
-  code = static_cast<ResponseCode>(r.u16(o.ack_byte_order));
-  if (r.remaining() == 0) return Status::ok();  // a refusal: the code alone
-  for (uint8_t* v : {&hardware_major, &hardware_minor, &hardware_patch, &software_major,
-                     &software_minor, &software_patch}) {
-    *v = r.u8();
-  }
-  return Status::ok();
+Status GimbalVersionAck::finish_decode(size_t payload_size) const {
+  constexpr size_t kVersionSize = kSize - 1;  // the reserved last byte is optional
+  if (payload_size == kMinSize || payload_size >= kVersionSize) return Status::ok();
+  return payload_size_error(kName, kId, payload_size, kVersionSize);
 }
 
 // ---- 0x00002C -------------------------------------------------------------------------------

@@ -5,9 +5,6 @@
 
 namespace k40t::protocol {
 
-using detail::check_level;
-using detail::code_of;
-
 const char* to_string(VideoResolution resolution) {
   return cfg_enums::description_of(cfg_enums::video_resolution, static_cast<int>(resolution));
 }
@@ -79,107 +76,9 @@ double video_bitrate_mbps(uint8_t code, VideoResolution resolution, bool h265) {
   return h265 ? kH265[row][code] : kH264[row][code];
 }
 
-namespace {
-
-constexpr uint8_t kOnWire = 0x01;  // the 0x01 on / 0x02 off switches
-constexpr uint8_t kLowNibble = 0x0F;
-
-uint8_t switch_to_wire(bool on) {
-  return on ? kOnWire : 0x02;
-}
-
-}  // namespace
-
-// ---- 0x000005 ------------------------------------------------------------------------------
-Status VisibleStatus::validate() const {
-  return first_failure(
-      check_range("focal_length_mm", focal_length_mm, 0.0, 655.35, "mm"),
-      check_range("zoom_x", zoom_x, 0.0, 6553.5, "x"), check_enum("ev", ev),
-      check_range("iso_db", iso_db, 0.0, 6553.5, "dB"),
-      check_range("precise_shot_focal_length_mm", precise_shot_focal_length_mm, 0.0, 655.35, "mm"));
-}
-
-void VisibleStatus::encode(ByteWriter& w, const CodecOptions&) const {
-  w.u8(zooming ? 1 : 0);
-  w.u16(to_wire<uint16_t>(focal_length_mm, 100));
-  w.u16(to_wire<uint16_t>(zoom_x, 10));
-  w.u8(code_of(ev));
-  w.u16(to_wire<uint16_t>(iso_db, 10));
-  w.u16(shutter_us);
-  w.u8(switch_to_wire(ae_lock_on));
-  w.u8(focusing ? 1 : 0);
-  w.u16(to_wire<uint16_t>(precise_shot_focal_length_mm, 100));
-  w.zeros(1);
-}
-
-Status VisibleStatus::decode(ByteReader& r, const CodecOptions&) {
-  // A report is what the pod says: flags are "non-zero", AE lock is "0x01".
-  zooming = r.u8() != 0;
-  focal_length_mm = r.u16() / 100.0;
-  zoom_x = r.u16() / 10.0;
-  ev = static_cast<ExposureValue>(r.u8());
-  iso_db = r.u16() / 10.0;
-  shutter_us = r.u16();
-  ae_lock_on = r.u8() == kOnWire;
-  focusing = r.u8() != 0;
-  precise_shot_focal_length_mm = r.u16() / 100.0;
-  return Status::ok();
-}
-
 // ---- 0x010200 ------------------------------------------------------------------------------
-Status VisibleSettingsAck::validate() const {
-  return first_failure(
-      check_enum("photo_resolution", photo_resolution),
-      check_enum("video_resolution", video_resolution),
-      check_level("video_bitrate_code", video_bitrate_code, 0, kVisibleBitrateCodeMax),
-      check_enum("white_balance", white_balance), check_enum("ev", ev), check_enum("iso", iso),
-      check_enum("shutter", shutter),
-      check_level("zoom_fine_tune", zoom_fine_tune, 0, kVisibleLevelMax),
-      check_level("backlight_value", backlight_value, 0, kVisibleLevelMax),
-      check_level("strong_light_value", strong_light_value, 0, kVisibleLevelMax),
-      check_enum("anti_flicker", anti_flicker), check_enum("metering", metering));
-}
-
-void VisibleSettingsAck::encode(ByteWriter& w, const CodecOptions& o) const {
-  w.u16(static_cast<uint16_t>(code), o.ack_byte_order);
-  w.u8(code_of(photo_resolution));
-  w.u8(code_of(video_resolution));
-  w.u8(video_bitrate_code);
-  w.u8(code_of(white_balance));  // bits 7..4 reserved: zero
-  w.zeros(2);
-  w.u8(code_of(ev));
-  w.u8(code_of(iso));
-  w.u8(code_of(shutter));
-  w.u8(zoom_fine_tune);
-  w.u8(detail::pack_switch_and_level(backlight_on, backlight_value));
-  w.u8(detail::pack_switch_and_level(strong_light_on, strong_light_value));
-  w.u8(switch_to_wire(ae_lock_on));
-  w.u8(static_cast<uint8_t>(code_of(anti_flicker) << 4 | (watermark_on ? 1 : 0)));
-  w.u8(code_of(metering));
-}
-
-Status VisibleSettingsAck::decode(ByteReader& r, const CodecOptions& o) {
-  code = static_cast<ResponseCode>(r.u16(o.ack_byte_order));
-  bool has_settings = false;
-  const Status follow = detail::settings_follow(r, code, kSettingsSize, &has_settings);
-  if (!follow || !has_settings) return follow;
-  photo_resolution = static_cast<PhotoResolution>(r.u8());
-  video_resolution = static_cast<VideoResolution>(r.u8());
-  video_bitrate_code = r.u8();
-  white_balance = static_cast<WhiteBalance>(r.u8() & kLowNibble);
-  r.skip(2);
-  ev = static_cast<ExposureValue>(r.u8());
-  iso = static_cast<Iso>(r.u8());
-  shutter = static_cast<Shutter>(r.u8());
-  zoom_fine_tune = r.u8();
-  detail::unpack_switch_and_level(r.u8(), &backlight_on, &backlight_value);
-  detail::unpack_switch_and_level(r.u8(), &strong_light_on, &strong_light_value);
-  ae_lock_on = r.u8() == kOnWire;
-  const uint8_t osd = r.u8();
-  watermark_on = (osd & kLowNibble) != 0;
-  anti_flicker = static_cast<AntiFlicker>(osd >> 4);
-  metering = static_cast<MeteringMode>(r.u8());
-  return Status::ok();
+Status VisibleSettingsAck::finish_decode(size_t payload_size) const {
+  return detail::settings_follow(payload_size, code, kSettingsSize);
 }
 
 // ---- 0x000202 ------------------------------------------------------------------------------

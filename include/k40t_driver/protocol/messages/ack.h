@@ -5,6 +5,7 @@
 #pragma once
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_layout.h"
 
 namespace k40t::protocol {
 
@@ -16,19 +17,14 @@ struct PlainAck {
   static constexpr size_t kSize = 2;
   static constexpr size_t kMinSize = 2;
 
+  static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
+
   ResponseCode code = ResponseCode::kOk;
 
-  Status validate() const { return Status::ok(); }
-  void encode(ByteWriter& w, const CodecOptions& o) const {
-    w.u16(static_cast<uint16_t>(code), o.ack_byte_order);
-  }
-  Status decode(ByteReader& r, const CodecOptions& o) {
-    code = static_cast<ResponseCode>(r.u16(o.ack_byte_order));
-    return Status::ok();
-  }
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("code", self.code);
+  K40T_MESSAGE_LAYOUT()
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("code", s.code, wire::response_code);
   }
 };
 

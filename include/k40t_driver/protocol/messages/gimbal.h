@@ -7,11 +7,16 @@
 //   yaw:   positive = right (the document's 1 "right", clockwise seen from above, like a compass
 //          heading and the gimbal conventions of drone SDKs), negative = LEFT.
 // docs/protocol/gimbal_laser_sbus.md explains this and the other decisions.
+//
+// The messages are declarative layouts (codec/layout.h) but for 0x000012, whose scale is a codec
+// option and whose sign is a direction byte, and 0x00002C, whose zoom range depends on the lens:
+// those two keep their hand-written codec in gimbal.cpp.
 #pragma once
 
 #include <cstdint>
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_layout.h"
 #include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/simple_requests.h"
@@ -59,19 +64,22 @@ struct GimbalStatus {
   bool laser_ok = true;
   GimbalStabilisationState stabilisation = GimbalStabilisationState::kOff;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("gimbal_link", self.gimbal_link);
-    v("camera_link", self.camera_link);
-    v("upgrade", self.upgrade);
-    v("ir_ok", self.ir_ok);
-    v("tele_ok", self.tele_ok);
-    v("wide_ok", self.wide_ok);
-    v("laser_ok", self.laser_ok);
-    v("stabilisation", self.stabilisation);
+  K40T_MESSAGE_LAYOUT()
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("links",
+      wire::bit_group(wire::in_bits("gimbal_link", s.gimbal_link, wire::bits(0, 4)),
+                      wire::in_bits("camera_link", s.camera_link, wire::bits(4, 4))),
+      wire::packed8);
+    v("upgrade", s.upgrade, wire::u8);
+    v("self_test",
+      wire::bit_group(wire::in_bits("ir_ok", s.ir_ok, wire::bit(0)),
+                      wire::in_bits("tele_ok", s.tele_ok, wire::bit(1)),
+                      wire::in_bits("wide_ok", s.wide_ok, wire::bit(2)),
+                      wire::in_bits("laser_ok", s.laser_ok, wire::bit(3))),
+      wire::packed8);
+    v("stabilisation", s.stabilisation, wire::u8);
+    v("reserved", wire::gap, wire::reserved(3));
   }
 };
 
@@ -84,7 +92,9 @@ struct GimbalAttitude {
   static constexpr const char* kSection = "3.1.1.2";
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 20;
-  static constexpr size_t kMinSize = 18;  // the 2 reserved bytes are optional on receive
+  static constexpr size_t kMinSize = 18;           // the 2 reserved bytes are optional on receive
+  static constexpr double kCentiDegMin = -327.68;  // what int16 x0.01 deg can carry
+  static constexpr double kCentiDegMax = 327.67;
 
   double joint_yaw_deg = 0;
   double joint_roll_deg = 0;
@@ -96,20 +106,21 @@ struct GimbalAttitude {
   double pitch_rate_deg_s = 0;
   double roll_rate_deg_s = 0;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("joint_yaw_deg", self.joint_yaw_deg);
-    v("joint_roll_deg", self.joint_roll_deg);
-    v("joint_pitch_deg", self.joint_pitch_deg);
-    v("yaw_deg", self.yaw_deg);
-    v("roll_deg", self.roll_deg);
-    v("pitch_deg", self.pitch_deg);
-    v("yaw_rate_deg_s", self.yaw_rate_deg_s);
-    v("pitch_rate_deg_s", self.pitch_rate_deg_s);
-    v("roll_rate_deg_s", self.roll_rate_deg_s);
+  K40T_MESSAGE_LAYOUT()
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    constexpr auto deg = wire::scaled<int16_t>(100).range(kCentiDegMin, kCentiDegMax, "deg");
+    constexpr auto deg_s = wire::scaled<int16_t>(100).range(kCentiDegMin, kCentiDegMax, "deg/s");
+    v("joint_yaw_deg", s.joint_yaw_deg, deg);
+    v("joint_roll_deg", s.joint_roll_deg, deg);
+    v("joint_pitch_deg", s.joint_pitch_deg, deg);
+    v("yaw_deg", s.yaw_deg, deg);
+    v("roll_deg", s.roll_deg, deg);
+    v("pitch_deg", s.pitch_deg, deg);
+    v("yaw_rate_deg_s", s.yaw_rate_deg_s, deg_s);
+    v("pitch_rate_deg_s", s.pitch_rate_deg_s, deg_s);
+    v("roll_rate_deg_s", s.roll_rate_deg_s, deg_s);
+    v("reserved", wire::gap, wire::reserved(2));
   }
 };
 
@@ -138,14 +149,14 @@ struct GimbalControlRequest {
   GimbalYawDirection yaw = GimbalYawDirection::kStop;
   GimbalPitchDirection pitch = GimbalPitchDirection::kStop;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("mode", self.mode);
-    v("yaw", self.yaw);
-    v("pitch", self.pitch);
+  K40T_MESSAGE_LAYOUT()
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    // The low nibble of byte 1 is reserved: sent as zero, ignored on receive.
+    v("mode_byte", wire::bit_group(wire::in_bits("mode", s.mode, wire::bits(4, 4))), wire::packed8);
+    v("yaw", s.yaw, wire::u8);
+    v("pitch", s.pitch, wire::u8);
+    v("reserved", wire::gap, wire::reserved(1));
   }
 };
 
@@ -213,13 +224,13 @@ struct GimbalDialSpeedRequest {
   double pitch_speed_deg_s = 6;
   double yaw_speed_deg_s = 6;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("pitch_speed_deg_s", self.pitch_speed_deg_s);
-    v("yaw_speed_deg_s", self.yaw_speed_deg_s);
+  K40T_MESSAGE_LAYOUT()
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    constexpr auto speed = wire::scaled<uint8_t>(kWirePerDegS).range(kMinDegS, kMaxDegS, "deg/s");
+    v("pitch_speed_deg_s", s.pitch_speed_deg_s, speed);
+    v("yaw_speed_deg_s", s.yaw_speed_deg_s, speed);
+    v("reserved", wire::gap, wire::reserved(1));
   }
 };
 
@@ -234,6 +245,7 @@ struct GimbalVersionAck {
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 9;
   static constexpr size_t kMinSize = 2;  // a refusal may carry the code only
+  static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
 
   ResponseCode code = ResponseCode::kOk;
   uint8_t hardware_major = 0;
@@ -243,19 +255,20 @@ struct GimbalVersionAck {
   uint8_t software_minor = 0;
   uint8_t software_patch = 0;
 
-  Status validate() const { return Status::ok(); }
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("code", self.code);
-    v("hardware_major", self.hardware_major);
-    v("hardware_minor", self.hardware_minor);
-    v("hardware_patch", self.hardware_patch);
-    v("software_major", self.software_major);
-    v("software_minor", self.software_minor);
-    v("software_patch", self.software_patch);
+  K40T_MESSAGE_LAYOUT()
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("code", s.code, wire::response_code);
+    v("hardware_major", s.hardware_major, wire::u8);
+    v("hardware_minor", s.hardware_minor, wire::u8);
+    v("hardware_patch", s.hardware_patch, wire::u8);
+    v("software_major", s.software_major, wire::u8);
+    v("software_minor", s.software_minor, wire::u8);
+    v("software_patch", s.software_patch, wire::u8);
+    v("reserved", wire::gap, wire::reserved(1));
   }
+  // The code alone (a refusal), or the code and all six version numbers.
+  Status finish_decode(size_t payload_size) const;
 };
 
 // Byte 1 = 0x01 "get the gimbal version".

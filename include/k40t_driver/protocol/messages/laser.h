@@ -10,6 +10,7 @@
 #pragma once
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_layout.h"
 #include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/simple_requests.h"
@@ -17,39 +18,32 @@
 namespace k40t::protocol {
 
 // Response code + uint16 distance x0.1 m (0 = no return), both in the byte order kOrder selects:
-// the payload of ACK 0x010400 and of status frame 0x020406.
-template <ByteOrder CodecOptions::*kOrder>
+// the payload of ACK 0x010400 and of status frame 0x020406. From byte kMinSizeT on the payload is
+// optional (a refusal may carry the code only; the distance then reads as 0).
+template <ByteOrder CodecOptions::*kOrder, size_t kMinSizeT>
 struct LaserDistancePayload {
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 4;
+  static constexpr size_t kMinSize = kMinSizeT;
+  static constexpr auto kByteOrder = kOrder;
   static constexpr double kMaxDistanceM = 6553.5;  // uint16 x0.1
 
   ResponseCode code = ResponseCode::kOk;
   double distance_m = 0;  // 0 = no return
 
-  Status validate() const { return check_range("distance_m", distance_m, 0.0, kMaxDistanceM, "m"); }
-  void encode(ByteWriter& w, const CodecOptions& o) const {
-    w.u16(static_cast<uint16_t>(code), o.*kOrder);
-    w.u16(to_wire<uint16_t>(distance_m, 10), o.*kOrder);
-  }
-  Status decode(ByteReader& r, const CodecOptions& o) {
-    code = static_cast<ResponseCode>(r.u16(o.*kOrder));
-    distance_m = r.remaining() == 0 ? 0.0 : r.u16(o.*kOrder) / 10.0;
-    return Status::ok();
-  }
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("code", self.code);
-    v("distance_m", self.distance_m);
+  K40T_MESSAGE_LAYOUT()
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("code", s.code, wire::response_code);
+    v("distance_m", s.distance_m, wire::scaled<uint16_t>(10).range(0, kMaxDistanceM, "m"));
   }
 };
 
 // ACK 0x010400, section 3.2.5.1.
-struct LaserRangeAck : LaserDistancePayload<&CodecOptions::ack_byte_order> {
+struct LaserRangeAck : LaserDistancePayload<&CodecOptions::ack_byte_order, 2> {
   static constexpr MessageId kId = 0x010400;
   static constexpr const char* kName = "laser_range_ack";
   static constexpr const char* kSection = "3.2.5.1";
-  static constexpr size_t kMinSize = 2;  // a refusal may carry the code only
 };
 
 // 0x000400, section 3.2.5.1: byte 1 = 0 disable, 1 single ranging; byte 2 reserved.
@@ -69,11 +63,10 @@ struct LaserPeriodicRangeRequest : SwitchRequest<> {
 
 // Status frame 0x020406, section 3.2.5.2, 1 Hz while periodic ranging is on. Byte order: see the
 // top of this file.
-struct LaserPeriodicRangeStatus : LaserDistancePayload<&CodecOptions::laser_status_byte_order> {
+struct LaserPeriodicRangeStatus : LaserDistancePayload<&CodecOptions::laser_status_byte_order, 4> {
   static constexpr MessageId kId = 0x020406;
   static constexpr const char* kName = "laser_periodic_range_status";
   static constexpr const char* kSection = "3.2.5.2";
-  static constexpr size_t kMinSize = 4;
 };
 
 // Every message struct of the laser family: the catalogue, the catalogue tests and the fuzz target

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_layout.h"
 #include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/simple_requests.h"
@@ -30,19 +31,20 @@ struct SbusRangeRequest {
   uint16_t max_value = 1811;  // common SBUS transmitter end points
   uint16_t min_value = 172;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("max_value", self.max_value);
-    v("min_value", self.min_value);
+  K40T_MESSAGE_LAYOUT()
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    body(s, v);
+    v("reserved", wire::gap, wire::reserved(1));
   }
-
-  // The two values alone, in the given byte order (the request is little-endian, the ACK of
-  // 0x000502 follows docs/protocol/decisions.md#a2).
-  void write_values(ByteWriter& w, ByteOrder order) const;
-  void read_values(ByteReader& r, ByteOrder order);
+  // The two values alone, shared with the ACK of 0x000502 (which carries them in the ACK byte
+  // order, docs/protocol/decisions.md#a2; the request is little-endian).
+  template <class S, class V>
+  static void body(S& s, V&& v) {
+    v("max_value", s.max_value, wire::u16.range(0, kMaxSbusValue));
+    v("min_value", s.min_value, wire::u16.range(0, kMaxSbusValue));
+  }
+  Status extra_checks() const;  // minimum < maximum
 };
 
 // 0x000501, section 3.2.6.2: one channel per function, bytes 1..7, byte 8 reserved. The document
@@ -67,23 +69,24 @@ struct SbusChannelsRequest {
   int yaw_channel = 6;
   int centre_channel = 7;  // one "gimbal back to centre" per switch
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("stream_channel", self.stream_channel);
-    v("zoom_channel", self.zoom_channel);
-    v("photo_channel", self.photo_channel);
-    v("record_channel", self.record_channel);
-    v("pitch_channel", self.pitch_channel);
-    v("yaw_channel", self.yaw_channel);
-    v("centre_channel", self.centre_channel);
+  K40T_MESSAGE_LAYOUT()
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    body(s, v);
+    v("reserved", wire::gap, wire::reserved(1));
   }
-
   // The seven channel bytes alone (shared with the ACK of 0x000502).
-  void write_channels(ByteWriter& w) const;
-  void read_channels(ByteReader& r);
+  template <class S, class V>
+  static void body(S& s, V&& v) {
+    constexpr auto channel = wire::u8.offset(1).range(1, kMaxChannel, "(channel number)");
+    v("stream_channel", s.stream_channel, channel);
+    v("zoom_channel", s.zoom_channel, channel);
+    v("photo_channel", s.photo_channel, channel);
+    v("record_channel", s.record_channel, channel);
+    v("pitch_channel", s.pitch_channel, channel);
+    v("yaw_channel", s.yaw_channel, channel);
+    v("centre_channel", s.centre_channel, channel);
+  }
 };
 
 // ACK 0x010502, section 3.2.6.3: response code, uint16 maximum, uint16 minimum
@@ -95,21 +98,24 @@ struct SbusConfigAck {
   static constexpr const char* kSection = "3.2.6.3";
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 14;
-  static constexpr size_t kMinSize = 2;  // a refusal may carry the code only
+  static constexpr size_t kMinSize = 2;  // a refusal may carry the code only: finish_decode()
+  static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
 
   ResponseCode code = ResponseCode::kOk;
   SbusRangeRequest range;
   SbusChannelsRequest channels;
 
-  Status validate() const { return first_failure(range.validate(), channels.validate()); }
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("code", self.code);
-    SbusRangeRequest::fields(self.range, v);
-    SbusChannelsRequest::fields(self.channels, v);
+  K40T_MESSAGE_LAYOUT()
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("code", s.code, wire::response_code);
+    v("range", s.range, wire::nested);
+    v("channels", s.channels, wire::nested);
+    v("reserved", wire::gap, wire::reserved(1));
   }
+  Status extra_checks() const { return range.extra_checks(); }
+  // A refusal without the configuration reports none (all zeros), not the defaults.
+  Status finish_decode(size_t payload_size);
 };
 
 // 0x000502, section 3.2.6.3: byte 1 = 0x01 "get the SBUS configuration".

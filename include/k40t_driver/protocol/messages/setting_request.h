@@ -12,27 +12,19 @@
 //   bool:    static constexpr uint8_t kOnCode, kOffCode;
 // Optionally static constexpr uint8_t kValueMask: the bits of the byte that carry the value (the
 // others are reserved: sent as zero, ignored on receive).
-// The result meets message.h's contract like a hand-written struct (kDirection, kSize,
-// kMinSize, Ack, validate, encode, decode and fields come from the base).
+// The base turns these into the request's layout (codec/layout.h), which gives kDirection, kSize,
+// kMinSize, Ack, validate, encode, decode and fields.
 #pragma once
 
 #include <type_traits>
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_layout.h"
 #include "k40t_driver/protocol/messages/ack.h"
 
 namespace k40t::protocol {
 
 constexpr uint8_t kStartSettingByte = 0x00;  // byte 1 of every visible-camera setting request
-
-namespace detail {
-// A fixed command byte ("0x01 read all settings", "0x00 start setting"). Any other value is not
-// a message the struct can represent: decoding fails, naming the byte and what it must be.
-Status expect_command_byte(ByteReader& r, uint8_t expected, const char* meaning);
-// A two-valued byte into a bool: `on_code` -> true, `off_code` -> false, anything else is an
-// error naming the field (the simulator must be able to refuse such a request).
-Status read_switch(ByteReader& r, const char* field, uint8_t on_code, uint8_t off_code, bool* on);
-}  // namespace detail
 
 // "0x01 read all settings, 1 reserved" (sections 3.2.2.1 and 3.2.3.1); the settings come back
 // in the data ACK `AckT`. A request derives from ReadAllSettingsRequest<AckT> and declares kId,
@@ -45,17 +37,23 @@ struct ReadAllSettingsRequest {
   static constexpr uint8_t kReadAllSettings = 0x01;
   using Ack = AckT;
 
-  Status validate() const { return Status::ok(); }
-  void encode(ByteWriter& w, const CodecOptions&) const {
-    w.u8(kReadAllSettings);
-    w.zeros(1);
+  K40T_MESSAGE_LAYOUT()
+  template <class S, class V>
+  static void layout(S&, V&& v) {
+    v("command", wire::gap, wire::fixed(kReadAllSettings, "read all settings"));
+    v("reserved", wire::gap, wire::reserved(1));
   }
-  Status decode(ByteReader& r, const CodecOptions&) {
-    return detail::expect_command_byte(r, kReadAllSettings, "read all settings");
-  }
-  template <class Self, class V>
-  static void fields(Self&, V&&) {}
 };
+
+// A byte holding a switch in bit 7 and a level 0..max in bits 6..0 (the settings ACKs 0x010100
+// and 0x010200 pack denoise, enhancement, backlight and strong light this way); carried as
+// wire::packed8.
+template <class B, class L>
+constexpr auto switch_and_level(const char* on_name, B& on, const char* level_name, L& level,
+                                int max) {
+  return wire::bit_group(wire::in_bits(on_name, on, wire::bit(7)),
+                         wire::in_bits(level_name, level, wire::bits(0, 7).range(0, max)));
+}
 
 enum class SettingPrefix { kNone, kStartSetting };
 
@@ -67,55 +65,26 @@ struct ByteSettingRequest {
   static constexpr uint8_t kValueMask = 0xFF;
   using Ack = PlainAck;
 
-  Status validate() const {
-    const auto& value = derived().*Derived::kValue;
+  K40T_MESSAGE_LAYOUT()
+  // The one value byte's wire format, from the constants the request declares.
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    using Self = std::conditional_t<std::is_const_v<S>, const Derived, Derived>;
+    auto& value = static_cast<Self&>(s).*Derived::kValue;
     using T = std::decay_t<decltype(value)>;
-    if constexpr (std::is_same_v<T, bool>) {
-      return Status::ok();
-    } else if constexpr (std::is_enum_v<T>) {
-      return check_enum(Derived::kValueName, value);
-    } else {
-      return check_range(Derived::kValueName, static_cast<int64_t>(value), Derived::kMin,
-                         Derived::kMax);
-    }
-  }
-
-  void encode(ByteWriter& w, const CodecOptions&) const {
-    if constexpr (Prefix == SettingPrefix::kStartSetting) w.u8(kStartSettingByte);
-    const auto& value = derived().*Derived::kValue;
-    if constexpr (std::is_same_v<std::decay_t<decltype(value)>, bool>) {
-      w.u8(value ? Derived::kOnCode : Derived::kOffCode);
-    } else {
-      w.u8(static_cast<uint8_t>(value));
-    }
-    w.zeros(Reserved);
-  }
-
-  Status decode(ByteReader& r, const CodecOptions&) {
-    Status start = Status::ok();
     if constexpr (Prefix == SettingPrefix::kStartSetting) {
-      start = detail::expect_command_byte(r, kStartSettingByte, "start setting");
+      v("start", wire::gap, wire::fixed(kStartSettingByte, "start setting"));
     }
-    auto& value = derived().*Derived::kValue;
-    using T = std::decay_t<decltype(value)>;
     if constexpr (std::is_same_v<T, bool>) {
-      const Status read =
-          detail::read_switch(r, Derived::kValueName, Derived::kOnCode, Derived::kOffCode, &value);
-      return first_failure(start, read);
+      v(Derived::kValueName, value, wire::flag(Derived::kOnCode, Derived::kOffCode));
+    } else if constexpr (std::is_enum_v<T>) {
+      v(Derived::kValueName, value, wire::u8.mask(Derived::kValueMask));
     } else {
-      value = static_cast<T>(r.u8() & Derived::kValueMask);
-      return start;
+      v(Derived::kValueName, value,
+        wire::u8.range(Derived::kMin, Derived::kMax).mask(Derived::kValueMask));
     }
+    v("reserved", wire::gap, wire::reserved(Reserved));
   }
-
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v(Derived::kValueName, self.*Derived::kValue);
-  }
-
- private:
-  const Derived& derived() const { return static_cast<const Derived&>(*this); }
-  Derived& derived() { return static_cast<Derived&>(*this); }
 };
 
 }  // namespace k40t::protocol

@@ -7,9 +7,8 @@
 // Usage: struct GimbalRestartRequest : CommandRequest<0x01> { kId, kName, kSection };
 #pragma once
 
-#include <string>
-
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_layout.h"
 #include "k40t_driver/protocol/messages/ack.h"
 
 namespace k40t::protocol {
@@ -22,22 +21,14 @@ struct CommandRequest {
   static constexpr uint8_t kCommand = kCommandByte;
   using Ack = AckType;
 
-  Status validate() const { return Status::ok(); }
-  void encode(ByteWriter& w, const CodecOptions&) const {
-    w.u8(kCommand);
-    w.zeros(1);
+  K40T_MESSAGE_LAYOUT()
+  // A different first byte is some other (undocumented) command: decoding refuses it rather
+  // than act on it.
+  template <class S, class V>
+  static void layout(S&, V&& v) {
+    v("command", wire::gap, wire::command(kCommand));
+    v("reserved", wire::gap, wire::reserved(1));
   }
-  // A different first byte is some other (undocumented) command: refuse it rather than act on it.
-  Status decode(ByteReader& r, const CodecOptions&) {
-    const uint8_t v = r.u8();
-    if (r.ok() && v != kCommand) {
-      return Status::fail("byte 1 must be the command code " + std::to_string(kCommand) + ", got " +
-                          std::to_string(v));
-    }
-    return Status::ok();
-  }
-  template <class Self, class V>
-  static void fields(Self&, V&&) {}
 };
 
 template <class AckType = PlainAck>
@@ -49,20 +40,11 @@ struct SwitchRequest {
 
   bool enable = true;
 
-  Status validate() const { return Status::ok(); }
-  void encode(ByteWriter& w, const CodecOptions&) const {
-    w.u8(enable ? 1 : 0);
-    w.zeros(1);
-  }
-  Status decode(ByteReader& r, const CodecOptions&) {
-    const uint8_t v = r.u8();
-    if (v > 1) return Status::fail("byte 1 must be 0 (off) or 1 (on), got " + std::to_string(v));
-    enable = v == 1;
-    return Status::ok();
-  }
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("enable", self.enable);
+  K40T_MESSAGE_LAYOUT()
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("enable", s.enable, wire::on_off);
+    v("reserved", wire::gap, wire::reserved(1));
   }
 };
 

@@ -10,70 +10,14 @@
 #pragma once
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_layout.h"
 #include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/setting_request.h"
+#include "k40t_driver/protocol/messages/thermal_settings.h"
+#include "k40t_driver/protocol/messages/thermal_types.h"
 
 namespace k40t::protocol {
-
-// Section 3.2.2.3 (names from the Chinese original; the translation has "high contrast red" for 4
-// and "yellow red" for 14).
-enum class Palette : uint8_t {
-  kWhiteHot = 1,
-  kBlackHot = 2,
-  kRainbow = 3,
-  kHighContrastRainbow = 4,
-  kIronRed = 5,
-  kMagma = 6,
-  kSky = 7,
-  kMediumGrey = 8,
-  kGreyRed = 9,
-  kPurpleOrange = 10,
-  kSpecial1 = 11,
-  kWarningRed = 12,
-  kIceFire = 13,
-  kCyanRed = 14,
-  kSpecial2 = 15,
-  kGradientRed = 16,
-  kGradientGreen = 17,
-  kGradientYellow = 18,
-  kWarningGreen = 19,
-  kWarningBlue = 20,
-};
-const char* to_string(Palette palette);
-
-// Section 3.2.2.12.
-enum class ThermalGainMode : uint8_t { kHigh = 0, kLow = 1, kAuto = 2 };
-const char* to_string(ThermalGainMode mode);
-
-// Section 3.2.2.1, byte 4 bit 1.
-enum class ThermalMeasurementType : uint8_t { kPoint = 0, kArea = 1 };
-const char* to_string(ThermalMeasurementType type);
-
-// Section 3.2.2.1, byte 4 bit 2: the thermal core fitted ("movement" in the translation).
-enum class ThermalCoreType : uint8_t { kSighting = 0, kRadiometric = 1 };
-const char* to_string(ThermalCoreType type);
-
-// The document's ranges (sections 3.2.2.1, 3.2.2.10, 3.2.2.11, 3.2.2.13, 3.2.2.15).
-constexpr int kThermalZoomMin = 1;
-constexpr int kThermalZoomMax = 8;
-constexpr int kThermalLevelMax = 100;  // sharpness, brightness, contrast, denoise level
-constexpr int kThermalEnhancementMax = 10;
-constexpr int kThermalPictureWidth = 1920;  // spot x range 0..1920, black border included
-constexpr int kThermalPictureHeight = 1088;
-// The measurable part of that picture (note of 3.2.2.11): x 320..1279, y 32..1023.
-constexpr int kThermalMeasurableXMin = 320;
-constexpr int kThermalMeasurableXMax = 1279;
-constexpr int kThermalMeasurableYMin = 32;
-constexpr int kThermalMeasurableYMax = 1023;
-constexpr double kAlarmLimitMinDegC = -100.0;
-constexpr double kAlarmLimitMaxDegC = 500.0;
-constexpr double kAlarmDifferenceMinDegC = 0.1;
-constexpr double kAlarmDifferenceMaxDegC = 600.0;
-constexpr int16_t kAlarmOffWire = -2732;  // "off" for every alarm limit
-constexpr double kThresholdReferenceMinDegC = -30.0;
-constexpr double kThresholdReferenceMaxDegC = 50.0;
-constexpr double kThresholdFloatMaxDegC = 80.0;
 
 // ---- 0x000004, section 3.2.1.2, 5 Hz ---------------------------------------------------------
 // Area measurement fills max/min/centre/average and their coordinates; point measurement fills
@@ -104,28 +48,30 @@ struct ThermalStatus {
   bool difference_alarm = false;
   bool threshold_alarm = false;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("max_degC", self.max_degC);
-    v("min_degC", self.min_degC);
-    v("center_degC", self.center_degC);
-    v("point_degC", self.point_degC);
-    v("average_degC", self.average_degC);
-    v("max_x_px", self.max_x_px);
-    v("max_y_px", self.max_y_px);
-    v("min_x_px", self.min_x_px);
-    v("min_y_px", self.min_y_px);
-    v("center_x_px", self.center_x_px);
-    v("center_y_px", self.center_y_px);
-    v("point_x_px", self.point_x_px);
-    v("point_y_px", self.point_y_px);
-    v("high_alarm", self.high_alarm);
-    v("low_alarm", self.low_alarm);
-    v("difference_alarm", self.difference_alarm);
-    v("threshold_alarm", self.threshold_alarm);
+  K40T_MESSAGE_LAYOUT()
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    constexpr auto degC =
+        wire::scaled<int16_t>(10).range(kThermalDeciDegMin, kThermalDeciDegMax, "degC");
+    v("max_degC", s.max_degC, degC);
+    v("min_degC", s.min_degC, degC);
+    v("center_degC", s.center_degC, degC);
+    v("point_degC", s.point_degC, degC);
+    v("average_degC", s.average_degC, degC);
+    v("max_x_px", s.max_x_px, wire::u16);
+    v("max_y_px", s.max_y_px, wire::u16);
+    v("min_x_px", s.min_x_px, wire::u16);
+    v("min_y_px", s.min_y_px, wire::u16);
+    v("center_x_px", s.center_x_px, wire::u16);
+    v("center_y_px", s.center_y_px, wire::u16);
+    v("point_x_px", s.point_x_px, wire::u16);
+    v("point_y_px", s.point_y_px, wire::u16);
+    // A report is what the pod says: any non-zero flag byte counts as "alarm".
+    v("high_alarm", s.high_alarm, wire::u8);
+    v("low_alarm", s.low_alarm, wire::u8);
+    v("difference_alarm", s.difference_alarm, wire::u8);
+    v("threshold_alarm", s.threshold_alarm, wire::u8);
+    v("reserved", wire::gap, wire::reserved(4));
   }
 };
 
@@ -139,6 +85,7 @@ struct ThermalSettingsAck {
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 23;
   static constexpr size_t kMinSize = 2;
+  static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
   static constexpr size_t kSettingsMinSize = 19;  // after the code; the 2 reserved are optional
 
   ResponseCode code = ResponseCode::kOk;
@@ -165,35 +112,37 @@ struct ThermalSettingsAck {
   double threshold_reference_degC = 0;
   double threshold_float_degC = 0;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("code", self.code);
-    v("palette", self.palette);
-    v("measurement_on", self.measurement_on);
-    v("measurement_type", self.measurement_type);
-    v("core_type", self.core_type);
-    v("zoom_x", self.zoom_x);
-    v("sharpness", self.sharpness);
-    v("gain_mode", self.gain_mode);
-    v("brightness", self.brightness);
-    v("contrast", self.contrast);
-    v("denoise_on", self.denoise_on);
-    v("denoise_level", self.denoise_level);
-    v("enhancement_on", self.enhancement_on);
-    v("enhancement_level", self.enhancement_level);
-    v("high_alarm_on", self.high_alarm_on);
-    v("high_alarm_degC", self.high_alarm_degC);
-    v("low_alarm_on", self.low_alarm_on);
-    v("low_alarm_degC", self.low_alarm_degC);
-    v("difference_alarm_on", self.difference_alarm_on);
-    v("difference_alarm_degC", self.difference_alarm_degC);
-    v("threshold_alarm_on", self.threshold_alarm_on);
-    v("threshold_reference_degC", self.threshold_reference_degC);
-    v("threshold_float_degC", self.threshold_float_degC);
+  K40T_MESSAGE_LAYOUT()
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    constexpr auto level = wire::u8.range(0, kThermalLevelMax);
+    v("code", s.code, wire::response_code);
+    v("palette", s.palette, wire::u8);
+    v("config",
+      wire::bit_group(wire::in_bits("measurement_on", s.measurement_on, wire::inverted_bit(0)),
+                      wire::in_bits("measurement_type", s.measurement_type, wire::bit(1)),
+                      wire::in_bits("core_type", s.core_type, wire::bit(2)),
+                      wire::in_bits("zoom_x", s.zoom_x,
+                                    wire::bits(3, 5).range(kThermalZoomMin, kThermalZoomMax))),
+      wire::packed8);
+    v("sharpness", s.sharpness, level);
+    v("gain_mode", s.gain_mode, wire::u8);
+    v("brightness", s.brightness, level);
+    v("contrast", s.contrast, level);
+    v("denoise",
+      switch_and_level("denoise_on", s.denoise_on, "denoise_level", s.denoise_level,
+                       kThermalLevelMax),
+      wire::packed8);
+    v("enhancement",
+      switch_and_level("enhancement_on", s.enhancement_on, "enhancement_level", s.enhancement_level,
+                       kThermalEnhancementMax),
+      wire::packed8);
+    thermal_alarm_limits(s, v);
+    thermal_threshold_alarm(s, v, wire::u8);  // any non-zero byte: on
+    v("reserved", wire::gap, wire::reserved(2));
   }
+  // A code-only ACK is a refusal; otherwise the settings must follow.
+  Status finish_decode(size_t payload_size) const;
 };
 
 // ---- 0x000100, section 3.2.2.1: byte 1 = 0x01 "read all settings", byte 2 reserved -----------
@@ -201,259 +150,6 @@ struct ThermalReadSettingsRequest : ReadAllSettingsRequest<ThermalSettingsAck> {
   static constexpr MessageId kId = 0x000100;
   static constexpr const char* kName = "thermal_read_settings";
   static constexpr const char* kSection = "3.2.2.1";
-};
-
-// ---- 0x000105, section 3.2.2.2: 1 = no zoom, 2..8 = digital zoom ----------------------------
-struct ThermalZoomRequest : ByteSettingRequest<ThermalZoomRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x000105;
-  static constexpr const char* kName = "thermal_set_zoom";
-  static constexpr const char* kSection = "3.2.2.2";
-  static constexpr int64_t kMin = kThermalZoomMin;
-  static constexpr int64_t kMax = kThermalZoomMax;
-
-  uint8_t zoom_x = 1;
-  static constexpr auto kValue = &ThermalZoomRequest::zoom_x;
-  static constexpr const char* kValueName = "zoom_x";
-};
-
-// ---- 0x000106, section 3.2.2.3 -------------------------------------------------------------
-struct ThermalPaletteRequest : ByteSettingRequest<ThermalPaletteRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x000106;
-  static constexpr const char* kName = "thermal_set_palette";
-  static constexpr const char* kSection = "3.2.2.3";
-
-  Palette palette = Palette::kWhiteHot;
-  static constexpr auto kValue = &ThermalPaletteRequest::palette;
-  static constexpr const char* kValueName = "palette";
-};
-
-// ---- 0x000108, section 3.2.2.4: on the wire 0x00 = on, 0x01 = off --------------------------
-// While measurement is on the pod sends 0x000004 periodically.
-struct ThermalMeasurementRequest
-    : ByteSettingRequest<ThermalMeasurementRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x000108;
-  static constexpr const char* kName = "thermal_set_measurement";
-  static constexpr const char* kSection = "3.2.2.4";
-  static constexpr uint8_t kOnCode = 0x00;  // inverted: 0 = on
-  static constexpr uint8_t kOffCode = 0x01;
-
-  bool measurement_on = true;
-  static constexpr auto kValue = &ThermalMeasurementRequest::measurement_on;
-  static constexpr const char* kValueName = "measurement_on";
-};
-
-// ---- 0x00010A, section 3.2.2.5: 0..100 -----------------------------------------------------
-struct ThermalSharpnessRequest
-    : ByteSettingRequest<ThermalSharpnessRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x00010A;
-  static constexpr const char* kName = "thermal_set_sharpness";
-  static constexpr const char* kSection = "3.2.2.5";
-  static constexpr int64_t kMin = 0;
-  static constexpr int64_t kMax = kThermalLevelMax;
-
-  uint8_t sharpness = 0;
-  static constexpr auto kValue = &ThermalSharpnessRequest::sharpness;
-  static constexpr const char* kValueName = "sharpness";
-};
-
-// ---- 0x00010B, section 3.2.2.6: 0..100 -----------------------------------------------------
-struct ThermalBrightnessRequest
-    : ByteSettingRequest<ThermalBrightnessRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x00010B;
-  static constexpr const char* kName = "thermal_set_brightness";
-  static constexpr const char* kSection = "3.2.2.6";
-  static constexpr int64_t kMin = 0;
-  static constexpr int64_t kMax = kThermalLevelMax;
-
-  uint8_t brightness = 0;
-  static constexpr auto kValue = &ThermalBrightnessRequest::brightness;
-  static constexpr const char* kValueName = "brightness";
-};
-
-// ---- 0x00010C, section 3.2.2.7: 0..100 -----------------------------------------------------
-struct ThermalContrastRequest
-    : ByteSettingRequest<ThermalContrastRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x00010C;
-  static constexpr const char* kName = "thermal_set_contrast";
-  static constexpr const char* kSection = "3.2.2.7";
-  static constexpr int64_t kMin = 0;
-  static constexpr int64_t kMax = kThermalLevelMax;
-
-  uint8_t contrast = 0;
-  static constexpr auto kValue = &ThermalContrastRequest::contrast;
-  static constexpr const char* kValueName = "contrast";
-};
-
-// ---- 0x00010D, section 3.2.2.8: switch (0 off, 1 on), level 0..100, reserved ---------------
-struct ThermalDenoiseRequest {
-  static constexpr MessageId kId = 0x00010D;
-  static constexpr const char* kName = "thermal_set_denoise";
-  static constexpr const char* kSection = "3.2.2.8";
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 3;
-  static constexpr size_t kMinSize = 2;
-  using Ack = PlainAck;
-
-  bool denoise_on = false;
-  uint8_t denoise_level = 0;
-
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("denoise_on", self.denoise_on);
-    v("denoise_level", self.denoise_level);
-  }
-};
-
-// ---- 0x00010E, section 3.2.2.9: 0 = off, 1..10 = level -------------------------------------
-struct ThermalEnhancementRequest
-    : ByteSettingRequest<ThermalEnhancementRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x00010E;
-  static constexpr const char* kName = "thermal_set_enhancement";
-  static constexpr const char* kSection = "3.2.2.9";
-  static constexpr int64_t kMin = 0;
-  static constexpr int64_t kMax = kThermalEnhancementMax;
-
-  uint8_t enhancement_level = 0;
-  static constexpr auto kValue = &ThermalEnhancementRequest::enhancement_level;
-  static constexpr const char* kValueName = "enhancement_level";
-};
-
-// ---- 0x00010F, section 3.2.2.10: spot measurement cursor, uint16 x 0..1920, y 0..1088 -------
-struct ThermalSpotRequest {
-  static constexpr MessageId kId = 0x00010F;
-  static constexpr const char* kName = "thermal_set_spot";
-  static constexpr const char* kSection = "3.2.2.10";
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 5;
-  static constexpr size_t kMinSize = 4;
-  using Ack = PlainAck;
-
-  uint16_t x_px = 0;
-  uint16_t y_px = 0;
-
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("x_px", self.x_px);
-    v("y_px", self.y_px);
-  }
-};
-
-// ---- 0x000110, section 3.2.2.11: measurement rectangle, uint16 width, height, centre x, y ----
-// The rectangle must lie inside the measurable area x 320..1279, y 32..1023 (the note of
-// 3.2.2.11, read as: centre +- half the size stays inside).
-struct ThermalAreaRequest {
-  static constexpr MessageId kId = 0x000110;
-  static constexpr const char* kName = "thermal_set_area";
-  static constexpr const char* kSection = "3.2.2.11";
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 9;
-  static constexpr size_t kMinSize = 8;
-  using Ack = PlainAck;
-
-  uint16_t width_px = 0;
-  uint16_t height_px = 0;
-  uint16_t center_x_px = 0;
-  uint16_t center_y_px = 0;
-
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("width_px", self.width_px);
-    v("height_px", self.height_px);
-    v("center_x_px", self.center_x_px);
-    v("center_y_px", self.center_y_px);
-  }
-};
-
-// ---- 0x000123, section 3.2.2.12 ------------------------------------------------------------
-struct ThermalGainModeRequest
-    : ByteSettingRequest<ThermalGainModeRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x000123;
-  static constexpr const char* kName = "thermal_set_gain_mode";
-  static constexpr const char* kSection = "3.2.2.12";
-
-  ThermalGainMode gain_mode = ThermalGainMode::kHigh;
-  static constexpr auto kValue = &ThermalGainModeRequest::gain_mode;
-  static constexpr const char* kValueName = "gain_mode";
-};
-
-// ---- 0x000124, section 3.2.2.13: int16 x0.1 degC high, low, difference; 2 reserved ---------
-// High/low -100.0..500.0 degC, difference 0.1..600.0 degC; -2732 on the wire switches one off.
-struct ThermalAlarmsRequest {
-  static constexpr MessageId kId = 0x000124;
-  static constexpr const char* kName = "thermal_set_alarms";
-  static constexpr const char* kSection = "3.2.2.13";
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 8;
-  // docs/protocol/decisions.md#a9: the table says 7 bytes, the text 8.
-  static constexpr size_t kMinSize = 7;
-  using Ack = PlainAck;
-
-  bool high_alarm_on = false;
-  double high_alarm_degC = 0;
-  bool low_alarm_on = false;
-  double low_alarm_degC = 0;
-  bool difference_alarm_on = false;
-  double difference_alarm_degC = 0;
-
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("high_alarm_on", self.high_alarm_on);
-    v("high_alarm_degC", self.high_alarm_degC);
-    v("low_alarm_on", self.low_alarm_on);
-    v("low_alarm_degC", self.low_alarm_degC);
-    v("difference_alarm_on", self.difference_alarm_on);
-    v("difference_alarm_degC", self.difference_alarm_degC);
-  }
-};
-
-// ---- 0x000125, section 3.2.2.14: temperature overlay on the thermal picture ----------------
-struct ThermalOverlayRequest : ByteSettingRequest<ThermalOverlayRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x000125;
-  static constexpr const char* kName = "thermal_set_overlay";
-  static constexpr const char* kSection = "3.2.2.14";
-  static constexpr uint8_t kOnCode = 0x01;
-  static constexpr uint8_t kOffCode = 0x00;
-
-  bool overlay_on = false;
-  static constexpr auto kValue = &ThermalOverlayRequest::overlay_on;
-  static constexpr const char* kValueName = "overlay_on";
-};
-
-// ---- 0x000126, section 3.2.2.15: switch, int16 reference -30..50 degC, int16 float 0..80 degC
-struct ThermalThresholdAlarmRequest {
-  static constexpr MessageId kId = 0x000126;
-  static constexpr const char* kName = "thermal_set_threshold_alarm";
-  static constexpr const char* kSection = "3.2.2.15";
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 6;
-  static constexpr size_t kMinSize = 5;
-  using Ack = PlainAck;
-
-  bool threshold_alarm_on = false;
-  double threshold_reference_degC = 0;
-  double threshold_float_degC = 0;
-
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("threshold_alarm_on", self.threshold_alarm_on);
-    v("threshold_reference_degC", self.threshold_reference_degC);
-    v("threshold_float_degC", self.threshold_float_degC);
-  }
 };
 
 // Every message struct of the thermal family: the catalogue, the catalogue tests and the fuzz

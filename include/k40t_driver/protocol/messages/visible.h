@@ -6,7 +6,10 @@
 // Ambiguities and decisions: docs/protocol/thermal_visible.md.
 #pragma once
 
+#include <type_traits>
+
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_layout.h"
 #include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/setting_request.h"
@@ -93,7 +96,9 @@ const char* to_string(MeteringMode mode);
 double video_bitrate_mbps(uint8_t code, VideoResolution resolution, bool h265);
 
 constexpr int kVisibleBitrateCodeMax = 3;
-constexpr int kVisibleLevelMax = 100;  // zoom fine-tune, backlight, strong-light values
+constexpr int kVisibleLevelMax = 100;     // zoom fine-tune, backlight, strong-light values
+constexpr uint8_t kVisibleOnCode = 0x01;  // the switches: 0x01 on, 0x02 off
+constexpr uint8_t kVisibleOffCode = 0x02;
 
 // ---- 0x000005, section 3.2.1.3, 5 Hz ---------------------------------------------------------
 struct VisibleStatus {
@@ -114,20 +119,21 @@ struct VisibleStatus {
   bool focusing = false;                    // 0x00 focus done, 0x01 focusing
   double precise_shot_focal_length_mm = 0;  // uint16, unit not given: read as 0.01 mm
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("zooming", self.zooming);
-    v("focal_length_mm", self.focal_length_mm);
-    v("zoom_x", self.zoom_x);
-    v("ev", self.ev);
-    v("iso_db", self.iso_db);
-    v("shutter_us", self.shutter_us);
-    v("ae_lock_on", self.ae_lock_on);
-    v("focusing", self.focusing);
-    v("precise_shot_focal_length_mm", self.precise_shot_focal_length_mm);
+  K40T_MESSAGE_LAYOUT()
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    constexpr auto centi_mm = wire::scaled<uint16_t>(100).range(0.0, 655.35, "mm");
+    // A report is what the pod says: flags are "non-zero", AE lock is "0x01".
+    v("zooming", s.zooming, wire::u8);
+    v("focal_length_mm", s.focal_length_mm, centi_mm);
+    v("zoom_x", s.zoom_x, wire::scaled<uint16_t>(10).range(0.0, 6553.5, "x"));
+    v("ev", s.ev, wire::u8);
+    v("iso_db", s.iso_db, wire::scaled<uint16_t>(10).range(0.0, 6553.5, "dB"));
+    v("shutter_us", s.shutter_us, wire::u16);
+    v("ae_lock_on", s.ae_lock_on, wire::report_flag(kVisibleOnCode, kVisibleOffCode));
+    v("focusing", s.focusing, wire::u8);
+    v("precise_shot_focal_length_mm", s.precise_shot_focal_length_mm, centi_mm);
+    v("reserved", wire::gap, wire::reserved(1));
   }
 };
 
@@ -141,6 +147,7 @@ struct VisibleSettingsAck {
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 17;
   static constexpr size_t kMinSize = 2;
+  static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
   static constexpr size_t kSettingsSize = 15;  // after the code
 
   ResponseCode code = ResponseCode::kOk;
@@ -161,29 +168,37 @@ struct VisibleSettingsAck {
   AntiFlicker anti_flicker = AntiFlicker::kAuto;  // byte 16 bits 7..4
   MeteringMode metering = MeteringMode::kArea;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("code", self.code);
-    v("photo_resolution", self.photo_resolution);
-    v("video_resolution", self.video_resolution);
-    v("video_bitrate_code", self.video_bitrate_code);
-    v("white_balance", self.white_balance);
-    v("ev", self.ev);
-    v("iso", self.iso);
-    v("shutter", self.shutter);
-    v("zoom_fine_tune", self.zoom_fine_tune);
-    v("backlight_on", self.backlight_on);
-    v("backlight_value", self.backlight_value);
-    v("strong_light_on", self.strong_light_on);
-    v("strong_light_value", self.strong_light_value);
-    v("ae_lock_on", self.ae_lock_on);
-    v("watermark_on", self.watermark_on);
-    v("anti_flicker", self.anti_flicker);
-    v("metering", self.metering);
+  K40T_MESSAGE_LAYOUT()
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    constexpr auto level = wire::u8.range(0, kVisibleLevelMax);
+    v("code", s.code, wire::response_code);
+    v("photo_resolution", s.photo_resolution, wire::u8);
+    v("video_resolution", s.video_resolution, wire::u8);
+    v("video_bitrate_code", s.video_bitrate_code, wire::u8.range(0, kVisibleBitrateCodeMax));
+    v("white_balance", s.white_balance, wire::u8.mask(0x0F));  // bits 7..4 reserved
+    v("reserved", wire::gap, wire::reserved(2));
+    v("ev", s.ev, wire::u8);
+    v("iso", s.iso, wire::u8);
+    v("shutter", s.shutter, wire::u8);
+    v("zoom_fine_tune", s.zoom_fine_tune, level);
+    v("backlight",
+      switch_and_level("backlight_on", s.backlight_on, "backlight_value", s.backlight_value,
+                       kVisibleLevelMax),
+      wire::packed8);
+    v("strong_light",
+      switch_and_level("strong_light_on", s.strong_light_on, "strong_light_value",
+                       s.strong_light_value, kVisibleLevelMax),
+      wire::packed8);
+    v("ae_lock_on", s.ae_lock_on, wire::report_flag(kVisibleOnCode, kVisibleOffCode));
+    v("osd",
+      wire::bit_group(wire::in_bits("watermark_on", s.watermark_on, wire::bits(0, 4)),
+                      wire::in_bits("anti_flicker", s.anti_flicker, wire::bits(4, 4))),
+      wire::packed8);
+    v("metering", s.metering, wire::u8);
   }
+  // A code-only ACK is a refusal; otherwise the settings must follow.
+  Status finish_decode(size_t payload_size) const;
 };
 
 // ---- 0x000200, section 3.2.3.1: byte 1 = 0x01 "read all settings", byte 2 reserved -----------
@@ -281,7 +296,8 @@ struct VisibleAntiFlickerRequest
 
 // "0x00 start setting, 0x01 on / 0x02 off, value 0..100": strong-light suppression (3.2.3.9)
 // and backlight compensation (3.2.3.10). A request derives from SwitchAndValueRequest<Self> and
-// names its two fields with kOn/kOnName and kValue/kValueName (see setting_request.h).
+// names its two fields with kOn/kOnName and kValue/kValueName (see setting_request.h); the base
+// turns them into the request's layout.
 template <class Derived>
 struct SwitchAndValueRequest {
   static constexpr Direction kDirection = Direction::kHostToPod;
@@ -289,33 +305,15 @@ struct SwitchAndValueRequest {
   static constexpr size_t kMinSize = 3;
   using Ack = PlainAck;
 
-  Status validate() const {
-    return check_range(Derived::kValueName, static_cast<int64_t>(derived().*Derived::kValue), 0,
-                       kVisibleLevelMax);
+  K40T_MESSAGE_LAYOUT()
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    using Self = std::conditional_t<std::is_const_v<S>, const Derived, Derived>;
+    auto& self = static_cast<Self&>(s);
+    v("start", wire::gap, wire::fixed(kStartSettingByte, "start setting"));
+    v(Derived::kOnName, self.*Derived::kOn, wire::flag(kVisibleOnCode, kVisibleOffCode));
+    v(Derived::kValueName, self.*Derived::kValue, wire::u8.range(0, kVisibleLevelMax));
   }
-  void encode(ByteWriter& w, const CodecOptions&) const {
-    w.u8(kStartSettingByte);
-    w.u8(derived().*Derived::kOn ? kOnCode : kOffCode);
-    w.u8(derived().*Derived::kValue);
-  }
-  Status decode(ByteReader& r, const CodecOptions&) {
-    const Status start = detail::expect_command_byte(r, kStartSettingByte, "start setting");
-    const Status on =
-        detail::read_switch(r, Derived::kOnName, kOnCode, kOffCode, &(derived().*Derived::kOn));
-    derived().*Derived::kValue = r.u8();
-    return first_failure(start, on);
-  }
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v(Derived::kOnName, self.*Derived::kOn);
-    v(Derived::kValueName, self.*Derived::kValue);
-  }
-
- private:
-  static constexpr uint8_t kOnCode = 0x01;
-  static constexpr uint8_t kOffCode = 0x02;
-  const Derived& derived() const { return static_cast<const Derived&>(*this); }
-  Derived& derived() { return static_cast<Derived&>(*this); }
 };
 
 // ---- 0x000208, section 3.2.3.9: 0x00 start setting, 0x01 on / 0x02 off, value 0..100 --------
@@ -356,8 +354,8 @@ struct VisibleAeLockRequest
   static constexpr MessageId kId = 0x00020A;
   static constexpr const char* kName = "visible_set_ae_lock";
   static constexpr const char* kSection = "3.2.3.11";
-  static constexpr uint8_t kOnCode = 0x01;
-  static constexpr uint8_t kOffCode = 0x02;
+  static constexpr uint8_t kOnCode = kVisibleOnCode;
+  static constexpr uint8_t kOffCode = kVisibleOffCode;
 
   bool ae_lock_on = false;
   static constexpr auto kValue = &VisibleAeLockRequest::ae_lock_on;

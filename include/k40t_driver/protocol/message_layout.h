@@ -1,0 +1,128 @@
+// A pod message described by a layout() (codec/layout.h) meets message.h's contract through
+// K40T_MESSAGE_LAYOUT(), written once in the struct that has the layout():
+//
+//   struct SbusRangeRequest {
+//     kId, kName, kSection, kDirection, kSize, kMinSize ...
+//     uint16_t max_value = 1811;
+//     uint16_t min_value = 172;
+//     K40T_MESSAGE_LAYOUT()
+//     template <class S, class V>
+//     static void layout(S& s, V&& v) { ... }
+//     Status extra_checks() const;   // optional: rules between fields
+//   };
+//
+// The macro defines validate() (the layout's checks, then extra_checks() if the struct has one),
+// encode(), decode() and fields(). Byte order: the struct's
+// `static constexpr ByteOrder CodecOptions::* kByteOrder` if it has one (ACKs:
+// &CodecOptions::ack_byte_order, docs/protocol/decisions.md#a2), else little-endian (section 2.1).
+// Fields from kMinSize on are optional on decode (they keep their defaults when the payload ends);
+// `Status finish_decode(size_t payload_size)`, if the struct has one, runs after a decode.
+#pragma once
+
+#include <type_traits>
+#include <utility>
+
+#include "k40t_driver/codec/layout.h"
+#include "k40t_driver/protocol/codec_options.h"
+#include "k40t_driver/protocol/message.h"
+
+namespace k40t::protocol {
+
+namespace wire = codec::wire;
+
+namespace layout_detail {
+template <class T, class = void>
+struct HasByteOrder : std::false_type {};
+template <class T>
+struct HasByteOrder<T, std::void_t<decltype(T::kByteOrder)>> : std::true_type {};
+template <class T, class = void>
+struct HasExtraChecks : std::false_type {};
+template <class T>
+struct HasExtraChecks<T, std::void_t<decltype(std::declval<const T&>().extra_checks())>>
+    : std::true_type {};
+
+template <class T, class = void>
+struct HasFinishDecode : std::false_type {};
+template <class T>
+struct HasFinishDecode<T, std::void_t<decltype(std::declval<T&>().finish_decode(size_t{}))>>
+    : std::true_type {};
+
+// Calls visit(std::integral_constant<ByteOrder, order>) with the struct's byte order: little-endian
+// unless it has a kByteOrder (then the option it names), chosen once per message, not per byte.
+template <class T, class Visit>
+void with_byte_order(const CodecOptions& o, Visit&& visit) {
+  if constexpr (HasByteOrder<T>::value) {
+    if (o.*T::kByteOrder == ByteOrder::kBig) {
+      visit(std::integral_constant<ByteOrder, ByteOrder::kBig>{});
+      return;
+    }
+  }
+  visit(std::integral_constant<ByteOrder, ByteOrder::kLittle>{});
+}
+
+template <class T>
+[[gnu::flatten]] Status validate(const T& m) {
+  Status result = Status::ok();
+  T::layout(m, codec::LayoutValidator(result));
+  if constexpr (HasExtraChecks<T>::value) {
+    if (result.is_ok()) return m.extra_checks();
+  }
+  return result;
+}
+
+// Both claim the layout's kSize bytes once and then write or read them without a check per byte
+// (codec/unchecked_bytes.h); a shorter payload (optional trailing fields) is read checked. That
+// kSize is what the layout occupies is a unit test over every message (test_message_layouts.cpp).
+// flatten: the layout and its visitor are inlined here, so the cursor lives in a register instead
+// of being reloaded from memory after every byte stored (a byte store may alias anything).
+template <class T>
+[[gnu::flatten]] void encode(const T& m, ByteWriter& w, const CodecOptions& o) {
+  uint8_t* out = w.claim(T::kSize);
+  if (out == nullptr) return;  // w has failed: encode_payload reports the overflow
+  codec::UncheckedWriter cursor(out);
+  with_byte_order<T>(o, [&](auto order) {
+    T::layout(m, codec::BasicLayoutWriter<decltype(order)::value, codec::UncheckedWriter>(cursor));
+  });
+}
+
+template <class T>
+[[gnu::flatten]] Status decode(T& m, ByteReader& r, const CodecOptions& o) {
+  Status failure = Status::ok();
+  const size_t size = r.remaining();
+  constexpr size_t full = T::kSize;
+  with_byte_order<T>(o, [&](auto order) {
+    constexpr ByteOrder kOrder = decltype(order)::value;
+    if (size >= full) {
+      const size_t start = r.position();
+      codec::UncheckedReader cursor(r.claim(full), full, start);
+      T::layout(m, codec::BasicLayoutReader<kOrder, codec::UncheckedReader>(cursor, T::kMinSize,
+                                                                            &failure));
+    } else {
+      T::layout(m, codec::BasicLayoutReader<kOrder>(r, T::kMinSize, &failure));
+    }
+  });
+  if constexpr (HasFinishDecode<T>::value) {
+    if (failure.is_ok()) return m.finish_decode(size);
+  }
+  return failure;
+}
+}  // namespace layout_detail
+
+}  // namespace k40t::protocol
+
+// The members message.h's contract asks for, from the struct's layout().
+#define K40T_MESSAGE_LAYOUT()                                                                   \
+  ::k40t::Status validate() const {                                                             \
+    return ::k40t::protocol::layout_detail::validate(*this);                                    \
+  }                                                                                             \
+  void encode(::k40t::protocol::ByteWriter& w, const ::k40t::protocol::CodecOptions& o) const { \
+    ::k40t::protocol::layout_detail::encode(*this, w, o);                                       \
+  }                                                                                             \
+  ::k40t::Status decode(::k40t::protocol::ByteReader& r,                                        \
+                        const ::k40t::protocol::CodecOptions& o) {                              \
+    return ::k40t::protocol::layout_detail::decode(*this, r, o);                                \
+  }                                                                                             \
+  template <class Self, class V>                                                                \
+  static void fields(Self& self, V&& v) {                                                       \
+    layout(self, ::k40t::codec::FieldLister<std::remove_reference_t<V>>(v));                    \
+  }

@@ -1,0 +1,33 @@
+#include "k40t_driver/codec/layout.h"
+
+#include <cstdio>
+
+namespace k40t::codec::detail {
+
+namespace {
+std::string hex_byte(uint8_t v) {
+  char text[8];
+  std::snprintf(text, sizeof(text), "0x%02X", static_cast<unsigned>(v));
+  return text;
+}
+}  // namespace
+
+std::string fixed_byte_error(size_t index, const wire::Fixed& fixed, uint8_t got) {
+  if (fixed.decimal) {
+    return "byte " + std::to_string(index) + " must be " + fixed.meaning + " " +
+           std::to_string(fixed.value) + ", got " + std::to_string(got);
+  }
+  return "byte " + std::to_string(index) + " must be " + hex_byte(fixed.value) + " (" +
+         fixed.meaning + "), got " + hex_byte(got);
+}
+
+std::string flag_error(const char* field, size_t index, const wire::Flag& flag, uint8_t got) {
+  if (flag.decimal) {
+    return "byte " + std::to_string(index) + " must be " + std::to_string(flag.off) + " (off) or " +
+           std::to_string(flag.on) + " (on), got " + std::to_string(got);
+  }
+  return std::string("field '") + field + "' must be " + hex_byte(flag.on) + " (on) or " +
+         hex_byte(flag.off) + " (off), got " + hex_byte(got);
+}
+
+}  // namespace k40t::codec::detail
