@@ -1,6 +1,6 @@
 // Thermal (infrared) camera: the enums and the document's ranges (sections 3.2.1.2 and 3.2.2), and
 // the field groups the settings ACK 0x010100 shares with the setting requests. The messages are in
-// thermal.h (status, settings read) and thermal_settings.h (setting requests).
+// thermal_status.h (the status report) and thermal.h (settings, their read-back, the list).
 #pragma once
 
 #include "k40t_driver/protocol/message_layout.h"
