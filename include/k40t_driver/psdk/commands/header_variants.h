@@ -19,6 +19,7 @@
 #include "k40t_driver/protocol/result.h"
 #include "k40t_driver/psdk/commands/camera_capture.h"
 #include "k40t_driver/psdk/commands/data_push.h"
+#include "k40t_driver/psdk/commands/declare.h"
 #include "k40t_driver/psdk/commands/gimbal.h"
 
 namespace k40t::psdk {
@@ -55,8 +56,7 @@ struct ShootPhotoModeWide {
 };
 struct ShootPhotoModeWideAck : Reply<CommandSet::kCamera, 0x06, Sender::kPayload>,
                                ShootPhotoModeWide {
-  static constexpr const char* kName = "get_shoot_photo_mode_ack_u16";
-  static constexpr const char* kSection = "3.4.6";
+  K40T_PSDK_NAMED("get_shoot_photo_mode_ack_u16", "3.4.6");
 };
 // 3.4.5's DATA by its length: 4 bytes (document, uint8 interval) or 5 and more (headers,
 // uint16 interval).
