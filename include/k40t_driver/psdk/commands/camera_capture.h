@@ -3,6 +3,8 @@
 // payload answers. A "set" command and the ACK of its "get" share one value struct (mixin).
 #pragma once
 
+#include <limits>
+
 #include "k40t_driver/psdk/commands/declare.h"
 
 namespace k40t::psdk {
@@ -76,20 +78,30 @@ K40T_PSDK_NO_DATA(GetShootPhotoState, kCamera, 0x04, ShootPhotoStateAck, "get_sh
 
 // 3.4.5 / 3.4.6: burst count applies to burst shooting, interval count and interval to interval
 // shooting (count 1..254, or 255 = until stopped; interval 1..255 s; 0 is reserved for both).
-struct ShootPhotoMode {
+// The interval is a uint8_t as the document gives it, or a uint16_t as DJI's headers give it
+// (ShootPhotoModeWide, header_variants.h).
+template <class Interval>
+struct BasicShootPhotoMode {
   ShootPhotoType type = ShootPhotoType::kSingle;
   uint8_t burst_count = 0;
   uint8_t interval_count = 0;
-  uint8_t interval_s = 0;
-  Status validate() const;
+  Interval interval_s = 0;
+  Status validate() const {
+    // Counts and interval matter only for the type that uses them (0 is reserved there).
+    if (type != ShootPhotoType::kInterval) return Status::ok();
+    return first_failure(
+        check_int("interval_count", interval_count, 1, 255),
+        check_int("interval_s", interval_s, 1, std::numeric_limits<Interval>::max(), "s"));
+  }
   template <class S, class V>
   static void layout(S& s, V&& v) {
     v("type", s.type, wire::u8);
     v("burst_count", s.burst_count, wire::u8);
     v("interval_count", s.interval_count, wire::u8);
-    v("interval_s", s.interval_s, wire::u8);
+    v("interval_s", s.interval_s, wire::Raw<Interval>{});
   }
 };
+struct ShootPhotoMode : BasicShootPhotoMode<uint8_t> {};
 
 // 3.4.5 / 3.4.6: SetShootPhotoMode, ShootPhotoModeAck, GetShootPhotoMode.
 K40T_PSDK_SETTING(ShootPhotoMode, shoot_photo_mode, ShootPhotoMode, kCamera, 0x05, "3.4.5", 0x06,
