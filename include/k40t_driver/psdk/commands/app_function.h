@@ -13,16 +13,12 @@ constexpr size_t kMaxFloatingWindowData = 128;  // text + its terminating NUL
 constexpr size_t kTextInputNameSize = 32;
 
 // 3.2.1: 1..32 bytes from the mobile app. No ACK.
-struct TransparentFromMobile : Command<CommandSet::kAppFunction, 0x01, Sender::kAdapter, NoAck>,
-                               OpaqueData<1, kMaxTransparentFromMobile> {
-  K40T_PSDK_NAMED("transparent_from_mobile", "3.2.1");
-};
+K40T_PSDK_TRANSPARENT(TransparentFromMobile, kAppFunction, 0x01, kAdapter,
+                      kMaxTransparentFromMobile, "transparent_from_mobile", "3.2.1");
 
 // 3.2.2: 1..128 bytes to the mobile app. No ACK. Encrypted by the payload (docs/psdk.md#frames).
-struct TransparentToMobile : Command<CommandSet::kAppFunction, 0x02, Sender::kPayload, NoAck>,
-                             OpaqueData<1, kMaxTransparentToMobile> {
-  K40T_PSDK_NAMED("transparent_to_mobile", "3.2.2");
-};
+K40T_PSDK_TRANSPARENT(TransparentToMobile, kAppFunction, 0x02, kPayload, kMaxTransparentToMobile,
+                      "transparent_to_mobile", "3.2.2");
 
 // 3.2.3: a UTF-8 line for DJI Pilot's floating window; on the wire the text and a terminating
 // NUL, 1..128 bytes in all. No ACK. Encrypted by the payload (docs/psdk.md#frames).

@@ -32,3 +32,9 @@
     K40T_PSDK_NAMED("get_" #snake "_ack", get_section);                                       \
   };                                                                                          \
   K40T_PSDK_NO_DATA(Get##Camel, set, get_id, Camel##Ack, "get_" #snake, get_section)
+
+// Transparent data: 1..max opaque bytes from `sender`, not ACKed.
+#define K40T_PSDK_TRANSPARENT(Struct, set, id, sender, max, name, section)                  \
+  struct Struct : Command<CommandSet::set, id, Sender::sender, NoAck>, OpaqueData<1, max> { \
+    K40T_PSDK_NAMED(name, section);                                                         \
+  }

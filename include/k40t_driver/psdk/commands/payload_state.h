@@ -27,6 +27,15 @@ struct Version {
   }
 };
 
+// The DATA of the version ACKs (3.1.2, 3.1.5).
+struct VersionValue {
+  Version version;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    Version::layout(s.version, v);
+  }
+};
+
 // 3.1.1 ACK: the raw 16-byte MD5 of (app key, random bytes); see identity.h.
 struct IdentityVerificationAck : Reply<CommandSet::kPayloadState, 0x01, Sender::kPayload> {
   K40T_PSDK_NAMED("identity_verification_ack", "3.1.1");
@@ -49,13 +58,8 @@ struct IdentityVerification
 };
 
 // 3.1.2 ACK.
-struct PsdkVersionAck : Reply<CommandSet::kPayloadState, 0x02, Sender::kPayload> {
+struct PsdkVersionAck : Reply<CommandSet::kPayloadState, 0x02, Sender::kPayload>, VersionValue {
   K40T_PSDK_NAMED("get_psdk_version_ack", "3.1.2");
-  Version version;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    Version::layout(s.version, v);
-  }
 };
 
 // 3.1.2.
@@ -91,13 +95,8 @@ struct ProductInfoAck : Reply<CommandSet::kPayloadState, 0x04, Sender::kPayload>
 K40T_PSDK_NO_DATA(GetProductInfo, kPayloadState, 0x04, ProductInfoAck, "get_product_info", "3.1.4");
 
 // 3.1.5 ACK: the SKYPORT version the payload wants (for upgrading it with DJI Assistant 2).
-struct SkyportVersionAck : Reply<CommandSet::kPayloadState, 0x05, Sender::kPayload> {
+struct SkyportVersionAck : Reply<CommandSet::kPayloadState, 0x05, Sender::kPayload>, VersionValue {
   K40T_PSDK_NAMED("get_skyport_version_ack", "3.1.5");
-  Version version;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    Version::layout(s.version, v);
-  }
 };
 
 // 3.1.5.
