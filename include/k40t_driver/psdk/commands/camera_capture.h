@@ -23,13 +23,7 @@ const char* to_string(RecordAction action);
 
 constexpr uint8_t kIntervalShootUntilStopped = 255;
 
-struct CameraWorkModeValue {
-  CameraWorkMode mode = CameraWorkMode::kShootPhoto;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("mode", s.mode, wire::u8);
-  }
-};
+struct CameraWorkModeValue : ModeValue<CameraWorkMode, CameraWorkMode::kShootPhoto> {};
 
 // 3.4.1 / 3.4.2: SetCameraWorkMode, CameraWorkModeAck, GetCameraWorkMode.
 K40T_PSDK_SETTING(CameraWorkMode, camera_work_mode, CameraWorkModeValue, kCamera, 0x01, "3.4.1",

@@ -28,13 +28,7 @@ const char* to_string(ZoomDirection direction);
 
 constexpr double kMaxOpticalZoomFactor = 30.0;  // 3.4.24
 
-struct MeteringModeValue {
-  MeteringMode mode = MeteringMode::kCenter;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("mode", s.mode, wire::u8);
-  }
-};
+struct MeteringModeValue : ModeValue<MeteringMode, MeteringMode::kCenter> {};
 
 // 3.4.11 / 3.4.12: SetMeteringMode, MeteringModeAck, GetMeteringMode.
 K40T_PSDK_SETTING(MeteringMode, metering_mode, MeteringModeValue, kCamera, 0x20, "3.4.11", 0x21,
@@ -66,13 +60,7 @@ struct SpotZoneValue {
 K40T_PSDK_SETTING(SpotMeteringZone, spot_metering_zone, SpotZoneValue, kCamera, 0x22, "3.4.13",
                   0x23, "3.4.14");
 
-struct FocusModeValue {
-  FocusMode mode = FocusMode::kAuto;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("mode", s.mode, wire::u8);
-  }
-};
+struct FocusModeValue : ModeValue<FocusMode, FocusMode::kAuto> {};
 
 // 3.4.15 / 3.4.16: SetFocusMode, FocusModeAck, GetFocusMode.
 K40T_PSDK_SETTING(FocusMode, focus_mode, FocusModeValue, kCamera, 0x30, "3.4.15", 0x31, "3.4.16");

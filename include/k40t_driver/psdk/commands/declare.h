@@ -6,6 +6,20 @@
 
 #include "k40t_driver/psdk/command.h"
 
+namespace k40t::psdk {
+
+// A setting whose DATA is one enum byte, `mode`.
+template <class Mode, Mode kDefault>
+struct ModeValue {
+  Mode mode = kDefault;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    v("mode", s.mode, wire::u8);
+  }
+};
+
+}  // namespace k40t::psdk
+
 // The name and section of a command or ACK struct, inside its body.
 #define K40T_PSDK_NAMED(name, section)       \
   static constexpr const char* kName = name; \

@@ -71,13 +71,9 @@ struct GimbalStateAck : Reply<CommandSet::kGimbal, 0x01, Sender::kPayload> {
 K40T_PSDK_NO_DATA(GetGimbalState, kGimbal, 0x01, GimbalStateAck, "get_gimbal_state", "3.5.1");
 
 // 3.5.2.
-struct SetGimbalMode : Command<CommandSet::kGimbal, 0x02, Sender::kAdapter, PlainAck> {
+struct SetGimbalMode : Command<CommandSet::kGimbal, 0x02, Sender::kAdapter, PlainAck>,
+                       ModeValue<GimbalMode, GimbalMode::kFree> {
   K40T_PSDK_NAMED("set_gimbal_mode", "3.5.2");
-  GimbalMode mode = GimbalMode::kFree;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("mode", s.mode, wire::u8);
-  }
 };
 
 // 3.5.3: back to the centre ("return head").
