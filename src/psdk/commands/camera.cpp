@@ -97,13 +97,6 @@ const char* to_string(ZoomDirection direction) {
   return nullptr;
 }
 
-Status ShootPhotoMode::validate() const {
-  // Counts and interval matter only for the type that uses them (0 is reserved there).
-  if (type != ShootPhotoType::kInterval) return Status::ok();
-  return first_failure(check_int("interval_count", interval_count, 1, 255),
-                       check_int("interval_s", interval_s, 1, 255, "s"));
-}
-
 Status OpticalZoomSpecAck::validate() const {
   if (min_focal_length_mm > max_focal_length_mm) {
     return Status::fail("field 'min_focal_length_mm' must not exceed max_focal_length_mm");

@@ -72,12 +72,6 @@ SdCardInfoAck sd_card_ack_for(const SdCardInfoAck& ack, PsdkLayout layout) {
   return out;
 }
 
-Status ShootPhotoModeWide::validate() const {
-  if (type != ShootPhotoType::kInterval) return Status::ok();
-  return first_failure(check_int("interval_count", interval_count, 1, 255),
-                       check_int("interval_s", interval_s, 1, 65535, "s"));
-}
-
 Result<ShootPhotoModeWide> decode_shoot_photo_mode(const uint8_t* data, size_t size) {
   if (size >= min_body_size<ShootPhotoModeWideAck>()) {
     ShootPhotoModeWide mode;

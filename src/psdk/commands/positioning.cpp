@@ -20,51 +20,6 @@ const char* to_string(PositionSolution solution) {
 
 namespace {
 
-template <class Point>
-Status validate_points(uint8_t count, size_t max_count, const DateTime& base_time,
-                       const std::array<Point, kMaxTargetPoints>& points) {
-  Status s = first_failure(check_int("count", count, 1, static_cast<int64_t>(max_count)),
-                           base_time.validate());
-  for (size_t i = 0; s && i < count; ++i) {
-    s = validate(points[i]);  // the layout's checks (bit widths, enums) and the point's own
-  }
-  return s;
-}
-
-template <class Point>
-void encode_points(ByteWriter& w, uint8_t count, uint8_t task_index, const DateTime& base_time,
-                   const std::array<Point, kMaxTargetPoints>& points) {
-  w.u8(count);
-  w.u8(task_index);
-  DateTime::layout(base_time, LayoutWriter(w));
-  for (size_t i = 0; i < count; ++i) Point::layout(points[i], LayoutWriter(w));
-}
-
-template <class Point>
-Status decode_points(ByteReader& r, uint8_t& count, uint8_t& task_index, DateTime& base_time,
-                     std::array<Point, kMaxTargetPoints>& points) {
-  count = r.u8();
-  task_index = r.u8();
-  DateTime::layout(base_time, LayoutReader(r));
-  if (count > kMaxTargetPoints) {
-    return Status::fail("target point count " + std::to_string(count) + " is more than 5");
-  }
-  for (size_t i = 0; i < count; ++i) Point::layout(points[i], LayoutReader(r));
-  return Status::ok();
-}
-
-template <class Point>
-void describe_points(FieldSink& sink, uint8_t count, uint8_t task_index, const DateTime& base_time,
-                     const std::array<Point, kMaxTargetPoints>& points) {
-  sink.unsigned_integer("count", count);
-  sink.unsigned_integer("task_index", task_index);
-  DateTime::layout(base_time, LayoutSink(sink));
-  for (size_t i = 0; i < count && i < kMaxTargetPoints; ++i) {
-    IndexedSink point(sink, "point", i + 1);
-    Point::layout(points[i], LayoutSink(point));
-  }
-}
-
 // DATA holds 256 bytes: the return code, the 9-byte header and 56 bytes per point.
 constexpr size_t kMaxPositionsInAck =
     (kMaxDataSize - 1 - kPositionHeaderSize) / kTargetPositionSize;
@@ -84,18 +39,49 @@ Status TargetPosition::validate() const {
                        check_real("latitude_deg", latitude_deg, -90.0, 90.0, "deg"));
 }
 
-Status GetPosition::validate() const {
-  return validate_points(count, kMaxTargetPoints, base_time, points);
+template <class Point, uint8_t kDefaultCount>
+Status PositionList<Point, kDefaultCount>::validate() const {
+  Status s = first_failure(check_int("count", count, 1, static_cast<int64_t>(kMaxTargetPoints)),
+                           base_time.validate());
+  for (size_t i = 0; s && i < count; ++i) {
+    s = psdk::validate(points[i]);  // the layout's checks (bit widths, enums) and the point's own
+  }
+  return s;
 }
-void GetPosition::encode(ByteWriter& w) const {
-  encode_points(w, count, task_index, base_time, points);
+
+template <class Point, uint8_t kDefaultCount>
+void PositionList<Point, kDefaultCount>::encode(ByteWriter& w) const {
+  w.u8(count);
+  w.u8(task_index);
+  DateTime::layout(base_time, LayoutWriter(w));
+  for (size_t i = 0; i < count; ++i) Point::layout(points[i], LayoutWriter(w));
 }
-Status GetPosition::decode(ByteReader& r) {
-  return decode_points(r, count, task_index, base_time, points);
+
+template <class Point, uint8_t kDefaultCount>
+Status PositionList<Point, kDefaultCount>::decode(ByteReader& r) {
+  count = r.u8();
+  task_index = r.u8();
+  DateTime::layout(base_time, LayoutReader(r));
+  if (count > kMaxTargetPoints) {
+    return Status::fail("target point count " + std::to_string(count) + " is more than 5");
+  }
+  for (size_t i = 0; i < count; ++i) Point::layout(points[i], LayoutReader(r));
+  return Status::ok();
 }
-void GetPosition::describe(FieldSink& sink) const {
-  describe_points(sink, count, task_index, base_time, points);
+
+template <class Point, uint8_t kDefaultCount>
+void PositionList<Point, kDefaultCount>::describe(FieldSink& sink) const {
+  sink.unsigned_integer("count", count);
+  sink.unsigned_integer("task_index", task_index);
+  DateTime::layout(base_time, LayoutSink(sink));
+  for (size_t i = 0; i < count && i < kMaxTargetPoints; ++i) {
+    IndexedSink point(sink, "point", i + 1);
+    Point::layout(points[i], LayoutSink(point));
+  }
 }
+
+template struct PositionList<PositionRequestPoint, 1>;
+template struct PositionList<TargetPosition, 0>;
 
 Status GetPositionAck::validate() const {
   if (count > kMaxPositionsInAck && count <= kMaxTargetPoints) {
@@ -104,16 +90,7 @@ Status GetPositionAck::validate() const {
                         std::to_string(1 + kPositionHeaderSize + count * kTargetPositionSize) +
                         " bytes of DATA, more than 256");
   }
-  return validate_points(count, kMaxTargetPoints, base_time, points);
-}
-void GetPositionAck::encode(ByteWriter& w) const {
-  encode_points(w, count, task_index, base_time, points);
-}
-Status GetPositionAck::decode(ByteReader& r) {
-  return decode_points(r, count, task_index, base_time, points);
-}
-void GetPositionAck::describe(FieldSink& sink) const {
-  describe_points(sink, count, task_index, base_time, points);
+  return PositionList::validate();
 }
 
 }  // namespace k40t::psdk

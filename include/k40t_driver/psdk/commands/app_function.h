@@ -3,7 +3,7 @@
 // The widget commands 0x04..0x08 are in widgets.h.
 #pragma once
 
-#include "k40t_driver/psdk/command.h"
+#include "k40t_driver/psdk/commands/declare.h"
 
 namespace k40t::psdk {
 
@@ -13,24 +13,17 @@ constexpr size_t kMaxFloatingWindowData = 128;  // text + its terminating NUL
 constexpr size_t kTextInputNameSize = 32;
 
 // 3.2.1: 1..32 bytes from the mobile app. No ACK.
-struct TransparentFromMobile : Command<CommandSet::kAppFunction, 0x01, Sender::kAdapter, NoAck>,
-                               OpaqueData<1, kMaxTransparentFromMobile> {
-  static constexpr const char* kName = "transparent_from_mobile";
-  static constexpr const char* kSection = "3.2.1";
-};
+K40T_PSDK_TRANSPARENT(TransparentFromMobile, kAppFunction, 0x01, kAdapter,
+                      kMaxTransparentFromMobile, "transparent_from_mobile", "3.2.1");
 
 // 3.2.2: 1..128 bytes to the mobile app. No ACK. Encrypted by the payload (docs/psdk.md#frames).
-struct TransparentToMobile : Command<CommandSet::kAppFunction, 0x02, Sender::kPayload, NoAck>,
-                             OpaqueData<1, kMaxTransparentToMobile> {
-  static constexpr const char* kName = "transparent_to_mobile";
-  static constexpr const char* kSection = "3.2.2";
-};
+K40T_PSDK_TRANSPARENT(TransparentToMobile, kAppFunction, 0x02, kPayload, kMaxTransparentToMobile,
+                      "transparent_to_mobile", "3.2.2");
 
 // 3.2.3: a UTF-8 line for DJI Pilot's floating window; on the wire the text and a terminating
 // NUL, 1..128 bytes in all. No ACK. Encrypted by the payload (docs/psdk.md#frames).
 struct FloatingWindowMessage : Command<CommandSet::kAppFunction, 0x03, Sender::kPayload, NoAck> {
-  static constexpr const char* kName = "floating_window_message";
-  static constexpr const char* kSection = "3.2.3";
+  K40T_PSDK_NAMED("floating_window_message", "3.2.3");
   static constexpr size_t kMinBodySize = 1;
   static constexpr size_t kMaxBodySize = kMaxFloatingWindowData;
   std::string text;  // at most 127 bytes, no NUL
@@ -46,8 +39,7 @@ struct FloatingWindowMessage : Command<CommandSet::kAppFunction, 0x03, Sender::k
 
 // 3.2.9 ACK.
 struct TextInputBoxAck : Reply<CommandSet::kAppFunction, 0x09, Sender::kPayload> {
-  static constexpr const char* kName = "get_text_input_box_ack";
-  static constexpr const char* kSection = "3.2.9";
+  K40T_PSDK_NAMED("get_text_input_box_ack", "3.2.9");
   bool display = false;
   std::string name;         // at most 31 bytes + NUL
   std::string description;  // at most 31 bytes + NUL
@@ -60,10 +52,7 @@ struct TextInputBoxAck : Reply<CommandSet::kAppFunction, 0x09, Sender::kPayload>
 };
 
 // 3.2.9: parameters of DJI Pilot's text input box.
-struct GetTextInputBox : Command<CommandSet::kAppFunction, 0x09, Sender::kAdapter, TextInputBoxAck>,
-                         NoData {
-  static constexpr const char* kName = "get_text_input_box";
-  static constexpr const char* kSection = "3.2.9";
-};
+K40T_PSDK_NO_DATA(GetTextInputBox, kAppFunction, 0x09, TextInputBoxAck, "get_text_input_box",
+                  "3.2.9");
 
 }  // namespace k40t::psdk

@@ -3,7 +3,9 @@
 // payload answers. A "set" command and the ACK of its "get" share one value struct (mixin).
 #pragma once
 
-#include "k40t_driver/psdk/command.h"
+#include <limits>
+
+#include "k40t_driver/psdk/commands/declare.h"
 
 namespace k40t::psdk {
 
@@ -21,38 +23,15 @@ const char* to_string(RecordAction action);
 
 constexpr uint8_t kIntervalShootUntilStopped = 255;
 
-struct CameraWorkModeValue {
-  CameraWorkMode mode = CameraWorkMode::kShootPhoto;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("mode", s.mode, wire::u8);
-  }
-};
+struct CameraWorkModeValue : ModeValue<CameraWorkMode, CameraWorkMode::kShootPhoto> {};
 
-// 3.4.1.
-struct SetCameraWorkMode : Command<CommandSet::kCamera, 0x01, Sender::kAdapter, PlainAck>,
-                           CameraWorkModeValue {
-  static constexpr const char* kName = "set_camera_work_mode";
-  static constexpr const char* kSection = "3.4.1";
-};
-
-// 3.4.2 ACK.
-struct CameraWorkModeAck : Reply<CommandSet::kCamera, 0x02, Sender::kPayload>, CameraWorkModeValue {
-  static constexpr const char* kName = "get_camera_work_mode_ack";
-  static constexpr const char* kSection = "3.4.2";
-};
-
-// 3.4.2.
-struct GetCameraWorkMode : Command<CommandSet::kCamera, 0x02, Sender::kAdapter, CameraWorkModeAck>,
-                           NoData {
-  static constexpr const char* kName = "get_camera_work_mode";
-  static constexpr const char* kSection = "3.4.2";
-};
+// 3.4.1 / 3.4.2: SetCameraWorkMode, CameraWorkModeAck, GetCameraWorkMode.
+K40T_PSDK_SETTING(CameraWorkMode, camera_work_mode, CameraWorkModeValue, kCamera, 0x01, "3.4.1",
+                  0x02, "3.4.2");
 
 // 3.4.3: takes effect in shoot-photo mode only.
 struct ShootPhoto : Command<CommandSet::kCamera, 0x03, Sender::kAdapter, PlainAck> {
-  static constexpr const char* kName = "shoot_photo";
-  static constexpr const char* kSection = "3.4.3";
+  K40T_PSDK_NAMED("shoot_photo", "3.4.3");
   ShootPhotoAction action = ShootPhotoAction::kStart;
   template <class S, class V>
   static void layout(S& s, V&& v) {
@@ -77,8 +56,7 @@ struct ShootPhotoState {
 
 // 3.4.4 ACK.
 struct ShootPhotoStateAck : Reply<CommandSet::kCamera, 0x04, Sender::kPayload> {
-  static constexpr const char* kName = "get_shoot_photo_state_ack";
-  static constexpr const char* kSection = "3.4.4";
+  K40T_PSDK_NAMED("get_shoot_photo_state_ack", "3.4.4");
   ShootPhotoState state;
   uint16_t interval_countdown_s = 0;
   template <class S, class V>
@@ -89,54 +67,43 @@ struct ShootPhotoStateAck : Reply<CommandSet::kCamera, 0x04, Sender::kPayload> {
 };
 
 // 3.4.4.
-struct GetShootPhotoState
-    : Command<CommandSet::kCamera, 0x04, Sender::kAdapter, ShootPhotoStateAck>,
-      NoData {
-  static constexpr const char* kName = "get_shoot_photo_state";
-  static constexpr const char* kSection = "3.4.4";
-};
+K40T_PSDK_NO_DATA(GetShootPhotoState, kCamera, 0x04, ShootPhotoStateAck, "get_shoot_photo_state",
+                  "3.4.4");
 
 // 3.4.5 / 3.4.6: burst count applies to burst shooting, interval count and interval to interval
 // shooting (count 1..254, or 255 = until stopped; interval 1..255 s; 0 is reserved for both).
-struct ShootPhotoMode {
+// The interval is a uint8_t as the document gives it, or a uint16_t as DJI's headers give it
+// (ShootPhotoModeWide, header_variants.h).
+template <class Interval>
+struct BasicShootPhotoMode {
   ShootPhotoType type = ShootPhotoType::kSingle;
   uint8_t burst_count = 0;
   uint8_t interval_count = 0;
-  uint8_t interval_s = 0;
-  Status validate() const;
+  Interval interval_s = 0;
+  Status validate() const {
+    // Counts and interval matter only for the type that uses them (0 is reserved there).
+    if (type != ShootPhotoType::kInterval) return Status::ok();
+    return first_failure(
+        check_int("interval_count", interval_count, 1, 255),
+        check_int("interval_s", interval_s, 1, std::numeric_limits<Interval>::max(), "s"));
+  }
   template <class S, class V>
   static void layout(S& s, V&& v) {
     v("type", s.type, wire::u8);
     v("burst_count", s.burst_count, wire::u8);
     v("interval_count", s.interval_count, wire::u8);
-    v("interval_s", s.interval_s, wire::u8);
+    v("interval_s", s.interval_s, wire::Raw<Interval>{});
   }
 };
+struct ShootPhotoMode : BasicShootPhotoMode<uint8_t> {};
 
-// 3.4.5.
-struct SetShootPhotoMode : Command<CommandSet::kCamera, 0x05, Sender::kAdapter, PlainAck>,
-                           ShootPhotoMode {
-  static constexpr const char* kName = "set_shoot_photo_mode";
-  static constexpr const char* kSection = "3.4.5";
-};
-
-// 3.4.6 ACK.
-struct ShootPhotoModeAck : Reply<CommandSet::kCamera, 0x06, Sender::kPayload>, ShootPhotoMode {
-  static constexpr const char* kName = "get_shoot_photo_mode_ack";
-  static constexpr const char* kSection = "3.4.6";
-};
-
-// 3.4.6.
-struct GetShootPhotoMode : Command<CommandSet::kCamera, 0x06, Sender::kAdapter, ShootPhotoModeAck>,
-                           NoData {
-  static constexpr const char* kName = "get_shoot_photo_mode";
-  static constexpr const char* kSection = "3.4.6";
-};
+// 3.4.5 / 3.4.6: SetShootPhotoMode, ShootPhotoModeAck, GetShootPhotoMode.
+K40T_PSDK_SETTING(ShootPhotoMode, shoot_photo_mode, ShootPhotoMode, kCamera, 0x05, "3.4.5", 0x06,
+                  "3.4.6");
 
 // 3.4.7.
 struct RecordVideo : Command<CommandSet::kCamera, 0x07, Sender::kAdapter, PlainAck> {
-  static constexpr const char* kName = "record_video";
-  static constexpr const char* kSection = "3.4.7";
+  K40T_PSDK_NAMED("record_video", "3.4.7");
   RecordAction action = RecordAction::kStart;
   template <class S, class V>
   static void layout(S& s, V&& v) {
@@ -146,8 +113,7 @@ struct RecordVideo : Command<CommandSet::kCamera, 0x07, Sender::kAdapter, PlainA
 
 // 3.4.8 ACK.
 struct RecordStateAck : Reply<CommandSet::kCamera, 0x08, Sender::kPayload> {
-  static constexpr const char* kName = "get_record_state_ack";
-  static constexpr const char* kSection = "3.4.8";
+  K40T_PSDK_NAMED("get_record_state_ack", "3.4.8");
   bool recording = false;
   uint16_t duration_s = 0;  // of the current recording
   template <class S, class V>
@@ -158,11 +124,7 @@ struct RecordStateAck : Reply<CommandSet::kCamera, 0x08, Sender::kPayload> {
 };
 
 // 3.4.8.
-struct GetRecordState : Command<CommandSet::kCamera, 0x08, Sender::kAdapter, RecordStateAck>,
-                        NoData {
-  static constexpr const char* kName = "get_record_state";
-  static constexpr const char* kSection = "3.4.8";
-};
+K40T_PSDK_NO_DATA(GetRecordState, kCamera, 0x08, RecordStateAck, "get_record_state", "3.4.8");
 
 // 3.4.9 bytes 2:3.
 struct SdCardState {
@@ -191,8 +153,7 @@ struct SdCardState {
 
 // 3.4.9 ACK.
 struct SdCardInfoAck : Reply<CommandSet::kCamera, 0x09, Sender::kPayload> {
-  static constexpr const char* kName = "get_sd_card_info_ack";
-  static constexpr const char* kSection = "3.4.9";
+  K40T_PSDK_NAMED("get_sd_card_info_ack", "3.4.9");
   SdCardState state;
   uint32_t capacity_mb = 0;
   uint32_t remaining_mb = 0;
@@ -209,15 +170,11 @@ struct SdCardInfoAck : Reply<CommandSet::kCamera, 0x09, Sender::kPayload> {
 };
 
 // 3.4.9.
-struct GetSdCardInfo : Command<CommandSet::kCamera, 0x09, Sender::kAdapter, SdCardInfoAck>, NoData {
-  static constexpr const char* kName = "get_sd_card_info";
-  static constexpr const char* kSection = "3.4.9";
-};
+K40T_PSDK_NO_DATA(GetSdCardInfo, kCamera, 0x09, SdCardInfoAck, "get_sd_card_info", "3.4.9");
 
 // 3.4.10 ACK: one reserved byte after the code.
 struct FormatSdCardAck : Reply<CommandSet::kCamera, 0x0A, Sender::kPayload> {
-  static constexpr const char* kName = "format_sd_card_ack";
-  static constexpr const char* kSection = "3.4.10";
+  K40T_PSDK_NAMED("format_sd_card_ack", "3.4.10");
   template <class S, class V>
   static void layout(S&, V&& v) {
     v("reserved", wire::gap, wire::Reserved{1});
@@ -225,11 +182,7 @@ struct FormatSdCardAck : Reply<CommandSet::kCamera, 0x0A, Sender::kPayload> {
 };
 
 // 3.4.10.
-struct FormatSdCard : Command<CommandSet::kCamera, 0x0A, Sender::kAdapter, FormatSdCardAck>,
-                      NoData {
-  static constexpr const char* kName = "format_sd_card";
-  static constexpr const char* kSection = "3.4.10";
-};
+K40T_PSDK_NO_DATA(FormatSdCard, kCamera, 0x0A, FormatSdCardAck, "format_sd_card", "3.4.10");
 
 // 3.4.33 byte 2.
 struct CameraCapability {
@@ -250,8 +203,7 @@ struct CameraCapability {
 
 // 3.4.33 ACK.
 struct CameraCapabilityAck : Reply<CommandSet::kCamera, 0xFF, Sender::kPayload> {
-  static constexpr const char* kName = "get_camera_capability_ack";
-  static constexpr const char* kSection = "3.4.33";
+  K40T_PSDK_NAMED("get_camera_capability_ack", "3.4.33");
   CameraCapability supported;
   template <class S, class V>
   static void layout(S& s, V&& v) {
@@ -260,11 +212,7 @@ struct CameraCapabilityAck : Reply<CommandSet::kCamera, 0xFF, Sender::kPayload> 
 };
 
 // 3.4.33.
-struct GetCameraCapability
-    : Command<CommandSet::kCamera, 0xFF, Sender::kAdapter, CameraCapabilityAck>,
-      NoData {
-  static constexpr const char* kName = "get_camera_capability";
-  static constexpr const char* kSection = "3.4.33";
-};
+K40T_PSDK_NO_DATA(GetCameraCapability, kCamera, 0xFF, CameraCapabilityAck, "get_camera_capability",
+                  "3.4.33");
 
 }  // namespace k40t::psdk

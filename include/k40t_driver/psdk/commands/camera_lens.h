@@ -2,7 +2,7 @@
 // 3.4.32). A "set" command and the ACK of its "get" share one value struct (mixin).
 #pragma once
 
-#include "k40t_driver/psdk/command.h"
+#include "k40t_driver/psdk/commands/declare.h"
 
 namespace k40t::psdk {
 
@@ -28,33 +28,11 @@ const char* to_string(ZoomDirection direction);
 
 constexpr double kMaxOpticalZoomFactor = 30.0;  // 3.4.24
 
-struct MeteringModeValue {
-  MeteringMode mode = MeteringMode::kCenter;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("mode", s.mode, wire::u8);
-  }
-};
+struct MeteringModeValue : ModeValue<MeteringMode, MeteringMode::kCenter> {};
 
-// 3.4.11.
-struct SetMeteringMode : Command<CommandSet::kCamera, 0x20, Sender::kAdapter, PlainAck>,
-                         MeteringModeValue {
-  static constexpr const char* kName = "set_metering_mode";
-  static constexpr const char* kSection = "3.4.11";
-};
-
-// 3.4.12 ACK.
-struct MeteringModeAck : Reply<CommandSet::kCamera, 0x21, Sender::kPayload>, MeteringModeValue {
-  static constexpr const char* kName = "get_metering_mode_ack";
-  static constexpr const char* kSection = "3.4.12";
-};
-
-// 3.4.12.
-struct GetMeteringMode : Command<CommandSet::kCamera, 0x21, Sender::kAdapter, MeteringModeAck>,
-                         NoData {
-  static constexpr const char* kName = "get_metering_mode";
-  static constexpr const char* kSection = "3.4.12";
-};
+// 3.4.11 / 3.4.12: SetMeteringMode, MeteringModeAck, GetMeteringMode.
+K40T_PSDK_SETTING(MeteringMode, metering_mode, MeteringModeValue, kCamera, 0x20, "3.4.11", 0x21,
+                  "3.4.12");
 
 // 3.4.13 / 3.4.14: one cell of a 12 x 8 grid.
 struct SpotZone {
@@ -78,53 +56,14 @@ struct SpotZoneValue {
   }
 };
 
-// 3.4.13.
-struct SetSpotMeteringZone : Command<CommandSet::kCamera, 0x22, Sender::kAdapter, PlainAck>,
-                             SpotZoneValue {
-  static constexpr const char* kName = "set_spot_metering_zone";
-  static constexpr const char* kSection = "3.4.13";
-};
+// 3.4.13 / 3.4.14: SetSpotMeteringZone, SpotMeteringZoneAck, GetSpotMeteringZone.
+K40T_PSDK_SETTING(SpotMeteringZone, spot_metering_zone, SpotZoneValue, kCamera, 0x22, "3.4.13",
+                  0x23, "3.4.14");
 
-// 3.4.14 ACK.
-struct SpotMeteringZoneAck : Reply<CommandSet::kCamera, 0x23, Sender::kPayload>, SpotZoneValue {
-  static constexpr const char* kName = "get_spot_metering_zone_ack";
-  static constexpr const char* kSection = "3.4.14";
-};
+struct FocusModeValue : ModeValue<FocusMode, FocusMode::kAuto> {};
 
-// 3.4.14.
-struct GetSpotMeteringZone
-    : Command<CommandSet::kCamera, 0x23, Sender::kAdapter, SpotMeteringZoneAck>,
-      NoData {
-  static constexpr const char* kName = "get_spot_metering_zone";
-  static constexpr const char* kSection = "3.4.14";
-};
-
-struct FocusModeValue {
-  FocusMode mode = FocusMode::kAuto;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("mode", s.mode, wire::u8);
-  }
-};
-
-// 3.4.15.
-struct SetFocusMode : Command<CommandSet::kCamera, 0x30, Sender::kAdapter, PlainAck>,
-                      FocusModeValue {
-  static constexpr const char* kName = "set_focus_mode";
-  static constexpr const char* kSection = "3.4.15";
-};
-
-// 3.4.16 ACK.
-struct FocusModeAck : Reply<CommandSet::kCamera, 0x31, Sender::kPayload>, FocusModeValue {
-  static constexpr const char* kName = "get_focus_mode_ack";
-  static constexpr const char* kSection = "3.4.16";
-};
-
-// 3.4.16.
-struct GetFocusMode : Command<CommandSet::kCamera, 0x31, Sender::kAdapter, FocusModeAck>, NoData {
-  static constexpr const char* kName = "get_focus_mode";
-  static constexpr const char* kSection = "3.4.16";
-};
+// 3.4.15 / 3.4.16: SetFocusMode, FocusModeAck, GetFocusMode.
+K40T_PSDK_SETTING(FocusMode, focus_mode, FocusModeValue, kCamera, 0x30, "3.4.15", 0x31, "3.4.16");
 
 // 3.4.17 / 3.4.18: fractions of the image, (0, 0) top left.
 struct FocusZoneValue {
@@ -140,24 +79,8 @@ struct FocusZoneValue {
   }
 };
 
-// 3.4.17.
-struct SetFocusZone : Command<CommandSet::kCamera, 0x32, Sender::kAdapter, PlainAck>,
-                      FocusZoneValue {
-  static constexpr const char* kName = "set_focus_zone";
-  static constexpr const char* kSection = "3.4.17";
-};
-
-// 3.4.18 ACK.
-struct FocusZoneAck : Reply<CommandSet::kCamera, 0x33, Sender::kPayload>, FocusZoneValue {
-  static constexpr const char* kName = "get_focus_zone_ack";
-  static constexpr const char* kSection = "3.4.18";
-};
-
-// 3.4.18.
-struct GetFocusZone : Command<CommandSet::kCamera, 0x33, Sender::kAdapter, FocusZoneAck>, NoData {
-  static constexpr const char* kName = "get_focus_zone";
-  static constexpr const char* kSection = "3.4.18";
-};
+// 3.4.17 / 3.4.18: SetFocusZone, FocusZoneAck, GetFocusZone.
+K40T_PSDK_SETTING(FocusZone, focus_zone, FocusZoneValue, kCamera, 0x32, "3.4.17", 0x33, "3.4.18");
 
 // 3.4.19 / 3.4.20: 1.0 up to the maximum of 3.4.32 (which the codec does not know).
 struct DigitalZoomFactorValue {
@@ -169,32 +92,13 @@ struct DigitalZoomFactorValue {
   }
 };
 
-// 3.4.19.
-struct SetDigitalZoomFactor : Command<CommandSet::kCamera, 0x34, Sender::kAdapter, PlainAck>,
-                              DigitalZoomFactorValue {
-  static constexpr const char* kName = "set_digital_zoom_factor";
-  static constexpr const char* kSection = "3.4.19";
-};
-
-// 3.4.20 ACK.
-struct DigitalZoomFactorAck : Reply<CommandSet::kCamera, 0x35, Sender::kPayload>,
-                              DigitalZoomFactorValue {
-  static constexpr const char* kName = "get_digital_zoom_factor_ack";
-  static constexpr const char* kSection = "3.4.20";
-};
-
-// 3.4.20.
-struct GetDigitalZoomFactor
-    : Command<CommandSet::kCamera, 0x35, Sender::kAdapter, DigitalZoomFactorAck>,
-      NoData {
-  static constexpr const char* kName = "get_digital_zoom_factor";
-  static constexpr const char* kSection = "3.4.20";
-};
+// 3.4.19 / 3.4.20: SetDigitalZoomFactor, DigitalZoomFactorAck, GetDigitalZoomFactor.
+K40T_PSDK_SETTING(DigitalZoomFactor, digital_zoom_factor, DigitalZoomFactorValue, kCamera, 0x34,
+                  "3.4.19", 0x35, "3.4.20");
 
 // 3.4.21 ACK: focal lengths in 0.1 mm on the wire.
 struct OpticalZoomSpecAck : Reply<CommandSet::kCamera, 0x36, Sender::kPayload> {
-  static constexpr const char* kName = "get_optical_zoom_spec_ack";
-  static constexpr const char* kSection = "3.4.21";
+  K40T_PSDK_NAMED("get_optical_zoom_spec_ack", "3.4.21");
   double max_focal_length_mm = 0;
   double min_focal_length_mm = 0;
   double focal_length_step_mm = 0;
@@ -208,12 +112,8 @@ struct OpticalZoomSpecAck : Reply<CommandSet::kCamera, 0x36, Sender::kPayload> {
 };
 
 // 3.4.21.
-struct GetOpticalZoomSpec
-    : Command<CommandSet::kCamera, 0x36, Sender::kAdapter, OpticalZoomSpecAck>,
-      NoData {
-  static constexpr const char* kName = "get_optical_zoom_spec";
-  static constexpr const char* kSection = "3.4.21";
-};
+K40T_PSDK_NO_DATA(GetOpticalZoomSpec, kCamera, 0x36, OpticalZoomSpecAck, "get_optical_zoom_spec",
+                  "3.4.21");
 
 // 3.4.22 / 3.4.23: the document says "1:2 Float" in 0.1 mm; two bytes cannot hold a float, and
 // 3.4.21 gives focal lengths as uint16 0.1 mm, so this is read as uint16 0.1 mm (docs/psdk.md).
@@ -225,32 +125,13 @@ struct FocalLengthValue {
   }
 };
 
-// 3.4.22.
-struct SetOpticalZoomFocalLength : Command<CommandSet::kCamera, 0x37, Sender::kAdapter, PlainAck>,
-                                   FocalLengthValue {
-  static constexpr const char* kName = "set_optical_zoom_focal_length";
-  static constexpr const char* kSection = "3.4.22";
-};
-
-// 3.4.23 ACK.
-struct OpticalZoomFocalLengthAck : Reply<CommandSet::kCamera, 0x38, Sender::kPayload>,
-                                   FocalLengthValue {
-  static constexpr const char* kName = "get_optical_zoom_focal_length_ack";
-  static constexpr const char* kSection = "3.4.23";
-};
-
-// 3.4.23.
-struct GetOpticalZoomFocalLength
-    : Command<CommandSet::kCamera, 0x38, Sender::kAdapter, OpticalZoomFocalLengthAck>,
-      NoData {
-  static constexpr const char* kName = "get_optical_zoom_focal_length";
-  static constexpr const char* kSection = "3.4.23";
-};
+// 3.4.22 / 3.4.23: SetOpticalZoomFocalLength, OpticalZoomFocalLengthAck, GetOpticalZoomFocalLength.
+K40T_PSDK_SETTING(OpticalZoomFocalLength, optical_zoom_focal_length, FocalLengthValue, kCamera,
+                  0x37, "3.4.22", 0x38, "3.4.23");
 
 // 3.4.24 ACK.
 struct OpticalZoomFactorAck : Reply<CommandSet::kCamera, 0x39, Sender::kPayload> {
-  static constexpr const char* kName = "get_optical_zoom_factor_ack";
-  static constexpr const char* kSection = "3.4.24";
+  K40T_PSDK_NAMED("get_optical_zoom_factor_ack", "3.4.24");
   float factor_x = 1.0f;
   Status validate() const { return check_real("factor_x", factor_x, 1.0, kMaxOpticalZoomFactor); }
   template <class S, class V>
@@ -260,17 +141,12 @@ struct OpticalZoomFactorAck : Reply<CommandSet::kCamera, 0x39, Sender::kPayload>
 };
 
 // 3.4.24.
-struct GetOpticalZoomFactor
-    : Command<CommandSet::kCamera, 0x39, Sender::kAdapter, OpticalZoomFactorAck>,
-      NoData {
-  static constexpr const char* kName = "get_optical_zoom_factor";
-  static constexpr const char* kSection = "3.4.24";
-};
+K40T_PSDK_NO_DATA(GetOpticalZoomFactor, kCamera, 0x39, OpticalZoomFactorAck,
+                  "get_optical_zoom_factor", "3.4.24");
 
 // 3.4.25: zoom until the end of travel or 3.4.26.
 struct StartContinuousZoom : Command<CommandSet::kCamera, 0x40, Sender::kAdapter, PlainAck> {
-  static constexpr const char* kName = "start_continuous_zoom";
-  static constexpr const char* kSection = "3.4.25";
+  K40T_PSDK_NAMED("start_continuous_zoom", "3.4.25");
   ZoomSpeed speed = ZoomSpeed::kNormal;
   ZoomDirection direction = ZoomDirection::kIn;
   template <class S, class V>
@@ -281,10 +157,7 @@ struct StartContinuousZoom : Command<CommandSet::kCamera, 0x40, Sender::kAdapter
 };
 
 // 3.4.26.
-struct StopContinuousZoom : Command<CommandSet::kCamera, 0x41, Sender::kAdapter, PlainAck>, NoData {
-  static constexpr const char* kName = "stop_continuous_zoom";
-  static constexpr const char* kSection = "3.4.26";
-};
+K40T_PSDK_NO_DATA(StopContinuousZoom, kCamera, 0x41, PlainAck, "stop_continuous_zoom", "3.4.26");
 
 // 3.4.27 / 3.4.28.
 struct FocusAssistant {
@@ -305,30 +178,13 @@ struct FocusAssistantValue {
   }
 };
 
-// 3.4.27.
-struct SetFocusAssistant : Command<CommandSet::kCamera, 0x42, Sender::kAdapter, PlainAck>,
-                           FocusAssistantValue {
-  static constexpr const char* kName = "set_focus_assistant";
-  static constexpr const char* kSection = "3.4.27";
-};
-
-// 3.4.28 ACK.
-struct FocusAssistantAck : Reply<CommandSet::kCamera, 0x43, Sender::kPayload>, FocusAssistantValue {
-  static constexpr const char* kName = "get_focus_assistant_ack";
-  static constexpr const char* kSection = "3.4.28";
-};
-
-// 3.4.28.
-struct GetFocusAssistant : Command<CommandSet::kCamera, 0x43, Sender::kAdapter, FocusAssistantAck>,
-                           NoData {
-  static constexpr const char* kName = "get_focus_assistant";
-  static constexpr const char* kSection = "3.4.28";
-};
+// 3.4.27 / 3.4.28: SetFocusAssistant, FocusAssistantAck, GetFocusAssistant.
+K40T_PSDK_SETTING(FocusAssistant, focus_assistant, FocusAssistantValue, kCamera, 0x42, "3.4.27",
+                  0x43, "3.4.28");
 
 // 3.4.29 ACK.
 struct FocusRingUpperBoundAck : Reply<CommandSet::kCamera, 0x44, Sender::kPayload> {
-  static constexpr const char* kName = "get_focus_ring_upper_bound_ack";
-  static constexpr const char* kSection = "3.4.29";
+  K40T_PSDK_NAMED("get_focus_ring_upper_bound_ack", "3.4.29");
   uint16_t upper_bound = 0;
   template <class S, class V>
   static void layout(S& s, V&& v) {
@@ -337,12 +193,8 @@ struct FocusRingUpperBoundAck : Reply<CommandSet::kCamera, 0x44, Sender::kPayloa
 };
 
 // 3.4.29.
-struct GetFocusRingUpperBound
-    : Command<CommandSet::kCamera, 0x44, Sender::kAdapter, FocusRingUpperBoundAck>,
-      NoData {
-  static constexpr const char* kName = "get_focus_ring_upper_bound";
-  static constexpr const char* kSection = "3.4.29";
-};
+K40T_PSDK_NO_DATA(GetFocusRingUpperBound, kCamera, 0x44, FocusRingUpperBoundAck,
+                  "get_focus_ring_upper_bound", "3.4.29");
 
 // 3.4.30 / 3.4.31: 0 = infinity .. upper bound = closest focus.
 struct FocusRingValue {
@@ -353,29 +205,12 @@ struct FocusRingValue {
   }
 };
 
-// 3.4.30.
-struct SetFocusRing : Command<CommandSet::kCamera, 0x45, Sender::kAdapter, PlainAck>,
-                      FocusRingValue {
-  static constexpr const char* kName = "set_focus_ring";
-  static constexpr const char* kSection = "3.4.30";
-};
-
-// 3.4.31 ACK.
-struct FocusRingAck : Reply<CommandSet::kCamera, 0x46, Sender::kPayload>, FocusRingValue {
-  static constexpr const char* kName = "get_focus_ring_ack";
-  static constexpr const char* kSection = "3.4.31";
-};
-
-// 3.4.31.
-struct GetFocusRing : Command<CommandSet::kCamera, 0x46, Sender::kAdapter, FocusRingAck>, NoData {
-  static constexpr const char* kName = "get_focus_ring";
-  static constexpr const char* kSection = "3.4.31";
-};
+// 3.4.30 / 3.4.31: SetFocusRing, FocusRingAck, GetFocusRing.
+K40T_PSDK_SETTING(FocusRing, focus_ring, FocusRingValue, kCamera, 0x45, "3.4.30", 0x46, "3.4.31");
 
 // 3.4.32 ACK.
 struct DigitalZoomSpecAck : Reply<CommandSet::kCamera, 0x47, Sender::kPayload> {
-  static constexpr const char* kName = "get_digital_zoom_spec_ack";
-  static constexpr const char* kSection = "3.4.32";
+  K40T_PSDK_NAMED("get_digital_zoom_spec_ack", "3.4.32");
   float max_factor_x = 1.0f;
   Status validate() const { return check_real("max_factor_x", max_factor_x, 1.0, 1e6); }
   template <class S, class V>
@@ -385,11 +220,7 @@ struct DigitalZoomSpecAck : Reply<CommandSet::kCamera, 0x47, Sender::kPayload> {
 };
 
 // 3.4.32.
-struct GetDigitalZoomSpec
-    : Command<CommandSet::kCamera, 0x47, Sender::kAdapter, DigitalZoomSpecAck>,
-      NoData {
-  static constexpr const char* kName = "get_digital_zoom_spec";
-  static constexpr const char* kSection = "3.4.32";
-};
+K40T_PSDK_NO_DATA(GetDigitalZoomSpec, kCamera, 0x47, DigitalZoomSpecAck, "get_digital_zoom_spec",
+                  "3.4.32");
 
 }  // namespace k40t::psdk

@@ -2,7 +2,7 @@
 // state to the payload. Only the battery push is ACKed (its power-off warning).
 #pragma once
 
-#include "k40t_driver/psdk/command.h"
+#include "k40t_driver/psdk/commands/declare.h"
 
 namespace k40t::psdk {
 
@@ -65,8 +65,7 @@ struct OsdkBandwidthFlags {
 
 // 3.3.1 (link bandwidth). MSDK uplink is mobile -> payload; OSDK uplink is payload -> onboard.
 struct LinkBandwidthPush : Command<CommandSet::kDataPush, 0x01, Sender::kAdapter, NoAck> {
-  static constexpr const char* kName = "link_bandwidth_push";
-  static constexpr const char* kSection = "3.3.1";
+  K40T_PSDK_NAMED("link_bandwidth_push", "3.3.1");
   bool image_link_normal = false;
   uint8_t max_image_link_bandwidth = 0;  // the document gives no unit
   LinkConnectionState connection;
@@ -103,8 +102,7 @@ struct LinkBandwidthPush : Command<CommandSet::kDataPush, 0x01, Sender::kAdapter
 
 // 3.3.2: the airframe's attitude quaternion (q0 is the scalar part).
 struct AttitudePush : Command<CommandSet::kDataPush, 0x02, Sender::kAdapter, NoAck> {
-  static constexpr const char* kName = "attitude_push";
-  static constexpr const char* kSection = "3.3.2";
+  K40T_PSDK_NAMED("attitude_push", "3.3.2");
   float q0 = 1.0f;
   float q1 = 0.0f;
   float q2 = 0.0f;
@@ -120,8 +118,7 @@ struct AttitudePush : Command<CommandSet::kDataPush, 0x02, Sender::kAdapter, NoA
 
 // 3.3.3 ACK: read only when the push announced power-off.
 struct BatteryInfoAck : Reply<CommandSet::kDataPush, 0x03, Sender::kPayload> {
-  static constexpr const char* kName = "battery_info_push_ack";
-  static constexpr const char* kSection = "3.3.3";
+  K40T_PSDK_NAMED("battery_info_push_ack", "3.3.3");
   bool power_off_ready = false;  // preparation for power-off complete
   template <class S, class V>
   static void layout(S& s, V&& v) {
@@ -131,8 +128,7 @@ struct BatteryInfoAck : Reply<CommandSet::kDataPush, 0x03, Sender::kPayload> {
 
 // 3.3.3.
 struct BatteryInfoPush : Command<CommandSet::kDataPush, 0x03, Sender::kAdapter, BatteryInfoAck> {
-  static constexpr const char* kName = "battery_info_push";
-  static constexpr const char* kSection = "3.3.3";
+  K40T_PSDK_NAMED("battery_info_push", "3.3.3");
   uint8_t percentage = 0;
   bool power_off_soon = false;
   Status validate() const { return check_int("percentage", percentage, 0, 100, "%"); }
@@ -148,8 +144,7 @@ const char* to_string(GpsSignal signal);
 
 // 3.3.4.
 struct GpsPush : Command<CommandSet::kDataPush, 0x04, Sender::kAdapter, NoAck> {
-  static constexpr const char* kName = "gps_push";
-  static constexpr const char* kSection = "3.3.4";
+  K40T_PSDK_NAMED("gps_push", "3.3.4");
   double longitude_rad = 0;
   double latitude_rad = 0;
   double relative_height_m = 0;  // above the take-off point; 0.1 m on the wire
@@ -197,8 +192,7 @@ struct UavFunctionState {
 
 // 3.3.5.
 struct UavStatePush : Command<CommandSet::kDataPush, 0x05, Sender::kAdapter, NoAck> {
-  static constexpr const char* kName = "uav_state_push";
-  static constexpr const char* kSection = "3.3.5";
+  K40T_PSDK_NAMED("uav_state_push", "3.3.5");
   UavFunctionState state;
   double flight_time_s = 0;  // since the motors last started; 0.1 s on the wire
   DroneType drone_type = DroneType::kUnknown;
@@ -212,8 +206,7 @@ struct UavStatePush : Command<CommandSet::kDataPush, 0x05, Sender::kAdapter, NoA
 
 // 3.3.6: the mobile app's local date and time, when an app is connected.
 struct AppDateTimePush : Command<CommandSet::kDataPush, 0x06, Sender::kAdapter, NoAck> {
-  static constexpr const char* kName = "app_date_time_push";
-  static constexpr const char* kSection = "3.3.6";
+  K40T_PSDK_NAMED("app_date_time_push", "3.3.6");
   DateTime time;
   Status validate() const { return time.validate(); }
   template <class S, class V>
@@ -224,8 +217,7 @@ struct AppDateTimePush : Command<CommandSet::kDataPush, 0x06, Sender::kAdapter, 
 
 // 3.3.7. The document gives no unit; metres (like the RTK height) is this project's reading.
 struct BarometricAltitudePush : Command<CommandSet::kDataPush, 0x07, Sender::kAdapter, NoAck> {
-  static constexpr const char* kName = "barometric_altitude_push";
-  static constexpr const char* kSection = "3.3.7";
+  K40T_PSDK_NAMED("barometric_altitude_push", "3.3.7");
   float altitude_m = 0;
   template <class S, class V>
   static void layout(S& s, V&& v) {
@@ -235,8 +227,7 @@ struct BarometricAltitudePush : Command<CommandSet::kDataPush, 0x07, Sender::kAd
 
 // 3.3.8: the GPS receiver's own solution.
 struct RawGpsPush : Command<CommandSet::kDataPush, 0x08, Sender::kAdapter, NoAck> {
-  static constexpr const char* kName = "raw_gps_push";
-  static constexpr const char* kSection = "3.3.8";
+  K40T_PSDK_NAMED("raw_gps_push", "3.3.8");
   uint32_t date_yyyymmdd = 0;  // GMT, decimal digits
   uint32_t time_hhmmss = 0;    // GMT, decimal digits
   double longitude_deg = 0;    // 1e-7 deg on the wire
@@ -281,8 +272,7 @@ struct RawGpsPush : Command<CommandSet::kDataPush, 0x08, Sender::kAdapter, NoAck
 
 // 3.3.9: the RTK solution.
 struct RawRtkPush : Command<CommandSet::kDataPush, 0x09, Sender::kAdapter, NoAck> {
-  static constexpr const char* kName = "raw_rtk_push";
-  static constexpr const char* kSection = "3.3.9";
+  K40T_PSDK_NAMED("raw_rtk_push", "3.3.9");
   double longitude_deg = 0;
   double latitude_deg = 0;
   float height_m = 0;  // above sea level
@@ -310,8 +300,7 @@ struct RawRtkPush : Command<CommandSet::kDataPush, 0x09, Sender::kAdapter, NoAck
 // 3.3.10: the UTC time of the last PPS rising edge (discard it when it arrives more than 500 ms
 // after the edge).
 struct UtcTimePush : Command<CommandSet::kDataPush, 0x0A, Sender::kAdapter, NoAck> {
-  static constexpr const char* kName = "utc_time_push";
-  static constexpr const char* kSection = "3.3.10";
+  K40T_PSDK_NAMED("utc_time_push", "3.3.10");
   DateTime time;
   uint32_t microsecond = 0;
   Status validate() const {
@@ -329,8 +318,7 @@ const char* to_string(OtherPayloadType type);
 
 // 3.3.11: what is mounted on the airframe's main gimbal port.
 struct OtherPayloadTypePush : Command<CommandSet::kDataPush, 0x0B, Sender::kAdapter, NoAck> {
-  static constexpr const char* kName = "other_payload_type_push";
-  static constexpr const char* kSection = "3.3.11";
+  K40T_PSDK_NAMED("other_payload_type_push", "3.3.11");
   OtherPayloadType type = OtherPayloadType::kUnknown;
   template <class S, class V>
   static void layout(S& s, V&& v) {
@@ -341,8 +329,7 @@ struct OtherPayloadTypePush : Command<CommandSet::kDataPush, 0x0B, Sender::kAdap
 // 3.3.12: the main gimbal payload's focal length. The table says byte "1" for a uint16; read
 // as bytes 1:2.
 struct OtherPayloadFocalLengthPush : Command<CommandSet::kDataPush, 0x0C, Sender::kAdapter, NoAck> {
-  static constexpr const char* kName = "other_payload_focal_length_push";
-  static constexpr const char* kSection = "3.3.12";
+  K40T_PSDK_NAMED("other_payload_focal_length_push", "3.3.12");
   double focal_length_mm = 0;  // 0.1 mm on the wire
   template <class S, class V>
   static void layout(S& s, V&& v) {

@@ -2,7 +2,7 @@
 // payload's gimbal.
 #pragma once
 
-#include "k40t_driver/psdk/command.h"
+#include "k40t_driver/psdk/commands/declare.h"
 
 namespace k40t::psdk {
 
@@ -55,8 +55,7 @@ struct GimbalAngles {
 
 // 3.5.1 ACK.
 struct GimbalStateAck : Reply<CommandSet::kGimbal, 0x01, Sender::kPayload> {
-  static constexpr const char* kName = "get_gimbal_state_ack";
-  static constexpr const char* kSection = "3.5.1";
+  K40T_PSDK_NAMED("get_gimbal_state_ack", "3.5.1");
   GimbalStateMode mode = GimbalStateMode::kFree;
   GimbalStateFlags flags;
   GimbalAngles angles;
@@ -69,33 +68,20 @@ struct GimbalStateAck : Reply<CommandSet::kGimbal, 0x01, Sender::kPayload> {
 };
 
 // 3.5.1.
-struct GetGimbalState : Command<CommandSet::kGimbal, 0x01, Sender::kAdapter, GimbalStateAck>,
-                        NoData {
-  static constexpr const char* kName = "get_gimbal_state";
-  static constexpr const char* kSection = "3.5.1";
-};
+K40T_PSDK_NO_DATA(GetGimbalState, kGimbal, 0x01, GimbalStateAck, "get_gimbal_state", "3.5.1");
 
 // 3.5.2.
-struct SetGimbalMode : Command<CommandSet::kGimbal, 0x02, Sender::kAdapter, PlainAck> {
-  static constexpr const char* kName = "set_gimbal_mode";
-  static constexpr const char* kSection = "3.5.2";
-  GimbalMode mode = GimbalMode::kFree;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("mode", s.mode, wire::u8);
-  }
+struct SetGimbalMode : Command<CommandSet::kGimbal, 0x02, Sender::kAdapter, PlainAck>,
+                       ModeValue<GimbalMode, GimbalMode::kFree> {
+  K40T_PSDK_NAMED("set_gimbal_mode", "3.5.2");
 };
 
 // 3.5.3: back to the centre ("return head").
-struct GimbalReturnHead : Command<CommandSet::kGimbal, 0x03, Sender::kAdapter, PlainAck>, NoData {
-  static constexpr const char* kName = "gimbal_return_head";
-  static constexpr const char* kSection = "3.5.3";
-};
+K40T_PSDK_NO_DATA(GimbalReturnHead, kGimbal, 0x03, PlainAck, "gimbal_return_head", "3.5.3");
 
 // 3.5.4.
 struct ControlGimbalSpeed : Command<CommandSet::kGimbal, 0x04, Sender::kAdapter, PlainAck> {
-  static constexpr const char* kName = "control_gimbal_speed";
-  static constexpr const char* kSection = "3.5.4";
+  K40T_PSDK_NAMED("control_gimbal_speed", "3.5.4");
   double pitch_rate_deg_s = 0;
   double roll_rate_deg_s = 0;
   double yaw_rate_deg_s = 0;
@@ -112,8 +98,7 @@ struct ControlGimbalSpeed : Command<CommandSet::kGimbal, 0x04, Sender::kAdapter,
 
 // 3.5.5: attitude angles in degrees (no range given).
 struct ControlGimbalAngle : Command<CommandSet::kGimbal, 0x05, Sender::kAdapter, PlainAck> {
-  static constexpr const char* kName = "control_gimbal_angle";
-  static constexpr const char* kSection = "3.5.5";
+  K40T_PSDK_NAMED("control_gimbal_angle", "3.5.5");
   float pitch_deg = 0;
   float roll_deg = 0;
   float yaw_deg = 0;
@@ -127,8 +112,7 @@ struct ControlGimbalAngle : Command<CommandSet::kGimbal, 0x05, Sender::kAdapter,
 
 // 3.5.6: joint angles.
 struct ControlGimbalJointAngle : Command<CommandSet::kGimbal, 0x06, Sender::kAdapter, PlainAck> {
-  static constexpr const char* kName = "control_gimbal_joint_angle";
-  static constexpr const char* kSection = "3.5.6";
+  K40T_PSDK_NAMED("control_gimbal_joint_angle", "3.5.6");
   GimbalAngles angles;
   template <class S, class V>
   static void layout(S& s, V&& v) {
@@ -137,15 +121,11 @@ struct ControlGimbalJointAngle : Command<CommandSet::kGimbal, 0x06, Sender::kAda
 };
 
 // 3.5.7.
-struct CalibrateGimbal : Command<CommandSet::kGimbal, 0x07, Sender::kAdapter, PlainAck>, NoData {
-  static constexpr const char* kName = "calibrate_gimbal";
-  static constexpr const char* kSection = "3.5.7";
-};
+K40T_PSDK_NO_DATA(CalibrateGimbal, kGimbal, 0x07, PlainAck, "calibrate_gimbal", "3.5.7");
 
 // 3.5.8 ACK.
 struct CalibrationProgressAck : Reply<CommandSet::kGimbal, 0x08, Sender::kPayload> {
-  static constexpr const char* kName = "get_calibration_progress_ack";
-  static constexpr const char* kSection = "3.5.8";
+  K40T_PSDK_NAMED("get_calibration_progress_ack", "3.5.8");
   uint8_t progress_percent = 0;
   CalibrationStatus status = CalibrationStatus::kComplete;
   Status validate() const { return check_int("progress_percent", progress_percent, 0, 100, "%"); }
@@ -157,17 +137,12 @@ struct CalibrationProgressAck : Reply<CommandSet::kGimbal, 0x08, Sender::kPayloa
 };
 
 // 3.5.8.
-struct GetCalibrationProgress
-    : Command<CommandSet::kGimbal, 0x08, Sender::kAdapter, CalibrationProgressAck>,
-      NoData {
-  static constexpr const char* kName = "get_calibration_progress";
-  static constexpr const char* kSection = "3.5.8";
-};
+K40T_PSDK_NO_DATA(GetCalibrationProgress, kGimbal, 0x08, CalibrationProgressAck,
+                  "get_calibration_progress", "3.5.8");
 
 // 3.5.9 ACK: body-frame rotation speeds, floats in 0.1 deg/s on the wire.
 struct GimbalAdditionalStatusAck : Reply<CommandSet::kGimbal, 0x09, Sender::kPayload> {
-  static constexpr const char* kName = "get_gimbal_additional_status_ack";
-  static constexpr const char* kSection = "3.5.9";
+  K40T_PSDK_NAMED("get_gimbal_additional_status_ack", "3.5.9");
   double pitch_rate_deg_s = 0;
   double roll_rate_deg_s = 0;
   double yaw_rate_deg_s = 0;
@@ -180,17 +155,12 @@ struct GimbalAdditionalStatusAck : Reply<CommandSet::kGimbal, 0x09, Sender::kPay
 };
 
 // 3.5.9.
-struct GetGimbalAdditionalStatus
-    : Command<CommandSet::kGimbal, 0x09, Sender::kAdapter, GimbalAdditionalStatusAck>,
-      NoData {
-  static constexpr const char* kName = "get_gimbal_additional_status";
-  static constexpr const char* kSection = "3.5.9";
-};
+K40T_PSDK_NO_DATA(GetGimbalAdditionalStatus, kGimbal, 0x09, GimbalAdditionalStatusAck,
+                  "get_gimbal_additional_status", "3.5.9");
 
 // 3.5.10 ACK.
 struct GimbalCapabilityAck : Reply<CommandSet::kGimbal, 0xFF, Sender::kPayload> {
-  static constexpr const char* kName = "get_gimbal_capability_ack";
-  static constexpr const char* kSection = "3.5.10";
+  K40T_PSDK_NAMED("get_gimbal_capability_ack", "3.5.10");
   bool supported = false;
   template <class S, class V>
   static void layout(S& s, V&& v) {
@@ -199,11 +169,7 @@ struct GimbalCapabilityAck : Reply<CommandSet::kGimbal, 0xFF, Sender::kPayload> 
 };
 
 // 3.5.10.
-struct GetGimbalCapability
-    : Command<CommandSet::kGimbal, 0xFF, Sender::kAdapter, GimbalCapabilityAck>,
-      NoData {
-  static constexpr const char* kName = "get_gimbal_capability";
-  static constexpr const char* kSection = "3.5.10";
-};
+K40T_PSDK_NO_DATA(GetGimbalCapability, kGimbal, 0xFF, GimbalCapabilityAck, "get_gimbal_capability",
+                  "3.5.10");
 
 }  // namespace k40t::psdk

@@ -19,6 +19,7 @@
 #include "k40t_driver/protocol/result.h"
 #include "k40t_driver/psdk/commands/camera_capture.h"
 #include "k40t_driver/psdk/commands/data_push.h"
+#include "k40t_driver/psdk/commands/declare.h"
 #include "k40t_driver/psdk/commands/gimbal.h"
 
 namespace k40t::psdk {
@@ -39,24 +40,10 @@ SdCardState sd_card_state_from_word(uint16_t word, PsdkLayout layout);
 SdCardInfoAck sd_card_ack_for(const SdCardInfoAck& ack, PsdkLayout layout);
 
 // P30: shoot photo mode with a two-byte interval (headers).
-struct ShootPhotoModeWide {
-  ShootPhotoType type = ShootPhotoType::kSingle;
-  uint8_t burst_count = 0;
-  uint8_t interval_count = 0;
-  uint16_t interval_s = 0;
-  Status validate() const;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("type", s.type, wire::u8);
-    v("burst_count", s.burst_count, wire::u8);
-    v("interval_count", s.interval_count, wire::u8);
-    v("interval_s", s.interval_s, wire::u16);
-  }
-};
+struct ShootPhotoModeWide : BasicShootPhotoMode<uint16_t> {};
 struct ShootPhotoModeWideAck : Reply<CommandSet::kCamera, 0x06, Sender::kPayload>,
                                ShootPhotoModeWide {
-  static constexpr const char* kName = "get_shoot_photo_mode_ack_u16";
-  static constexpr const char* kSection = "3.4.6";
+  K40T_PSDK_NAMED("get_shoot_photo_mode_ack_u16", "3.4.6");
 };
 // 3.4.5's DATA by its length: 4 bytes (document, uint8 interval) or 5 and more (headers,
 // uint16 interval).

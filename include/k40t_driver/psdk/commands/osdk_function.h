@@ -2,25 +2,19 @@
 // Onboard SDK computer on the airframe and the payload.
 #pragma once
 
-#include "k40t_driver/psdk/command.h"
+#include "k40t_driver/psdk/commands/declare.h"
 
 namespace k40t::psdk {
 
 constexpr size_t kMaxOsdkTransparent = 255;
 
 // 3.6.1: 1..255 bytes from the onboard computer. No ACK.
-struct TransparentFromOnboard : Command<CommandSet::kOsdkFunction, 0x01, Sender::kAdapter, NoAck>,
-                                OpaqueData<1, kMaxOsdkTransparent> {
-  static constexpr const char* kName = "transparent_from_onboard";
-  static constexpr const char* kSection = "3.6.1";
-};
+K40T_PSDK_TRANSPARENT(TransparentFromOnboard, kOsdkFunction, 0x01, kAdapter, kMaxOsdkTransparent,
+                      "transparent_from_onboard", "3.6.1");
 
 // 3.6.2: 1..255 bytes to the onboard computer. No ACK. Encrypted by the payload
 // (docs/psdk.md#frames).
-struct TransparentToOnboard : Command<CommandSet::kOsdkFunction, 0x02, Sender::kPayload, NoAck>,
-                              OpaqueData<1, kMaxOsdkTransparent> {
-  static constexpr const char* kName = "transparent_to_onboard";
-  static constexpr const char* kSection = "3.6.2";
-};
+K40T_PSDK_TRANSPARENT(TransparentToOnboard, kOsdkFunction, 0x02, kPayload, kMaxOsdkTransparent,
+                      "transparent_to_onboard", "3.6.2");
 
 }  // namespace k40t::psdk

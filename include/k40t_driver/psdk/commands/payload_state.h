@@ -2,7 +2,7 @@
 // the adapter asks, the payload answers.
 #pragma once
 
-#include "k40t_driver/psdk/command.h"
+#include "k40t_driver/psdk/commands/declare.h"
 
 namespace k40t::psdk {
 
@@ -27,10 +27,18 @@ struct Version {
   }
 };
 
+// The DATA of the version ACKs (3.1.2, 3.1.5).
+struct VersionValue {
+  Version version;
+  template <class S, class V>
+  static void layout(S& s, V&& v) {
+    Version::layout(s.version, v);
+  }
+};
+
 // 3.1.1 ACK: the raw 16-byte MD5 of (app key, random bytes); see identity.h.
 struct IdentityVerificationAck : Reply<CommandSet::kPayloadState, 0x01, Sender::kPayload> {
-  static constexpr const char* kName = "identity_verification_ack";
-  static constexpr const char* kSection = "3.1.1";
+  K40T_PSDK_NAMED("identity_verification_ack", "3.1.1");
   std::array<uint8_t, 16> md5{};
   template <class S, class V>
   static void layout(S& s, V&& v) {
@@ -41,8 +49,7 @@ struct IdentityVerificationAck : Reply<CommandSet::kPayloadState, 0x01, Sender::
 // 3.1.1: sent at irregular times by the adapter.
 struct IdentityVerification
     : Command<CommandSet::kPayloadState, 0x01, Sender::kAdapter, IdentityVerificationAck> {
-  static constexpr const char* kName = "identity_verification";
-  static constexpr const char* kSection = "3.1.1";
+  K40T_PSDK_NAMED("identity_verification", "3.1.1");
   std::array<uint8_t, kRandomSize> random{};
   template <class S, class V>
   static void layout(S& s, V&& v) {
@@ -51,41 +58,28 @@ struct IdentityVerification
 };
 
 // 3.1.2 ACK.
-struct PsdkVersionAck : Reply<CommandSet::kPayloadState, 0x02, Sender::kPayload> {
-  static constexpr const char* kName = "get_psdk_version_ack";
-  static constexpr const char* kSection = "3.1.2";
-  Version version;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    Version::layout(s.version, v);
-  }
+struct PsdkVersionAck : Reply<CommandSet::kPayloadState, 0x02, Sender::kPayload>, VersionValue {
+  K40T_PSDK_NAMED("get_psdk_version_ack", "3.1.2");
 };
 
 // 3.1.2.
-struct GetPsdkVersion : Command<CommandSet::kPayloadState, 0x02, Sender::kAdapter, PsdkVersionAck>,
-                        NoData {
-  static constexpr const char* kName = "get_psdk_version";
-  static constexpr const char* kSection = "3.1.2";
-};
+K40T_PSDK_NO_DATA(GetPsdkVersion, kPayloadState, 0x02, PsdkVersionAck, "get_psdk_version", "3.1.2");
 
 // 3.1.3 ACK: the command's data echoed.
 struct HandshakeAck : Reply<CommandSet::kPayloadState, 0x03, Sender::kPayload>,
                       OpaqueData<1, kMaxHandshakeSize> {
-  static constexpr const char* kName = "link_handshake_ack";
-  static constexpr const char* kSection = "3.1.3";
+  K40T_PSDK_NAMED("link_handshake_ack", "3.1.3");
 };
 
 // 3.1.3: 1..32 bytes the payload must echo.
 struct Handshake : Command<CommandSet::kPayloadState, 0x03, Sender::kAdapter, HandshakeAck>,
                    OpaqueData<1, kMaxHandshakeSize> {
-  static constexpr const char* kName = "link_handshake";
-  static constexpr const char* kSection = "3.1.3";
+  K40T_PSDK_NAMED("link_handshake", "3.1.3");
 };
 
 // 3.1.4 ACK.
 struct ProductInfoAck : Reply<CommandSet::kPayloadState, 0x04, Sender::kPayload> {
-  static constexpr const char* kName = "get_product_info_ack";
-  static constexpr const char* kSection = "3.1.4";
+  K40T_PSDK_NAMED("get_product_info_ack", "3.1.4");
   std::string product_name;       // at most 31 bytes + NUL
   std::string product_id;         // at most 15 bytes + NUL
   std::string developer_account;  // at most 63 bytes + NUL
@@ -98,35 +92,20 @@ struct ProductInfoAck : Reply<CommandSet::kPayloadState, 0x04, Sender::kPayload>
 };
 
 // 3.1.4.
-struct GetProductInfo : Command<CommandSet::kPayloadState, 0x04, Sender::kAdapter, ProductInfoAck>,
-                        NoData {
-  static constexpr const char* kName = "get_product_info";
-  static constexpr const char* kSection = "3.1.4";
-};
+K40T_PSDK_NO_DATA(GetProductInfo, kPayloadState, 0x04, ProductInfoAck, "get_product_info", "3.1.4");
 
 // 3.1.5 ACK: the SKYPORT version the payload wants (for upgrading it with DJI Assistant 2).
-struct SkyportVersionAck : Reply<CommandSet::kPayloadState, 0x05, Sender::kPayload> {
-  static constexpr const char* kName = "get_skyport_version_ack";
-  static constexpr const char* kSection = "3.1.5";
-  Version version;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    Version::layout(s.version, v);
-  }
+struct SkyportVersionAck : Reply<CommandSet::kPayloadState, 0x05, Sender::kPayload>, VersionValue {
+  K40T_PSDK_NAMED("get_skyport_version_ack", "3.1.5");
 };
 
 // 3.1.5.
-struct GetSkyportVersion
-    : Command<CommandSet::kPayloadState, 0x05, Sender::kAdapter, SkyportVersionAck>,
-      NoData {
-  static constexpr const char* kName = "get_skyport_version";
-  static constexpr const char* kSection = "3.1.5";
-};
+K40T_PSDK_NO_DATA(GetSkyportVersion, kPayloadState, 0x05, SkyportVersionAck, "get_skyport_version",
+                  "3.1.5");
 
 // 3.1.6 ACK.
 struct ProductAliasAck : Reply<CommandSet::kPayloadState, 0x06, Sender::kPayload> {
-  static constexpr const char* kName = "get_product_alias_ack";
-  static constexpr const char* kSection = "3.1.6";
+  K40T_PSDK_NAMED("get_product_alias_ack", "3.1.6");
   std::string alias;  // at most 31 bytes + NUL
   template <class S, class V>
   static void layout(S& s, V&& v) {
@@ -135,11 +114,7 @@ struct ProductAliasAck : Reply<CommandSet::kPayloadState, 0x06, Sender::kPayload
 };
 
 // 3.1.6.
-struct GetProductAlias
-    : Command<CommandSet::kPayloadState, 0x06, Sender::kAdapter, ProductAliasAck>,
-      NoData {
-  static constexpr const char* kName = "get_product_alias";
-  static constexpr const char* kSection = "3.1.6";
-};
+K40T_PSDK_NO_DATA(GetProductAlias, kPayloadState, 0x06, ProductAliasAck, "get_product_alias",
+                  "3.1.6");
 
 }  // namespace k40t::psdk

@@ -3,8 +3,8 @@
 // instants must lie within the 2 s before the newest synchronised timestamp; at most 5 Hz).
 #pragma once
 
-#include "k40t_driver/psdk/command.h"
 #include "k40t_driver/psdk/commands/data_push.h"
+#include "k40t_driver/psdk/commands/declare.h"
 
 namespace k40t::psdk {
 
@@ -82,42 +82,38 @@ struct TargetPosition {
   }
 };
 
-// 3.7.1 ACK: one position per requested point. At 56 bytes a point, DATA (256 bytes at most)
-// holds 4 of them, although the document allows 5 (docs/psdk.md).
-struct GetPositionAck : Reply<CommandSet::kPositioning, 0x01, Sender::kAdapter> {
-  static constexpr const char* kName = "get_position_ack";
-  static constexpr const char* kSection = "3.7.1";
-  static constexpr size_t kMinBodySize = kPositionHeaderSize;
-  static constexpr size_t kMaxBodySize = kMaxDataSize - 1;
-
-  uint8_t count = 0;
+// What 3.7.1's request and its ACK both carry: count, task index, base time, then `count`
+// points (PositionRequestPoint in the request, TargetPosition in the ACK).
+template <class Point, uint8_t kDefaultCount>
+struct PositionList {
+  uint8_t count = kDefaultCount;
   uint8_t task_index = 0;
   DateTime base_time;
-  std::array<TargetPosition, kMaxTargetPoints> points{};
+  std::array<Point, kMaxTargetPoints> points{};
 
-  Status validate() const;
+  Status validate() const;  // count 1..5, the base time and each point
   void encode(ByteWriter& w) const;
   Status decode(ByteReader& r);
   void describe(FieldSink& sink) const;
 };
 
+// 3.7.1 ACK: one position per requested point. At 56 bytes a point, DATA (256 bytes at most)
+// holds 4 of them, although the document allows 5 (docs/psdk.md).
+struct GetPositionAck : Reply<CommandSet::kPositioning, 0x01, Sender::kAdapter>,
+                        PositionList<TargetPosition, 0> {
+  K40T_PSDK_NAMED("get_position_ack", "3.7.1");
+  static constexpr size_t kMinBodySize = kPositionHeaderSize;
+  static constexpr size_t kMaxBodySize = kMaxDataSize - 1;
+  Status validate() const;  // also: no more positions than DATA holds
+};
+
 // 3.7.1: 1..5 points. Encrypted by the payload (docs/psdk.md#frames).
-struct GetPosition : Command<CommandSet::kPositioning, 0x01, Sender::kPayload, GetPositionAck> {
-  static constexpr const char* kName = "get_position";
-  static constexpr const char* kSection = "3.7.1";
+struct GetPosition : Command<CommandSet::kPositioning, 0x01, Sender::kPayload, GetPositionAck>,
+                     PositionList<PositionRequestPoint, 1> {
+  K40T_PSDK_NAMED("get_position", "3.7.1");
   static constexpr size_t kMinBodySize = kPositionHeaderSize + kPositionRequestPointSize;
   static constexpr size_t kMaxBodySize =
       kPositionHeaderSize + kMaxTargetPoints * kPositionRequestPointSize;
-
-  uint8_t count = 1;
-  uint8_t task_index = 0;
-  DateTime base_time;
-  std::array<PositionRequestPoint, kMaxTargetPoints> points{};
-
-  Status validate() const;
-  void encode(ByteWriter& w) const;
-  Status decode(ByteReader& r);
-  void describe(FieldSink& sink) const;
 };
 
 }  // namespace k40t::psdk

@@ -2,7 +2,7 @@
 // 3.2.4 to 3.2.8): the adapter reads the payload's widget list and widget values, and sets values.
 #pragma once
 
-#include "k40t_driver/psdk/command.h"
+#include "k40t_driver/psdk/commands/declare.h"
 
 namespace k40t::psdk {
 
@@ -23,31 +23,31 @@ enum class WidgetType : uint8_t {
 };
 const char* to_string(WidgetType type);
 
-// 3.2.4 ACK.
-struct WidgetListLengthAck : Reply<CommandSet::kAppFunction, 0x04, Sender::kPayload> {
-  static constexpr const char* kName = "get_widget_list_length_ack";
-  static constexpr const char* kSection = "3.2.4";
+// An ACK that reports how many there are of something, 0..Max (one byte).
+template <size_t Max>
+struct CountUpTo {
   uint8_t count = 0;
-  Status validate() const { return check_int("count", count, 0, kMaxWidgets); }
+  Status validate() const { return check_int("count", count, 0, static_cast<int64_t>(Max)); }
   template <class S, class V>
   static void layout(S& s, V&& v) {
     v("count", s.count, wire::u8);
   }
 };
 
-// 3.2.4.
-struct GetWidgetListLength
-    : Command<CommandSet::kAppFunction, 0x04, Sender::kAdapter, WidgetListLengthAck>,
-      NoData {
-  static constexpr const char* kName = "get_widget_list_length";
-  static constexpr const char* kSection = "3.2.4";
+// 3.2.4 ACK.
+struct WidgetListLengthAck : Reply<CommandSet::kAppFunction, 0x04, Sender::kPayload>,
+                             CountUpTo<kMaxWidgets> {
+  K40T_PSDK_NAMED("get_widget_list_length_ack", "3.2.4");
 };
+
+// 3.2.4.
+K40T_PSDK_NO_DATA(GetWidgetListLength, kAppFunction, 0x04, WidgetListLengthAck,
+                  "get_widget_list_length", "3.2.4");
 
 // 3.2.5 ACK: one widget's description. Choose lists add their item names, integer input boxes
 // the text shown after the number; the other types end after the name (35 bytes in all).
 struct WidgetListDataAck : Reply<CommandSet::kAppFunction, 0x05, Sender::kPayload> {
-  static constexpr const char* kName = "get_widget_list_data_ack";
-  static constexpr const char* kSection = "3.2.5";
+  K40T_PSDK_NAMED("get_widget_list_data_ack", "3.2.5");
   static constexpr size_t kMinBodySize = 2 + kWidgetNameSize;
   static constexpr size_t kMaxBodySize = kMinBodySize + 1 + kMaxChooseItems * kChooseItemNameSize;
 
@@ -67,8 +67,7 @@ struct WidgetListDataAck : Reply<CommandSet::kAppFunction, 0x05, Sender::kPayloa
 // 3.2.5: the n-th widget of the list, from 0.
 struct GetWidgetListData
     : Command<CommandSet::kAppFunction, 0x05, Sender::kAdapter, WidgetListDataAck> {
-  static constexpr const char* kName = "get_widget_list_data";
-  static constexpr const char* kSection = "3.2.5";
+  K40T_PSDK_NAMED("get_widget_list_data", "3.2.5");
   uint8_t index = 0;
   Status validate() const { return check_int("index", index, 0, kMaxWidgets - 1); }
   template <class S, class V>
@@ -78,24 +77,14 @@ struct GetWidgetListData
 };
 
 // 3.2.6 ACK: widget values are read in groups of at most 15.
-struct WidgetGroupCountAck : Reply<CommandSet::kAppFunction, 0x06, Sender::kPayload> {
-  static constexpr const char* kName = "get_widget_group_count_ack";
-  static constexpr const char* kSection = "3.2.6";
-  uint8_t count = 0;
-  Status validate() const { return check_int("count", count, 0, kMaxWidgetGroups); }
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("count", s.count, wire::u8);
-  }
+struct WidgetGroupCountAck : Reply<CommandSet::kAppFunction, 0x06, Sender::kPayload>,
+                             CountUpTo<kMaxWidgetGroups> {
+  K40T_PSDK_NAMED("get_widget_group_count_ack", "3.2.6");
 };
 
 // 3.2.6.
-struct GetWidgetGroupCount
-    : Command<CommandSet::kAppFunction, 0x06, Sender::kAdapter, WidgetGroupCountAck>,
-      NoData {
-  static constexpr const char* kName = "get_widget_group_count";
-  static constexpr const char* kSection = "3.2.6";
-};
+K40T_PSDK_NO_DATA(GetWidgetGroupCount, kAppFunction, 0x06, WidgetGroupCountAck,
+                  "get_widget_group_count", "3.2.6");
 
 struct WidgetValue {
   WidgetType type = WidgetType::kButton;
@@ -111,8 +100,7 @@ struct WidgetValue {
 
 // 3.2.7 ACK: 1..15 widget values.
 struct WidgetGroupDataAck : Reply<CommandSet::kAppFunction, 0x07, Sender::kPayload> {
-  static constexpr const char* kName = "get_widget_group_data_ack";
-  static constexpr const char* kSection = "3.2.7";
+  K40T_PSDK_NAMED("get_widget_group_data_ack", "3.2.7");
   static constexpr size_t kMinBodySize = 1;
   static constexpr size_t kMaxBodySize = 1 + kMaxWidgetsPerGroup * 6;
 
@@ -128,8 +116,7 @@ struct WidgetGroupDataAck : Reply<CommandSet::kAppFunction, 0x07, Sender::kPaylo
 // 3.2.7: the values of group n, from 0.
 struct GetWidgetGroupData
     : Command<CommandSet::kAppFunction, 0x07, Sender::kAdapter, WidgetGroupDataAck> {
-  static constexpr const char* kName = "get_widget_group_data";
-  static constexpr const char* kSection = "3.2.7";
+  K40T_PSDK_NAMED("get_widget_group_data", "3.2.7");
   uint8_t group = 0;
   Status validate() const { return check_int("group", group, 0, kMaxWidgetGroups - 1); }
   template <class S, class V>
@@ -140,8 +127,7 @@ struct GetWidgetGroupData
 
 // 3.2.8: DJI Pilot changed a widget.
 struct SetWidgetValue : Command<CommandSet::kAppFunction, 0x08, Sender::kAdapter, PlainAck> {
-  static constexpr const char* kName = "set_widget_value";
-  static constexpr const char* kSection = "3.2.8";
+  K40T_PSDK_NAMED("set_widget_value", "3.2.8");
   WidgetValue widget;
   template <class S, class V>
   static void layout(S& s, V&& v) {
