@@ -16,6 +16,10 @@
 // Reply<Set, Id, Sender> is the base of ACK structs: it holds the return code, which the codec
 // writes and reads first; layout() lists only what follows it.
 //
+// commands/declare.h writes the repeated forms once: K40T_PSDK_NAMED(name, section) for the
+// kName/kSection pair, K40T_PSDK_SETTING(...) for a Set/Get/ACK triple sharing one value struct,
+// K40T_PSDK_NO_DATA(...) for a command without data, K40T_PSDK_TRANSPARENT(...) for transparent data.
+//
 // Variable-length commands (hand-shake data, transparent data, widget lists, positioning) have
 // no layout(); they define kMinBodySize, kMaxBodySize, encode(ByteWriter&) const,
 // decode(ByteReader&) -> Status and describe(FieldSink&) const instead.
