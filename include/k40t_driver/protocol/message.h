@@ -7,6 +7,7 @@
 //   static constexpr MessageId kId;         // wire id; ACK structs use 0x01xxxx, status 0x02xxxx
 //   static constexpr const char* kName;     // unique snake_case name (CLI, JSON, ROS `send`)
 //   static constexpr const char* kSection;  // the document's section, e.g. "3.2.4.5"
+//     (these three in one line: K40T_POD_MESSAGE(0x000304, "zoom_ratio", "3.2.4.5");)
 //   static constexpr Direction kDirection;  // who sends it
 //   static constexpr size_t kSize;          // payload bytes encode() writes
 //   static constexpr size_t kMinSize;       // fewest payload bytes decode() accepts (<= kSize)
@@ -37,6 +38,13 @@
 #include "k40t_driver/protocol/message_id.h"
 #include "k40t_driver/protocol/response_code.h"
 #include "k40t_driver/protocol/result.h"
+
+// A message's wire id, name and document section, in one line (the first three members of the
+// contract above); written out, they were the same three lines in every one of ~90 structs.
+#define K40T_POD_MESSAGE(id, name, section)  \
+  static constexpr MessageId kId = id;       \
+  static constexpr const char* kName = name; \
+  static constexpr const char* kSection = section
 
 namespace k40t::protocol {
 

@@ -26,9 +26,7 @@ constexpr double kMaxZoomRatio = 160.0;
 // 0x000300, section 3.2.4.1: photo or video mode. In photo mode the pod ignores record requests
 // and vice versa.
 struct CaptureModeRequest {
-  static constexpr MessageId kId = 0x000300;
-  static constexpr const char* kName = "capture_mode";
-  static constexpr const char* kSection = "3.2.4.1";
+  K40T_POD_MESSAGE(0x000300, "capture_mode", "3.2.4.1");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 2;
   static constexpr size_t kMinSize = 1;
@@ -48,9 +46,7 @@ struct CaptureModeRequest {
 // 0x000301, section 3.2.4.2: photo mode, time-lapse interval (5/7/30/60 s) and burst count (3/5).
 // The pod reports all three in 0x000003 whatever the mode, so all three are always validated.
 struct PhotoSettingsRequest {
-  static constexpr MessageId kId = 0x000301;
-  static constexpr const char* kName = "photo_settings";
-  static constexpr const char* kSection = "3.2.4.2";
+  K40T_POD_MESSAGE(0x000301, "photo_settings", "3.2.4.2");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 4;
   static constexpr size_t kMinSize = 3;
@@ -101,25 +97,19 @@ struct FileCaptureRequest {
 // 0x000302, section 3.2.4.3: take a photo (action 0), or stop a burst (1). Status frame 0x020302
 // follows except for single shots; the pod asks for GPS (0x000310) before shooting.
 struct TakePhotoRequest : FileCaptureRequest<PhotoLensMode, PhotoAction> {
-  static constexpr MessageId kId = 0x000302;
-  static constexpr const char* kName = "take_photo";
-  static constexpr const char* kSection = "3.2.4.3";
+  K40T_POD_MESSAGE(0x000302, "take_photo", "3.2.4.3");
 };
 
 // 0x000303, section 3.2.4.4: start (1) or stop (2) recording; status frame 0x020303 at 1 Hz.
 // Starting twice does not stop a recording.
 struct RecordRequest : FileCaptureRequest<RecordLensMode, RecordAction> {
-  static constexpr MessageId kId = 0x000303;
-  static constexpr const char* kName = "record";
-  static constexpr const char* kSection = "3.2.4.4";
+  K40T_POD_MESSAGE(0x000303, "record", "3.2.4.4");
 };
 
 // 0x000304, section 3.2.4.5: byte 1 = 0x00 "start setting", uint16 zoom ratio x10 (1.0..160.0x).
 // Status frame 0x020304 tells when the zoom has arrived.
 struct ZoomRatioRequest {
-  static constexpr MessageId kId = 0x000304;
-  static constexpr const char* kName = "zoom_ratio";
-  static constexpr const char* kSection = "3.2.4.5";
+  K40T_POD_MESSAGE(0x000304, "zoom_ratio", "3.2.4.5");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 3;
   static constexpr size_t kMinSize = 3;
@@ -138,9 +128,7 @@ struct ZoomRatioRequest {
 
 // 0x000306, section 3.2.4.6: continuous zoom in/out, stop, or one step in/out.
 struct ContinuousZoomRequest {
-  static constexpr MessageId kId = 0x000306;
-  static constexpr const char* kName = "continuous_zoom";
-  static constexpr const char* kSection = "3.2.4.6";
+  K40T_POD_MESSAGE(0x000306, "continuous_zoom", "3.2.4.6");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 2;
   static constexpr size_t kMinSize = 1;
@@ -161,9 +149,7 @@ struct ContinuousZoomRequest {
 // (the values a previous shot reported in 0x000005), into folder/name. Status frame 0x020307.
 // The focus position has no unit in the document: it is passed through as the raw uint16.
 struct PreciseReshootRequest {
-  static constexpr MessageId kId = 0x000307;
-  static constexpr const char* kName = "precise_reshoot";
-  static constexpr const char* kSection = "3.2.4.7";
+  K40T_POD_MESSAGE(0x000307, "precise_reshoot", "3.2.4.7");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 6 + kCameraFolderBytes + kCameraFileNameBytes;  // 58
   static constexpr size_t kMinSize = kSize;

@@ -22,9 +22,7 @@ constexpr int kStreamHeightPx = 1080;
 
 // 0x000308, section 3.2.4.8: output stream bitrate, 1 (1 Mbit/s) .. 6 (12 Mbit/s).
 struct StreamBitrateRequest {
-  static constexpr MessageId kId = 0x000308;
-  static constexpr const char* kName = "stream_bitrate";
-  static constexpr const char* kSection = "3.2.4.8";
+  K40T_POD_MESSAGE(0x000308, "stream_bitrate", "3.2.4.8");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 2;
   static constexpr size_t kMinSize = 1;
@@ -44,9 +42,7 @@ struct StreamBitrateRequest {
 // 0x00030A, section 3.2.4.9: output resolution, 1 = 1080P30. The document lists 2 = 720P30 as
 // "not supported", so validation refuses it (the code is still decoded and named).
 struct StreamResolutionRequest {
-  static constexpr MessageId kId = 0x00030A;
-  static constexpr const char* kName = "stream_resolution";
-  static constexpr const char* kSection = "3.2.4.9";
+  K40T_POD_MESSAGE(0x00030A, "stream_resolution", "3.2.4.9");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 2;
   static constexpr size_t kMinSize = 1;
@@ -65,9 +61,7 @@ struct StreamResolutionRequest {
 
 // 0x00030B, section 3.2.4.10: output encoding H264 (0) or H265 (1).
 struct StreamEncodingRequest {
-  static constexpr MessageId kId = 0x00030B;
-  static constexpr const char* kName = "stream_encoding";
-  static constexpr const char* kSection = "3.2.4.10";
+  K40T_POD_MESSAGE(0x00030B, "stream_encoding", "3.2.4.10");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 2;
   static constexpr size_t kMinSize = 1;
@@ -87,9 +81,7 @@ struct StreamEncodingRequest {
 // 0x000313, section 3.2.4.18: focus command; the uint16 area corners (top-left, bottom-right)
 // are used by area auto focus (4) only and must then span a non-empty box.
 struct FocusRequest {
-  static constexpr MessageId kId = 0x000313;
-  static constexpr const char* kName = "focus";
-  static constexpr const char* kSection = "3.2.4.18";
+  K40T_POD_MESSAGE(0x000313, "focus", "3.2.4.18");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 10;
   static constexpr size_t kMinSize = 9;
@@ -116,9 +108,7 @@ struct FocusRequest {
 
 // 0x000314, section 3.2.4.19: OSD watermark off (0) / on (1), then two reserved bytes.
 struct OsdWatermarkRequest {
-  static constexpr MessageId kId = 0x000314;
-  static constexpr const char* kName = "osd_watermark";
-  static constexpr const char* kSection = "3.2.4.19";
+  K40T_POD_MESSAGE(0x000314, "osd_watermark", "3.2.4.19");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 3;
   static constexpr size_t kMinSize = 1;
@@ -137,9 +127,7 @@ struct OsdWatermarkRequest {
 
 // 0x000318, section 3.2.4.22: what the stream shows: 0 infrared, 5/6 visible, 7 split screen.
 struct ImageModeRequest {
-  static constexpr MessageId kId = 0x000318;
-  static constexpr const char* kName = "image_mode";
-  static constexpr const char* kSection = "3.2.4.22";
+  K40T_POD_MESSAGE(0x000318, "image_mode", "3.2.4.22");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 2;
   static constexpr size_t kMinSize = 1;
@@ -161,9 +149,7 @@ struct ImageModeRequest {
 // say how unused slots are marked; they are sent as the caller set them (default 0).
 struct AiRecognitionRequest {
   static constexpr size_t kClassSlots = 10;
-  static constexpr MessageId kId = 0x000319;
-  static constexpr const char* kName = "ai_recognition";
-  static constexpr const char* kSection = "3.2.4.23";
+  K40T_POD_MESSAGE(0x000319, "ai_recognition", "3.2.4.23");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 2 + kClassSlots;  // 12
   static constexpr size_t kMinSize = kSize;
@@ -192,9 +178,7 @@ struct AiRecognitionRequest {
 // The pod needs AI recognition on; the document's table header says "Byte1-2" for the switch but
 // its details and the 10-byte total make it one byte.
 struct BoxTrackingRequest {
-  static constexpr MessageId kId = 0x000324;
-  static constexpr const char* kName = "box_tracking";
-  static constexpr const char* kSection = "3.2.4.25";
+  K40T_POD_MESSAGE(0x000324, "box_tracking", "3.2.4.25");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 10;
   static constexpr size_t kMinSize = 9;

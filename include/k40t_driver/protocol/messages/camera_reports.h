@@ -17,9 +17,7 @@ constexpr double kSdCapacityMaxMb = 65535 * kSdCapacityUnitMb;
 
 // 0x000003, section 3.2.1.1, 1 Hz: the camera's modes, stream settings and SD card.
 struct CameraSystemStatus {
-  static constexpr MessageId kId = 0x000003;
-  static constexpr const char* kName = "camera_system_status";
-  static constexpr const char* kSection = "3.2.1.1";
+  K40T_POD_MESSAGE(0x000003, "camera_system_status", "3.2.1.1");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 16;
   static constexpr size_t kMinSize = 15;
@@ -60,9 +58,7 @@ struct CameraSystemStatus {
 
 // 0x000008, section 3.2.1.4, 1 Hz: camera upgrade or repair state and progress 0..100 %.
 struct CameraUpgradeStatus {
-  static constexpr MessageId kId = 0x000008;
-  static constexpr const char* kName = "camera_upgrade_status";
-  static constexpr const char* kSection = "3.2.1.4";
+  K40T_POD_MESSAGE(0x000008, "camera_upgrade_status", "3.2.1.4");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 3;
   static constexpr size_t kMinSize = 2;

@@ -17,9 +17,7 @@ namespace k40t::protocol {
 // 0x020302, section 3.2.4.3, after 0x000302 (not for single shots): lens mode, photo state 0..11,
 // uint16 number of burst photos, 3 reserved.
 struct PhotoStatus {
-  static constexpr MessageId kId = 0x020302;
-  static constexpr const char* kName = "photo_status";
-  static constexpr const char* kSection = "3.2.4.3";
+  K40T_POD_MESSAGE(0x020302, "photo_status", "3.2.4.3");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 7;
   static constexpr size_t kMinSize = 4;
@@ -43,9 +41,7 @@ struct PhotoStatus {
 // recording time, 3 reserved. The document gives the time no unit; at a 1 Hz rate it is read as
 // seconds.
 struct RecordStatus {
-  static constexpr MessageId kId = 0x020303;
-  static constexpr const char* kName = "record_status";
-  static constexpr const char* kSection = "3.2.4.4";
+  K40T_POD_MESSAGE(0x020303, "record_status", "3.2.4.4");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 7;
   static constexpr size_t kMinSize = 4;
@@ -67,9 +63,7 @@ struct RecordStatus {
 
 // 0x020304, section 3.2.4.5, after 0x000304: zooming (1) or done (0), 1 reserved.
 struct ZoomStatus {
-  static constexpr MessageId kId = 0x020304;
-  static constexpr const char* kName = "zoom_status";
-  static constexpr const char* kSection = "3.2.4.5";
+  K40T_POD_MESSAGE(0x020304, "zoom_status", "3.2.4.5");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 2;
   static constexpr size_t kMinSize = 1;
@@ -87,9 +81,7 @@ struct ZoomStatus {
 
 // 0x020307, section 3.2.4.7, after 0x000307: lens mode, state 0..12, 5 reserved.
 struct PreciseReshootStatus {
-  static constexpr MessageId kId = 0x020307;
-  static constexpr const char* kName = "precise_reshoot_status";
-  static constexpr const char* kSection = "3.2.4.7";
+  K40T_POD_MESSAGE(0x020307, "precise_reshoot_status", "3.2.4.7");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 7;
   static constexpr size_t kMinSize = 2;
@@ -109,9 +101,7 @@ struct PreciseReshootStatus {
 
 // 0x02030C, section 3.2.4.11, after 0x00030C: TF-card upgrade state, 1 reserved.
 struct TfCardUpgradeStatus {
-  static constexpr MessageId kId = 0x02030C;
-  static constexpr const char* kName = "tf_card_upgrade_status";
-  static constexpr const char* kSection = "3.2.4.11";
+  K40T_POD_MESSAGE(0x02030C, "tf_card_upgrade_status", "3.2.4.11");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 2;
   static constexpr size_t kMinSize = 1;
@@ -130,9 +120,7 @@ struct TfCardUpgradeStatus {
 // 0x02030D, section 3.2.4.12, 5 Hz after 0x00030D: SD format state 0..3, 2 reserved. The pod
 // also reports "failed" when a format is asked for during recording or shooting.
 struct SdFormatStatus {
-  static constexpr MessageId kId = 0x02030D;
-  static constexpr const char* kName = "sd_format_status";
-  static constexpr const char* kSection = "3.2.4.12";
+  K40T_POD_MESSAGE(0x02030D, "sd_format_status", "3.2.4.12");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 3;
   static constexpr size_t kMinSize = 1;

@@ -34,38 +34,28 @@ struct FixedCommandRequest {
 // 0x00030C, section 3.2.4.11: upgrade the visible camera from its TF card (byte 1 = 1; 0 is
 // "invalid"). Progress in status frame 0x02030C.
 struct TfCardUpgradeRequest : FixedCommandRequest {
-  static constexpr MessageId kId = 0x00030C;
-  static constexpr const char* kName = "tf_card_upgrade";
-  static constexpr const char* kSection = "3.2.4.11";
+  K40T_POD_MESSAGE(0x00030C, "tf_card_upgrade", "3.2.4.11");
 };
 
 // 0x00030D, section 3.2.4.12: format the SD card. Progress in status frame 0x02030D at 5 Hz.
 struct FormatSdRequest : FixedCommandRequest {
-  static constexpr MessageId kId = 0x00030D;
-  static constexpr const char* kName = "format_sd";
-  static constexpr const char* kSection = "3.2.4.12";
+  K40T_POD_MESSAGE(0x00030D, "format_sd", "3.2.4.12");
 };
 
 // 0x00030F, section 3.2.4.14: restore factory settings; the camera restarts one second later.
 struct FactoryResetRequest : FixedCommandRequest {
-  static constexpr MessageId kId = 0x00030F;
-  static constexpr const char* kName = "factory_reset";
-  static constexpr const char* kSection = "3.2.4.14";
+  K40T_POD_MESSAGE(0x00030F, "factory_reset", "3.2.4.14");
 };
 
 // 0x000316, section 3.2.4.20: the camera is about to be powered off.
 struct ShutdownRequest : FixedCommandRequest {
-  static constexpr MessageId kId = 0x000316;
-  static constexpr const char* kName = "shutdown";
-  static constexpr const char* kSection = "3.2.4.20";
+  K40T_POD_MESSAGE(0x000316, "shutdown", "3.2.4.20");
 };
 
 // ACK 0x010312: response code, then address, netmask and gateway (docs/protocol/decisions.md#a2:
 // with the default big ack_byte_order the first octet comes first, as in the document's example).
 struct GetIpAck {
-  static constexpr MessageId kId = 0x010312;
-  static constexpr const char* kName = "get_ip_ack";
-  static constexpr const char* kSection = "3.2.4.17";
+  K40T_POD_MESSAGE(0x010312, "get_ip_ack", "3.2.4.17");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 14;
   static constexpr size_t kMinSize = 2;  // a refusal may carry the code only
@@ -89,17 +79,13 @@ struct GetIpAck {
 
 // 0x000312, section 3.2.4.17: query the camera's IP settings (byte 1 = 1).
 struct GetIpRequest : FixedCommandRequest {
-  static constexpr MessageId kId = 0x000312;
-  static constexpr const char* kName = "get_ip";
-  static constexpr const char* kSection = "3.2.4.17";
+  K40T_POD_MESSAGE(0x000312, "get_ip", "3.2.4.17");
   using Ack = GetIpAck;
 };
 
 // ACK 0x010317: response code, major, minor, patch version bytes.
 struct CameraVersionAck {
-  static constexpr MessageId kId = 0x010317;
-  static constexpr const char* kName = "camera_version_ack";
-  static constexpr const char* kSection = "3.2.4.21";
+  K40T_POD_MESSAGE(0x010317, "camera_version_ack", "3.2.4.21");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 5;
   static constexpr size_t kMinSize = 2;  // a refusal may carry the code only
@@ -125,9 +111,7 @@ struct CameraVersionAck {
 
 // 0x000317, section 3.2.4.21: ask for the camera's version (byte 1 = 1).
 struct CameraVersionRequest : FixedCommandRequest {
-  static constexpr MessageId kId = 0x000317;
-  static constexpr const char* kName = "camera_version";
-  static constexpr const char* kSection = "3.2.4.21";
+  K40T_POD_MESSAGE(0x000317, "camera_version", "3.2.4.21");
   using Ack = CameraVersionAck;
 };
 
@@ -135,9 +119,7 @@ struct CameraVersionRequest : FixedCommandRequest {
 // 00:00:00 UTC, int32 tz_minuteswest and int32 tz_dsttime as in struct timezone, all low byte
 // first. Sent every 10 s right after a pulse on the RTC_IO pin when that pin is wired.
 struct TimeSyncRequest {
-  static constexpr MessageId kId = 0x00030E;
-  static constexpr const char* kName = "time_sync";
-  static constexpr const char* kSection = "3.2.4.13";
+  K40T_POD_MESSAGE(0x00030E, "time_sync", "3.2.4.13");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 16;
   static constexpr size_t kMinSize = 16;
@@ -163,9 +145,7 @@ struct TimeSyncRequest {
 // "0x00: NULL": 0.0.0.0 leaves them unset. A static address must not be 0.0.0.0 and a netmask
 // must be contiguous ones.
 struct SetIpRequest {
-  static constexpr MessageId kId = 0x000311;
-  static constexpr const char* kName = "set_ip";
-  static constexpr const char* kSection = "3.2.4.16";
+  K40T_POD_MESSAGE(0x000311, "set_ip", "3.2.4.16");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 13;
   static constexpr size_t kMinSize = 13;

@@ -28,9 +28,7 @@ struct CameraGpsRequest;
 // echoed; int32 longitude/latitude deg x1e7; int16 relative height and altitude m x10; int16
 // yaw, roll, pitch deg x100 (25 bytes). int16 x100 limits yaw to -180..180.
 struct CameraGpsAck {
-  static constexpr MessageId kId = 0x010310;
-  static constexpr const char* kName = "camera_gps_request_ack";
-  static constexpr const char* kSection = "3.2.4.15";
+  K40T_POD_MESSAGE(0x010310, "camera_gps_request_ack", "3.2.4.15");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 25;
   static constexpr size_t kMinSize = 2;  // a refusal (no fix) may carry the code only
@@ -74,9 +72,7 @@ struct CameraGpsAck {
 // 0x000310, section 3.2.4.15, camera -> flight controller: lens enable (0/1; any non-zero byte
 // reads as enabled), hour 0-23, minute 0-59, second 0-59, uint16 millisecond 0-999.
 struct CameraGpsRequest {
-  static constexpr MessageId kId = 0x000310;
-  static constexpr const char* kName = "camera_gps_request";
-  static constexpr const char* kSection = "3.2.4.15";
+  K40T_POD_MESSAGE(0x000310, "camera_gps_request", "3.2.4.15");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 6;
   static constexpr size_t kMinSize = 6;
@@ -105,9 +101,7 @@ struct CameraGpsRequest {
 // (the document says it is always 0x1F), then low byte first: uint64 UTC ms, int32
 // longitude/latitude deg x1e7, int32 relative height and altitude m x1000 (27 bytes).
 struct TargetGpsAck {
-  static constexpr MessageId kId = 0x010320;
-  static constexpr const char* kName = "target_gps_request_ack";
-  static constexpr const char* kSection = "3.2.4.24";
+  K40T_POD_MESSAGE(0x010320, "target_gps_request_ack", "3.2.4.24");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 27;
   static constexpr size_t kMinSize = 2;  // a refusal may carry the code only
@@ -142,9 +136,7 @@ struct TargetGpsAck {
 // rate m/s. The document gives no signedness for the last five; heading (up to 36000) only fits
 // unsigned, so airspeed, ground speed, heading and throttle are uint16 and climb rate int16.
 struct TargetGpsRequest {
-  static constexpr MessageId kId = 0x000320;
-  static constexpr const char* kName = "target_gps_request";
-  static constexpr const char* kSection = "3.2.4.24";
+  K40T_POD_MESSAGE(0x000320, "target_gps_request", "3.2.4.24");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 42;
   static constexpr size_t kMinSize = 42;

@@ -47,9 +47,7 @@ enum class GimbalStabilisationState : uint8_t {
 const char* to_string(GimbalStabilisationState state);
 
 struct GimbalStatus {
-  static constexpr MessageId kId = 0x000001;
-  static constexpr const char* kName = "gimbal_status";
-  static constexpr const char* kSection = "3.1.1.1";
+  K40T_POD_MESSAGE(0x000001, "gimbal_status", "3.1.1.1");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 7;
   static constexpr size_t kMinSize = 4;  // bytes 5..7 are reserved: optional on receive
@@ -87,9 +85,7 @@ struct GimbalStatus {
 
 // All angles int16 degrees x100, low byte first. Note the rate order on the wire: yaw, pitch, roll.
 struct GimbalAttitude {
-  static constexpr MessageId kId = 0x000002;
-  static constexpr const char* kName = "gimbal_attitude";
-  static constexpr const char* kSection = "3.1.1.2";
+  K40T_POD_MESSAGE(0x000002, "gimbal_attitude", "3.1.1.2");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 20;
   static constexpr size_t kMinSize = 18;           // the 2 reserved bytes are optional on receive
@@ -137,9 +133,7 @@ enum class GimbalPitchDirection : uint8_t { kUp = 0, kDown = 1, kStop = 2 };
 const char* to_string(GimbalPitchDirection direction);
 
 struct GimbalControlRequest {
-  static constexpr MessageId kId = 0x000010;
-  static constexpr const char* kName = "gimbal_control";
-  static constexpr const char* kSection = "3.1.2.1";
+  K40T_POD_MESSAGE(0x000010, "gimbal_control", "3.1.2.1");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 4;
   static constexpr size_t kMinSize = 3;
@@ -168,9 +162,7 @@ struct GimbalControlRequest {
 // the top of this file) and, per axis, `*_move = false` for the document's "no movement" (the angle
 // is then ignored and sent as 0).
 struct GimbalAngleRequest {
-  static constexpr MessageId kId = 0x000012;
-  static constexpr const char* kName = "gimbal_angle";
-  static constexpr const char* kSection = "3.1.2.2";
+  K40T_POD_MESSAGE(0x000012, "gimbal_angle", "3.1.2.2");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 7;
   static constexpr size_t kMinSize = 6;
@@ -199,9 +191,7 @@ struct GimbalAngleRequest {
 
 // ---- 0x000013 one-key gyro drift calibration, section 3.1.2.3: byte 1 = 0x01 ----------------
 struct GimbalDriftCalibrationRequest : CommandRequest<0x01> {
-  static constexpr MessageId kId = 0x000013;
-  static constexpr const char* kName = "gimbal_drift_calibration";
-  static constexpr const char* kSection = "3.1.2.3";
+  K40T_POD_MESSAGE(0x000013, "gimbal_drift_calibration", "3.1.2.3");
 };
 
 // ---- 0x000017 dial (thumb-wheel) speed, section 3.1.2.4 -------------------------------------
@@ -209,9 +199,7 @@ struct GimbalDriftCalibrationRequest : CommandRequest<0x01> {
 // Maximum speed the gimbal turns at when steered with the dial: wire 5..150 = deg/s x5, i.e.
 // 1..30 deg/s. Byte 1 pitch, byte 2 yaw, byte 3 reserved.
 struct GimbalDialSpeedRequest {
-  static constexpr MessageId kId = 0x000017;
-  static constexpr const char* kName = "gimbal_dial_speed";
-  static constexpr const char* kSection = "3.1.2.4";
+  K40T_POD_MESSAGE(0x000017, "gimbal_dial_speed", "3.1.2.4");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 3;
   static constexpr size_t kMinSize = 2;
@@ -239,9 +227,7 @@ struct GimbalDialSpeedRequest {
 // ACK 0x010018: response code (docs/protocol/decisions.md#a2 byte order), hardware
 // major.minor.patch, software major.minor.patch, 1 reserved byte.
 struct GimbalVersionAck {
-  static constexpr MessageId kId = 0x010018;
-  static constexpr const char* kName = "gimbal_version_ack";
-  static constexpr const char* kSection = "3.1.2.5";
+  K40T_POD_MESSAGE(0x010018, "gimbal_version_ack", "3.1.2.5");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 9;
   static constexpr size_t kMinSize = 2;  // a refusal may carry the code only
@@ -273,9 +259,7 @@ struct GimbalVersionAck {
 
 // Byte 1 = 0x01 "get the gimbal version".
 struct GimbalVersionRequest : CommandRequest<0x01, GimbalVersionAck> {
-  static constexpr MessageId kId = 0x000018;
-  static constexpr const char* kName = "gimbal_version";
-  static constexpr const char* kSection = "3.1.2.5";
+  K40T_POD_MESSAGE(0x000018, "gimbal_version", "3.1.2.5");
 };
 
 // ---- 0x00002C point-to-aim, section 3.1.2.6 -------------------------------------------------
@@ -289,9 +273,7 @@ const char* to_string(GimbalAimLens lens);
 // digital), wide and thermal 1..8 whole multiples (digital only). x 1..1920, y 1..1080 (centre
 // 960, 540).
 struct GimbalPointAtRequest {
-  static constexpr MessageId kId = 0x00002C;
-  static constexpr const char* kName = "gimbal_point_at";
-  static constexpr const char* kSection = "3.1.2.6";
+  K40T_POD_MESSAGE(0x00002C, "gimbal_point_at", "3.1.2.6");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 7;
   static constexpr size_t kMinSize = 7;
@@ -318,44 +300,32 @@ struct GimbalPointAtRequest {
 
 // 3.1.2.7: byte 1 = 0x00 "turn off the servo".
 struct GimbalServoOffRequest : CommandRequest<0x00> {
-  static constexpr MessageId kId = 0x00002D;
-  static constexpr const char* kName = "gimbal_servo_off";
-  static constexpr const char* kSection = "3.1.2.7";
+  K40T_POD_MESSAGE(0x00002D, "gimbal_servo_off", "3.1.2.7");
 };
 
 // 3.1.2.8: byte 1 = 0x01 "linear calibration".
 struct GimbalLinearCalibrationRequest : CommandRequest<0x01> {
-  static constexpr MessageId kId = 0x00002E;
-  static constexpr const char* kName = "gimbal_linear_calibration";
-  static constexpr const char* kSection = "3.1.2.8";
+  K40T_POD_MESSAGE(0x00002E, "gimbal_linear_calibration", "3.1.2.8");
 };
 
 // 3.1.2.9: byte 1 = 0x01 "soft restart".
 struct GimbalRestartRequest : CommandRequest<0x01> {
-  static constexpr MessageId kId = 0x00002F;
-  static constexpr const char* kName = "gimbal_restart";
-  static constexpr const char* kSection = "3.1.2.9";
+  K40T_POD_MESSAGE(0x00002F, "gimbal_restart", "3.1.2.9");
 };
 
 // 3.1.2.10: byte 1 = 0x01 "use the flight controller's (fake) attitude".
 struct GimbalUseFlightControllerAttitudeRequest : CommandRequest<0x01> {
-  static constexpr MessageId kId = 0x000030;
-  static constexpr const char* kName = "gimbal_use_flight_controller_attitude";
-  static constexpr const char* kSection = "3.1.2.10";
+  K40T_POD_MESSAGE(0x000030, "gimbal_use_flight_controller_attitude", "3.1.2.10");
 };
 
 // 3.1.2.11: byte 1 = 0x01 "calibrate the motion acceleration bias".
 struct GimbalAccelerationCalibrationRequest : CommandRequest<0x01> {
-  static constexpr MessageId kId = 0x000031;
-  static constexpr const char* kName = "gimbal_acceleration_calibration";
-  static constexpr const char* kSection = "3.1.2.11";
+  K40T_POD_MESSAGE(0x000031, "gimbal_acceleration_calibration", "3.1.2.11");
 };
 
 // ---- 0x000033 image stabilisation, section 3.1.2.12: byte 1 = 1 on, 0 off -------------------
 struct GimbalStabilisationRequest : SwitchRequest<> {
-  static constexpr MessageId kId = 0x000033;
-  static constexpr const char* kName = "gimbal_stabilisation";
-  static constexpr const char* kSection = "3.1.2.12";
+  K40T_POD_MESSAGE(0x000033, "gimbal_stabilisation", "3.1.2.12");
 };
 
 // Every message struct of the gimbal family: the catalogue, the catalogue tests and the fuzz target

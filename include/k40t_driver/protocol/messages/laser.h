@@ -41,32 +41,24 @@ struct LaserDistancePayload {
 
 // ACK 0x010400, section 3.2.5.1.
 struct LaserRangeAck : LaserDistancePayload<&CodecOptions::ack_byte_order, 2> {
-  static constexpr MessageId kId = 0x010400;
-  static constexpr const char* kName = "laser_range_ack";
-  static constexpr const char* kSection = "3.2.5.1";
+  K40T_POD_MESSAGE(0x010400, "laser_range_ack", "3.2.5.1");
 };
 
 // 0x000400, section 3.2.5.1: byte 1 = 0 disable, 1 single ranging; byte 2 reserved.
 struct LaserRangeRequest : SwitchRequest<LaserRangeAck> {
-  static constexpr MessageId kId = 0x000400;
-  static constexpr const char* kName = "laser_range";
-  static constexpr const char* kSection = "3.2.5.1";
+  K40T_POD_MESSAGE(0x000400, "laser_range", "3.2.5.1");
 };
 
 // 0x000406, section 3.2.5.2: byte 1 = 0 disable, 1 range once a second; byte 2 reserved. The ACK
 // is the bare response code; the distances then come as status frames 0x020406.
 struct LaserPeriodicRangeRequest : SwitchRequest<> {
-  static constexpr MessageId kId = 0x000406;
-  static constexpr const char* kName = "laser_periodic_range";
-  static constexpr const char* kSection = "3.2.5.2";
+  K40T_POD_MESSAGE(0x000406, "laser_periodic_range", "3.2.5.2");
 };
 
 // Status frame 0x020406, section 3.2.5.2, 1 Hz while periodic ranging is on. Byte order: see the
 // top of this file.
 struct LaserPeriodicRangeStatus : LaserDistancePayload<&CodecOptions::laser_status_byte_order, 4> {
-  static constexpr MessageId kId = 0x020406;
-  static constexpr const char* kName = "laser_periodic_range_status";
-  static constexpr const char* kSection = "3.2.5.2";
+  K40T_POD_MESSAGE(0x020406, "laser_periodic_range_status", "3.2.5.2");
 };
 
 // Every message struct of the laser family: the catalogue, the catalogue tests and the fuzz target

@@ -18,9 +18,7 @@ namespace k40t::protocol {
 // 0x000500, section 3.2.6.1: uint16 maximum, uint16 minimum (both 0..2047, minimum < maximum),
 // 1 reserved byte. Values are raw SBUS channel values (11 bit), no unit.
 struct SbusRangeRequest {
-  static constexpr MessageId kId = 0x000500;
-  static constexpr const char* kName = "sbus_range";
-  static constexpr const char* kSection = "3.2.6.1";
+  K40T_POD_MESSAGE(0x000500, "sbus_range", "3.2.6.1");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 5;
   static constexpr size_t kMinSize = 4;
@@ -50,9 +48,7 @@ struct SbusRangeRequest {
 // 0x000501, section 3.2.6.2: one channel per function, bytes 1..7, byte 8 reserved. The document
 // numbers all of bytes 3..8 "Byte3" (a copy-paste slip); the table header gives their order.
 struct SbusChannelsRequest {
-  static constexpr MessageId kId = 0x000501;
-  static constexpr const char* kName = "sbus_channels";
-  static constexpr const char* kSection = "3.2.6.2";
+  K40T_POD_MESSAGE(0x000501, "sbus_channels", "3.2.6.2");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 8;
   static constexpr size_t kMinSize = 7;
@@ -93,9 +89,7 @@ struct SbusChannelsRequest {
 // (docs/protocol/decisions.md#a2 byte order, like the code), the seven channel bytes of 0x000501, 1
 // reserved byte.
 struct SbusConfigAck {
-  static constexpr MessageId kId = 0x010502;
-  static constexpr const char* kName = "sbus_config_ack";
-  static constexpr const char* kSection = "3.2.6.3";
+  K40T_POD_MESSAGE(0x010502, "sbus_config_ack", "3.2.6.3");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 14;
   static constexpr size_t kMinSize = 2;  // a refusal may carry the code only: finish_decode()
@@ -120,9 +114,7 @@ struct SbusConfigAck {
 
 // 0x000502, section 3.2.6.3: byte 1 = 0x01 "get the SBUS configuration".
 struct SbusConfigRequest : CommandRequest<0x01, SbusConfigAck> {
-  static constexpr MessageId kId = 0x000502;
-  static constexpr const char* kName = "sbus_config";
-  static constexpr const char* kSection = "3.2.6.3";
+  K40T_POD_MESSAGE(0x000502, "sbus_config", "3.2.6.3");
 };
 
 // Every message struct of the SBUS family: the catalogue, the catalogue tests and the fuzz target

@@ -23,9 +23,7 @@ namespace k40t::protocol {
 
 // ---- 0x000105, section 3.2.2.2: 1 = no zoom, 2..8 = digital zoom ----------------------------
 struct ThermalZoomRequest : ByteSettingRequest<ThermalZoomRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x000105;
-  static constexpr const char* kName = "thermal_set_zoom";
-  static constexpr const char* kSection = "3.2.2.2";
+  K40T_POD_MESSAGE(0x000105, "thermal_set_zoom", "3.2.2.2");
   static constexpr int64_t kMin = kThermalZoomMin;
   static constexpr int64_t kMax = kThermalZoomMax;
 
@@ -36,9 +34,7 @@ struct ThermalZoomRequest : ByteSettingRequest<ThermalZoomRequest, SettingPrefix
 
 // ---- 0x000106, section 3.2.2.3 -------------------------------------------------------------
 struct ThermalPaletteRequest : ByteSettingRequest<ThermalPaletteRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x000106;
-  static constexpr const char* kName = "thermal_set_palette";
-  static constexpr const char* kSection = "3.2.2.3";
+  K40T_POD_MESSAGE(0x000106, "thermal_set_palette", "3.2.2.3");
 
   Palette palette = Palette::kWhiteHot;
   static constexpr auto kValue = &ThermalPaletteRequest::palette;
@@ -49,9 +45,7 @@ struct ThermalPaletteRequest : ByteSettingRequest<ThermalPaletteRequest, Setting
 // While measurement is on the pod sends 0x000004 periodically.
 struct ThermalMeasurementRequest
     : ByteSettingRequest<ThermalMeasurementRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x000108;
-  static constexpr const char* kName = "thermal_set_measurement";
-  static constexpr const char* kSection = "3.2.2.4";
+  K40T_POD_MESSAGE(0x000108, "thermal_set_measurement", "3.2.2.4");
   static constexpr uint8_t kOnCode = 0x00;  // inverted: 0 = on
   static constexpr uint8_t kOffCode = 0x01;
 
@@ -63,9 +57,7 @@ struct ThermalMeasurementRequest
 // ---- 0x00010A, section 3.2.2.5: 0..100 -----------------------------------------------------
 struct ThermalSharpnessRequest
     : ByteSettingRequest<ThermalSharpnessRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x00010A;
-  static constexpr const char* kName = "thermal_set_sharpness";
-  static constexpr const char* kSection = "3.2.2.5";
+  K40T_POD_MESSAGE(0x00010A, "thermal_set_sharpness", "3.2.2.5");
   static constexpr int64_t kMin = 0;
   static constexpr int64_t kMax = kThermalLevelMax;
 
@@ -77,9 +69,7 @@ struct ThermalSharpnessRequest
 // ---- 0x00010B, section 3.2.2.6: 0..100 -----------------------------------------------------
 struct ThermalBrightnessRequest
     : ByteSettingRequest<ThermalBrightnessRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x00010B;
-  static constexpr const char* kName = "thermal_set_brightness";
-  static constexpr const char* kSection = "3.2.2.6";
+  K40T_POD_MESSAGE(0x00010B, "thermal_set_brightness", "3.2.2.6");
   static constexpr int64_t kMin = 0;
   static constexpr int64_t kMax = kThermalLevelMax;
 
@@ -91,9 +81,7 @@ struct ThermalBrightnessRequest
 // ---- 0x00010C, section 3.2.2.7: 0..100 -----------------------------------------------------
 struct ThermalContrastRequest
     : ByteSettingRequest<ThermalContrastRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x00010C;
-  static constexpr const char* kName = "thermal_set_contrast";
-  static constexpr const char* kSection = "3.2.2.7";
+  K40T_POD_MESSAGE(0x00010C, "thermal_set_contrast", "3.2.2.7");
   static constexpr int64_t kMin = 0;
   static constexpr int64_t kMax = kThermalLevelMax;
 
@@ -104,9 +92,7 @@ struct ThermalContrastRequest
 
 // ---- 0x00010D, section 3.2.2.8: switch (0 off, 1 on), level 0..100, reserved ---------------
 struct ThermalDenoiseRequest {
-  static constexpr MessageId kId = 0x00010D;
-  static constexpr const char* kName = "thermal_set_denoise";
-  static constexpr const char* kSection = "3.2.2.8";
+  K40T_POD_MESSAGE(0x00010D, "thermal_set_denoise", "3.2.2.8");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 3;
   static constexpr size_t kMinSize = 2;
@@ -127,9 +113,7 @@ struct ThermalDenoiseRequest {
 // ---- 0x00010E, section 3.2.2.9: 0 = off, 1..10 = level -------------------------------------
 struct ThermalEnhancementRequest
     : ByteSettingRequest<ThermalEnhancementRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x00010E;
-  static constexpr const char* kName = "thermal_set_enhancement";
-  static constexpr const char* kSection = "3.2.2.9";
+  K40T_POD_MESSAGE(0x00010E, "thermal_set_enhancement", "3.2.2.9");
   static constexpr int64_t kMin = 0;
   static constexpr int64_t kMax = kThermalEnhancementMax;
 
@@ -140,9 +124,7 @@ struct ThermalEnhancementRequest
 
 // ---- 0x00010F, section 3.2.2.10: spot measurement cursor, uint16 x 0..1920, y 0..1088 -------
 struct ThermalSpotRequest {
-  static constexpr MessageId kId = 0x00010F;
-  static constexpr const char* kName = "thermal_set_spot";
-  static constexpr const char* kSection = "3.2.2.10";
+  K40T_POD_MESSAGE(0x00010F, "thermal_set_spot", "3.2.2.10");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 5;
   static constexpr size_t kMinSize = 4;
@@ -164,9 +146,7 @@ struct ThermalSpotRequest {
 // The rectangle must lie inside the measurable area x 320..1279, y 32..1023 (the note of
 // 3.2.2.11, read as: centre +- half the size stays inside).
 struct ThermalAreaRequest {
-  static constexpr MessageId kId = 0x000110;
-  static constexpr const char* kName = "thermal_set_area";
-  static constexpr const char* kSection = "3.2.2.11";
+  K40T_POD_MESSAGE(0x000110, "thermal_set_area", "3.2.2.11");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 9;
   static constexpr size_t kMinSize = 8;
@@ -195,9 +175,7 @@ struct ThermalAreaRequest {
 // ---- 0x000123, section 3.2.2.12 ------------------------------------------------------------
 struct ThermalGainModeRequest
     : ByteSettingRequest<ThermalGainModeRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x000123;
-  static constexpr const char* kName = "thermal_set_gain_mode";
-  static constexpr const char* kSection = "3.2.2.12";
+  K40T_POD_MESSAGE(0x000123, "thermal_set_gain_mode", "3.2.2.12");
 
   ThermalGainMode gain_mode = ThermalGainMode::kHigh;
   static constexpr auto kValue = &ThermalGainModeRequest::gain_mode;
@@ -207,9 +185,7 @@ struct ThermalGainModeRequest
 // ---- 0x000124, section 3.2.2.13: int16 x0.1 degC high, low, difference; 2 reserved ---------
 // High/low -100.0..500.0 degC, difference 0.1..600.0 degC; -2732 on the wire switches one off.
 struct ThermalAlarmsRequest {
-  static constexpr MessageId kId = 0x000124;
-  static constexpr const char* kName = "thermal_set_alarms";
-  static constexpr const char* kSection = "3.2.2.13";
+  K40T_POD_MESSAGE(0x000124, "thermal_set_alarms", "3.2.2.13");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 8;
   // docs/protocol/decisions.md#a9: the table says 7 bytes, the text 8.
@@ -233,9 +209,7 @@ struct ThermalAlarmsRequest {
 
 // ---- 0x000125, section 3.2.2.14: temperature overlay on the thermal picture ----------------
 struct ThermalOverlayRequest : ByteSettingRequest<ThermalOverlayRequest, SettingPrefix::kNone, 1> {
-  static constexpr MessageId kId = 0x000125;
-  static constexpr const char* kName = "thermal_set_overlay";
-  static constexpr const char* kSection = "3.2.2.14";
+  K40T_POD_MESSAGE(0x000125, "thermal_set_overlay", "3.2.2.14");
   static constexpr uint8_t kOnCode = 0x01;
   static constexpr uint8_t kOffCode = 0x00;
 
@@ -246,9 +220,7 @@ struct ThermalOverlayRequest : ByteSettingRequest<ThermalOverlayRequest, Setting
 
 // ---- 0x000126, section 3.2.2.15: switch, int16 reference -30..50 degC, int16 float 0..80 degC
 struct ThermalThresholdAlarmRequest {
-  static constexpr MessageId kId = 0x000126;
-  static constexpr const char* kName = "thermal_set_threshold_alarm";
-  static constexpr const char* kSection = "3.2.2.15";
+  K40T_POD_MESSAGE(0x000126, "thermal_set_threshold_alarm", "3.2.2.15");
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 6;
   static constexpr size_t kMinSize = 5;
@@ -270,9 +242,7 @@ struct ThermalThresholdAlarmRequest {
 // Response code, then 21 bytes; multi-byte fields in the ACK byte order
 // (docs/protocol/decisions.md#a2). A refusal may carry the response code only.
 struct ThermalSettingsAck {
-  static constexpr MessageId kId = 0x010100;
-  static constexpr const char* kName = "thermal_read_settings_ack";
-  static constexpr const char* kSection = "3.2.2.1";
+  K40T_POD_MESSAGE(0x010100, "thermal_read_settings_ack", "3.2.2.1");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 23;
   static constexpr size_t kMinSize = 2;
@@ -338,9 +308,7 @@ struct ThermalSettingsAck {
 
 // ---- 0x000100, section 3.2.2.1: byte 1 = 0x01 "read all settings", byte 2 reserved -----------
 struct ThermalReadSettingsRequest : ReadAllSettingsRequest<ThermalSettingsAck> {
-  static constexpr MessageId kId = 0x000100;
-  static constexpr const char* kName = "thermal_read_settings";
-  static constexpr const char* kSection = "3.2.2.1";
+  K40T_POD_MESSAGE(0x000100, "thermal_read_settings", "3.2.2.1");
 };
 
 // Every message struct of the thermal family: the catalogue, the catalogue tests and the fuzz

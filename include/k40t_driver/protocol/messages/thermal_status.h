@@ -14,9 +14,7 @@ namespace k40t::protocol {
 // Area measurement fills max/min/centre/average and their coordinates; point measurement fills
 // point_degC and its coordinates.
 struct ThermalStatus {
-  static constexpr MessageId kId = 0x000004;
-  static constexpr const char* kName = "thermal_status";
-  static constexpr const char* kSection = "3.2.1.2";
+  K40T_POD_MESSAGE(0x000004, "thermal_status", "3.2.1.2");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 34;
   static constexpr size_t kMinSize = 30;  // the 4 reserved bytes are optional on receive

@@ -102,9 +102,7 @@ constexpr uint8_t kVisibleOffCode = 0x02;
 
 // ---- 0x000005, section 3.2.1.3, 5 Hz ---------------------------------------------------------
 struct VisibleStatus {
-  static constexpr MessageId kId = 0x000005;
-  static constexpr const char* kName = "visible_status";
-  static constexpr const char* kSection = "3.2.1.3";
+  K40T_POD_MESSAGE(0x000005, "visible_status", "3.2.1.3");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 15;
   static constexpr size_t kMinSize = 14;  // the reserved last byte is optional on receive
@@ -141,9 +139,7 @@ struct VisibleStatus {
 // Response code (byte order docs/protocol/decisions.md#a2), then 15 bytes. A refusal may carry the
 // response code only.
 struct VisibleSettingsAck {
-  static constexpr MessageId kId = 0x010200;
-  static constexpr const char* kName = "visible_read_settings_ack";
-  static constexpr const char* kSection = "3.2.3.1";
+  K40T_POD_MESSAGE(0x010200, "visible_read_settings_ack", "3.2.3.1");
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 17;
   static constexpr size_t kMinSize = 2;
@@ -203,17 +199,13 @@ struct VisibleSettingsAck {
 
 // ---- 0x000200, section 3.2.3.1: byte 1 = 0x01 "read all settings", byte 2 reserved -----------
 struct VisibleReadSettingsRequest : ReadAllSettingsRequest<VisibleSettingsAck> {
-  static constexpr MessageId kId = 0x000200;
-  static constexpr const char* kName = "visible_read_settings";
-  static constexpr const char* kSection = "3.2.3.1";
+  K40T_POD_MESSAGE(0x000200, "visible_read_settings", "3.2.3.1");
 };
 
 // ---- 0x000201, section 3.2.3.2: 0x00 start setting, resolution ------------------------------
 struct VisibleVideoResolutionRequest
     : ByteSettingRequest<VisibleVideoResolutionRequest, SettingPrefix::kStartSetting, 0> {
-  static constexpr MessageId kId = 0x000201;
-  static constexpr const char* kName = "visible_set_video_resolution";
-  static constexpr const char* kSection = "3.2.3.2";
+  K40T_POD_MESSAGE(0x000201, "visible_set_video_resolution", "3.2.3.2");
 
   VideoResolution video_resolution = VideoResolution::k1920x1080;
   static constexpr auto kValue = &VisibleVideoResolutionRequest::video_resolution;
@@ -223,9 +215,7 @@ struct VisibleVideoResolutionRequest
 // ---- 0x000202, section 3.2.3.3: 0x00 start setting, 0x14 or 0x15 ----------------------------
 struct VisiblePhotoResolutionRequest
     : ByteSettingRequest<VisiblePhotoResolutionRequest, SettingPrefix::kStartSetting, 0> {
-  static constexpr MessageId kId = 0x000202;
-  static constexpr const char* kName = "visible_set_photo_resolution";
-  static constexpr const char* kSection = "3.2.3.3";
+  K40T_POD_MESSAGE(0x000202, "visible_set_photo_resolution", "3.2.3.3");
 
   PhotoResolution photo_resolution = PhotoResolution::k4000x3000;
   static constexpr auto kValue = &VisiblePhotoResolutionRequest::photo_resolution;
@@ -236,9 +226,7 @@ struct VisiblePhotoResolutionRequest
 
 // ---- 0x000203, section 3.2.3.4: 0x00 start setting, ISO code --------------------------------
 struct VisibleIsoRequest : ByteSettingRequest<VisibleIsoRequest, SettingPrefix::kStartSetting, 0> {
-  static constexpr MessageId kId = 0x000203;
-  static constexpr const char* kName = "visible_set_iso";
-  static constexpr const char* kSection = "3.2.3.4";
+  K40T_POD_MESSAGE(0x000203, "visible_set_iso", "3.2.3.4");
 
   Iso iso = Iso::kAuto;
   static constexpr auto kValue = &VisibleIsoRequest::iso;
@@ -248,9 +236,7 @@ struct VisibleIsoRequest : ByteSettingRequest<VisibleIsoRequest, SettingPrefix::
 // ---- 0x000204, section 3.2.3.5: 0x00 start setting, shutter code ----------------------------
 struct VisibleShutterRequest
     : ByteSettingRequest<VisibleShutterRequest, SettingPrefix::kStartSetting, 0> {
-  static constexpr MessageId kId = 0x000204;
-  static constexpr const char* kName = "visible_set_shutter";
-  static constexpr const char* kSection = "3.2.3.5";
+  K40T_POD_MESSAGE(0x000204, "visible_set_shutter", "3.2.3.5");
 
   Shutter shutter = Shutter::kAuto;
   static constexpr auto kValue = &VisibleShutterRequest::shutter;
@@ -259,9 +245,7 @@ struct VisibleShutterRequest
 
 // ---- 0x000205, section 3.2.3.6 (Chinese original only): 0x00 start setting, EV code ---------
 struct VisibleEvRequest : ByteSettingRequest<VisibleEvRequest, SettingPrefix::kStartSetting, 0> {
-  static constexpr MessageId kId = 0x000205;
-  static constexpr const char* kName = "visible_set_ev";
-  static constexpr const char* kSection = "3.2.3.6";
+  K40T_POD_MESSAGE(0x000205, "visible_set_ev", "3.2.3.6");
 
   ExposureValue ev = ExposureValue::kAuto;
   static constexpr auto kValue = &VisibleEvRequest::ev;
@@ -272,9 +256,7 @@ struct VisibleEvRequest : ByteSettingRequest<VisibleEvRequest, SettingPrefix::kS
 // bits 3..0 (bits 7..4 reserved), 2 reserved bytes -----------------------------------------------
 struct VisibleWhiteBalanceRequest
     : ByteSettingRequest<VisibleWhiteBalanceRequest, SettingPrefix::kStartSetting, 2> {
-  static constexpr MessageId kId = 0x000206;
-  static constexpr const char* kName = "visible_set_white_balance";
-  static constexpr const char* kSection = "3.2.3.7";
+  K40T_POD_MESSAGE(0x000206, "visible_set_white_balance", "3.2.3.7");
   static constexpr uint8_t kValueMask = 0x0F;  // bits 7..4 reserved
 
   WhiteBalance white_balance = WhiteBalance::kAuto;
@@ -285,9 +267,7 @@ struct VisibleWhiteBalanceRequest
 // ---- 0x000207, section 3.2.3.8: 0x00 start setting, anti-flicker code -----------------------
 struct VisibleAntiFlickerRequest
     : ByteSettingRequest<VisibleAntiFlickerRequest, SettingPrefix::kStartSetting, 0> {
-  static constexpr MessageId kId = 0x000207;
-  static constexpr const char* kName = "visible_set_anti_flicker";
-  static constexpr const char* kSection = "3.2.3.8";
+  K40T_POD_MESSAGE(0x000207, "visible_set_anti_flicker", "3.2.3.8");
 
   AntiFlicker anti_flicker = AntiFlicker::kAuto;
   static constexpr auto kValue = &VisibleAntiFlickerRequest::anti_flicker;
@@ -321,9 +301,7 @@ struct SwitchAndValueRequest {
 // 3.2.3.9/3.2.3.10): that depends on the pod's state, so the session or the simulator enforces
 // it, not this struct.
 struct VisibleStrongLightRequest : SwitchAndValueRequest<VisibleStrongLightRequest> {
-  static constexpr MessageId kId = 0x000208;
-  static constexpr const char* kName = "visible_set_strong_light";
-  static constexpr const char* kSection = "3.2.3.9";
+  K40T_POD_MESSAGE(0x000208, "visible_set_strong_light", "3.2.3.9");
 
   bool strong_light_on = false;
   uint8_t strong_light_value = 0;
@@ -336,9 +314,7 @@ struct VisibleStrongLightRequest : SwitchAndValueRequest<VisibleStrongLightReque
 // ---- 0x000209, section 3.2.3.10: 0x00 start setting, 0x01 on / 0x02 off, value 0..100 -------
 // Not together with strong-light suppression (see VisibleStrongLightRequest).
 struct VisibleBacklightRequest : SwitchAndValueRequest<VisibleBacklightRequest> {
-  static constexpr MessageId kId = 0x000209;
-  static constexpr const char* kName = "visible_set_backlight";
-  static constexpr const char* kSection = "3.2.3.10";
+  K40T_POD_MESSAGE(0x000209, "visible_set_backlight", "3.2.3.10");
 
   bool backlight_on = false;
   uint8_t backlight_value = 0;
@@ -351,9 +327,7 @@ struct VisibleBacklightRequest : SwitchAndValueRequest<VisibleBacklightRequest> 
 // ---- 0x00020A, section 3.2.3.11: 0x00 start setting, 0x01 on / 0x02 off --------------------
 struct VisibleAeLockRequest
     : ByteSettingRequest<VisibleAeLockRequest, SettingPrefix::kStartSetting, 0> {
-  static constexpr MessageId kId = 0x00020A;
-  static constexpr const char* kName = "visible_set_ae_lock";
-  static constexpr const char* kSection = "3.2.3.11";
+  K40T_POD_MESSAGE(0x00020A, "visible_set_ae_lock", "3.2.3.11");
   static constexpr uint8_t kOnCode = kVisibleOnCode;
   static constexpr uint8_t kOffCode = kVisibleOffCode;
 
@@ -365,9 +339,7 @@ struct VisibleAeLockRequest
 // ---- 0x00020B, section 3.2.3.12: 0x00 start setting, metering mode --------------------------
 struct VisibleMeteringRequest
     : ByteSettingRequest<VisibleMeteringRequest, SettingPrefix::kStartSetting, 0> {
-  static constexpr MessageId kId = 0x00020B;
-  static constexpr const char* kName = "visible_set_metering";
-  static constexpr const char* kSection = "3.2.3.12";
+  K40T_POD_MESSAGE(0x00020B, "visible_set_metering", "3.2.3.12");
 
   MeteringMode metering = MeteringMode::kArea;
   static constexpr auto kValue = &VisibleMeteringRequest::metering;
