@@ -37,11 +37,9 @@ CameraView down_camera() {
 
 // The mounting: the optical frame's z (forward) is the body's -z (down), its x (right) the
 // body's -y (the right wing), its y (image down) the body's -x (backwards). The laser frame's x
-// is the body's -z as well. Both at the body's origin.
-geo::Vector3 optical_to_body(const geo::Vector3& d) {
-  return {-d[1], -d[0], -d[2]};
-}
-geo::Vector3 body_to_optical(const geo::Vector3& d) {
+// is the body's -z as well. Both at the body's origin. The map swaps and negates axes, so it is its
+// own inverse: one function turns optical into body directions and back.
+geo::Vector3 swap_optical_body(const geo::Vector3& d) {
   return {-d[1], -d[0], -d[2]};
 }
 
@@ -49,9 +47,9 @@ FrameRay fixed_mounting() {
   return [](const std::string& target, const std::string& source,
             const geo::Vector3& d) -> Result<geo::BodyRay> {
     if (target == "base_link" && source == "camera_optical")
-      return geo::BodyRay{{0, 0, 0}, optical_to_body(d)};
+      return geo::BodyRay{{0, 0, 0}, swap_optical_body(d)};
     if (target == "camera_optical" && source == "laser")  // laser x = body -z
-      return geo::BodyRay{{0, 0, 0}, body_to_optical({0, 0, -d[0]})};
+      return geo::BodyRay{{0, 0, 0}, swap_optical_body({0, 0, -d[0]})};
     return Result<geo::BodyRay>::fail("no transform from " + source + " to " + target);
   };
 }
