@@ -46,6 +46,24 @@
   static constexpr const char* kName = name; \
   static constexpr const char* kSection = section
 
+// The first six members of the contract in one line, for the two common shapes:
+//   K40T_POD_REQUEST(0x00010D, "thermal_set_denoise", "3.2.2.8", 3, 2);
+//     host -> pod, kSize 3, kMinSize 2, and `using Ack = PlainAck` (the bare response code; the
+//     file must include messages/ack.h);
+//   K40T_POD_REPORT(0x000004, "thermal_status", "3.2.2.12", 28, 28);
+//     pod -> host (reports, status frames and data ACKs).
+// A message of any other shape writes the members out.
+#define K40T_POD_HEADER(id, name, section, direction, size, min_size) \
+  K40T_POD_MESSAGE(id, name, section);                                \
+  static constexpr Direction kDirection = Direction::direction;       \
+  static constexpr size_t kSize = size;                               \
+  static constexpr size_t kMinSize = min_size
+#define K40T_POD_REQUEST(id, name, section, size, min_size)       \
+  K40T_POD_HEADER(id, name, section, kHostToPod, size, min_size); \
+  using Ack = PlainAck
+#define K40T_POD_REPORT(id, name, section, size, min_size) \
+  K40T_POD_HEADER(id, name, section, kPodToHost, size, min_size)
+
 namespace k40t::protocol {
 
 enum class Direction {

@@ -126,3 +126,13 @@ template <class T>
   static void fields(Self& self, V&& v) {                                                       \
     layout(self, ::k40t::codec::FieldLister<std::remove_reference_t<V>>(v));                    \
   }
+
+// K40T_MESSAGE_LAYOUT() and the layout's signature in one line; the body follows:
+//   K40T_LAYOUT(s, v) {
+//     v("x_px", s.x_px, wire::u16.range(0, kThermalPictureWidth));
+//   }
+// `s` is the message (const when validating or encoding), `v` the visitor (codec/layout.h).
+#define K40T_LAYOUT(s, v)       \
+  K40T_MESSAGE_LAYOUT()         \
+  template <class S_, class V_> \
+  static void layout([[maybe_unused]] S_& s, V_&& v)

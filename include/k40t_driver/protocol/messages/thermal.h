@@ -92,18 +92,11 @@ struct ThermalContrastRequest
 
 // ---- 0x00010D, section 3.2.2.8: switch (0 off, 1 on), level 0..100, reserved ---------------
 struct ThermalDenoiseRequest {
-  K40T_POD_MESSAGE(0x00010D, "thermal_set_denoise", "3.2.2.8");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 3;
-  static constexpr size_t kMinSize = 2;
-  using Ack = PlainAck;
-
+  K40T_POD_REQUEST(0x00010D, "thermal_set_denoise", "3.2.2.8", 3, 2);
   bool denoise_on = false;
   uint8_t denoise_level = 0;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     v("denoise_on", s.denoise_on, wire::flag(1, 0));
     v("denoise_level", s.denoise_level, wire::u8.range(0, kThermalLevelMax));
     v("reserved", wire::gap, wire::reserved(1));
