@@ -17,6 +17,7 @@
 namespace k40t::sim::testing {
 
 using k40t::testing::request_with;
+using protocol::ResponseCode;
 
 class PodHarness {
  public:

@@ -10,9 +10,7 @@ namespace k40t::sim {
 namespace {
 
 namespace p = protocol;
-using testing::request_with;
-using p::ResponseCode;
-using testing::PodHarness;
+using namespace testing;  // PodHarness, request_with, ResponseCode
 
 p::TakePhotoRequest photo(p::PhotoAction action = p::PhotoAction::kStart) {
   p::TakePhotoRequest request;

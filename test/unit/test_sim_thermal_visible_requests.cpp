@@ -11,9 +11,7 @@ namespace k40t::sim {
 namespace {
 
 namespace p = protocol;
-using testing::request_with;
-using p::ResponseCode;
-using testing::PodHarness;
+using namespace testing;  // PodHarness, request_with, ResponseCode
 
 TEST(SimThermalRequests, SettingsAreStoredAndReadBack) {
   PodHarness h;
