@@ -82,10 +82,7 @@ double distance_m(const protocol::CameraGpsAck& ack, const geo::Geodetic& truth)
 std::unique_ptr<PodDriver> linked_driver(FakePod& pod, const std::string& pty, bool match) {
   DriverOptions o = options_for(pty);
   o.geotag_time_match = match;
-  std::unique_ptr<PodDriver> driver = make_driver(o, system_now_ns);
-  EXPECT_TRUE(driver->start().is_ok());
-  wait_until_linked(pod, *driver);
-  return driver;
+  return started_driver(pod, o, system_now_ns);
 }
 
 TEST(GeotagTimeMatch, TheAnswerIsTheStateAtTheRequestedTime) {

@@ -14,27 +14,17 @@
 namespace k40t::protocol {
 namespace {
 
-using testing::decode_bytes;
-using testing::decode_golden;
-using testing::expect_decode_error;
-using testing::expect_encodes_to;
-using testing::golden;
+using namespace testing;  // the checks of golden_checks.h and message_checks.h
 
 const char kGolden[] = "gimbal_laser_sbus.txt";
 
 // Every request names its ACK type; the data-carrying one is its own struct.
-static_assert(std::is_same_v<GimbalControlRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalAngleRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalDriftCalibrationRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalDialSpeedRequest::Ack, PlainAck>);
+static_assert(acked_plainly<GimbalControlRequest, GimbalAngleRequest, GimbalDriftCalibrationRequest,
+                            GimbalDialSpeedRequest, GimbalPointAtRequest, GimbalServoOffRequest,
+                            GimbalLinearCalibrationRequest, GimbalRestartRequest,
+                            GimbalUseFlightControllerAttitudeRequest,
+                            GimbalAccelerationCalibrationRequest, GimbalStabilisationRequest>);
 static_assert(std::is_same_v<GimbalVersionRequest::Ack, GimbalVersionAck>);
-static_assert(std::is_same_v<GimbalPointAtRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalServoOffRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalLinearCalibrationRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalRestartRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalUseFlightControllerAttitudeRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalAccelerationCalibrationRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalStabilisationRequest::Ack, PlainAck>);
 
 // ---- golden: 3.1.1.1 status -----------------------------------------------------------------
 TEST(GimbalGolden, StatusNibblesBitsAndStates) {

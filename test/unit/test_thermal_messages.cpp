@@ -13,11 +13,7 @@
 namespace k40t::protocol {
 namespace {
 
-using testing::expect_decode_error;
-using testing::expect_matches_golden;
-using testing::expect_range_error;
-using testing::golden_message;
-using testing::request_with;
+using namespace testing;  // the checks of golden_checks.h, message_checks.h, request_with.h
 
 const char kGolden[] = "thermal_visible.txt";
 
