@@ -176,16 +176,10 @@ TEST(GimbalRanges, PointAt) {
       expect_range_error(m, "zoom_x");
     }
   }
-  m = {};
-  m.x_px = 0;
-  expect_range_error(m, "x_px");
-  m.x_px = 1921;
-  expect_range_error(m, "x_px");
-  m = {};
-  m.y_px = 0;
-  expect_range_error(m, "y_px");
-  m.y_px = 1081;
-  expect_range_error(m, "y_px");
+  for (int bad : {0, 1921})
+    expect_range_error(GimbalPointAtRequest{}, "x_px", [&](auto& r) { r.x_px = bad; });
+  for (int bad : {0, 1081})
+    expect_range_error(GimbalPointAtRequest{}, "y_px", [&](auto& r) { r.y_px = bad; });
 }
 
 // ---- catalogue ------------------------------------------------------------------------------

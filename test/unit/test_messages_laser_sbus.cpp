@@ -213,17 +213,15 @@ TEST(LaserRanges, Distance) {
 }
 
 TEST(SbusRanges, RangeValues) {
-  SbusRangeRequest m;
-  m.max_value = 2048;
-  expect_range_error(m, "max_value");
-  m = {};
-  m.min_value = 2048;
-  expect_range_error(m, "min_value");
-  m.max_value = 1000;
-  m.min_value = 1000;  // must be strictly less
-  expect_range_error(m, "min_value");
-  m.min_value = 1001;
-  expect_range_error(m, "min_value");
+  const SbusRangeRequest valid;
+  expect_range_error(valid, "max_value", [](auto& m) { m.max_value = 2048; });
+  expect_range_error(valid, "min_value", [](auto& m) { m.min_value = 2048; });
+  // The minimum must be strictly less than the maximum.
+  expect_range_error(valid, "min_value", [](auto& m) { m.max_value = m.min_value = 1000; });
+  expect_range_error(valid, "min_value", [](auto& m) {
+    m.max_value = 1000;
+    m.min_value = 1001;
+  });
 }
 
 TEST(SbusRanges, EveryChannel) {
