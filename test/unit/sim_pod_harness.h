@@ -108,4 +108,11 @@ class PodHarness {
   EventQueue events;
 };
 
+// The tests that drive one default pod, `h`; a suite names it by an alias:
+//   using SimFocus = SimPodTest;  TEST_F(SimFocus, ...) { h.send(...); }
+class SimPodTest : public ::testing::Test {
+ protected:
+  PodHarness h;
+};
+
 }  // namespace k40t::sim::testing
