@@ -9,6 +9,7 @@ namespace k40t::sim {
 namespace {
 
 using testing::events_of;
+using testing::states_of;
 
 // CameraModel::step has an extra argument (optics busy).
 struct Stepper {
@@ -234,10 +235,8 @@ TEST_F(SimCamera, TfUpgradeReportsProgressAndSuccess) {
   EXPECT_EQ(camera.start_tf_upgrade(), Outcome::kBusy);
   EXPECT_EQ(camera.take_photo(0, "", ""), Outcome::kBusy);
   run(camera, 10.5, events);
-  const auto status = events_of<TfUpgradeStatusEvent>(events);
-  ASSERT_EQ(status.size(), 2u);
-  EXPECT_EQ(status[0].state, TfUpgradeState::kUpgrading);
-  EXPECT_EQ(status[1].state, TfUpgradeState::kSucceeded);
+  EXPECT_EQ(states_of<TfUpgradeStatusEvent>(events),
+            (std::vector{TfUpgradeState::kUpgrading, TfUpgradeState::kSucceeded}));
   const auto progress = events_of<MaintenanceEvent>(events);
   ASSERT_EQ(progress.size(), 11u);
   EXPECT_EQ(progress[5].state, MaintenanceState::kUpgrading);
