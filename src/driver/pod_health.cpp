@@ -1,6 +1,7 @@
 #include "k40t_driver/driver/pod_health.h"
 
 #include <cstdio>
+#include <initializer_list>
 
 namespace k40t::driver {
 
@@ -19,9 +20,19 @@ const char* name_or(E value, const char* unknown) {
   return name ? name : unknown;
 }
 
-// Appends `name` to the comma-separated `list`.
-void append_name(std::string& list, const char* name) {
-  list += list.empty() ? name : std::string(", ") + name;
+// A sensor's self-test result or an alarm, by name.
+struct Flag {
+  const char* name;
+  bool set;
+};
+
+// The names of `flags` whose value is `set`, comma-separated.
+std::string names_where(std::initializer_list<Flag> flags, bool set) {
+  std::string list;
+  for (const Flag& flag : flags) {
+    if (flag.set == set) list += list.empty() ? flag.name : std::string(", ") + flag.name;
+  }
+  return list;
 }
 
 // The check `judge(report, check)` gives, or a warning while no `what` report has come.
@@ -104,15 +115,10 @@ HealthCheck link_health(const DriverStats& s, const LinkContext& context) {
 
 HealthCheck self_test_health(const std::optional<p::GimbalStatus>& gimbal) {
   return when_reported(gimbal, "gimbal status", [](const auto& g, HealthCheck& check) {
-    std::string failed;
-    auto sensor = [&](const char* name, bool ok) {
-      check.add(name, ok ? "passed" : "FAILED");
-      if (!ok) append_name(failed, name);
-    };
-    sensor("thermal", g.ir_ok);
-    sensor("tele", g.tele_ok);
-    sensor("wide", g.wide_ok);
-    sensor("laser", g.laser_ok);
+    const std::initializer_list<Flag> sensors = {
+        {"thermal", g.ir_ok}, {"tele", g.tele_ok}, {"wide", g.wide_ok}, {"laser", g.laser_ok}};
+    for (const Flag& sensor : sensors) check.add(sensor.name, sensor.set ? "passed" : "FAILED");
+    const std::string failed = names_where(sensors, false);
     const bool links_ok = g.gimbal_link == p::GimbalLinkState::kNormal &&
                           g.camera_link == p::GimbalLinkState::kNormal;
     check.add("gimbal link", name_or(g.gimbal_link, "unknown"));
@@ -163,15 +169,12 @@ HealthCheck sd_card_health(const std::optional<p::CameraSystemStatus>& camera) {
 
 HealthCheck alarms_health(const std::optional<p::ThermalStatus>& thermal) {
   return when_reported(thermal, "thermal", [](const auto& t, HealthCheck& check) {
-    std::string active;
-    auto alarm = [&](const char* name, bool on) {
-      check.add(name, on);
-      if (on) append_name(active, name);
-    };
-    alarm("high temperature", t.high_alarm);
-    alarm("low temperature", t.low_alarm);
-    alarm("temperature difference", t.difference_alarm);
-    alarm("threshold", t.threshold_alarm);
+    const std::initializer_list<Flag> alarms = {{"high temperature", t.high_alarm},
+                                                {"low temperature", t.low_alarm},
+                                                {"temperature difference", t.difference_alarm},
+                                                {"threshold", t.threshold_alarm}};
+    for (const Flag& alarm : alarms) check.add(alarm.name, alarm.set);
+    const std::string active = names_where(alarms, true);
     check.add("max degC", t.max_degC);
     check.add("min degC", t.min_degC);
     if (active.empty()) {

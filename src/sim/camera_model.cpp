@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "k40t_driver/codec/enum_names.h"
+
 namespace k40t::sim {
 
 namespace {
@@ -26,19 +28,14 @@ PhotoState photo_state_for(Outcome refusal, SdState card) {
   }
 }
 
+// What a recording that cannot start reports for the card's state; any other: card abnormal.
 RecordState record_state_for(SdState card) {
-  switch (card) {
-    case SdState::kAbsent:
-      return RecordState::kNoSdCard;
-    case SdState::kFull:
-      return RecordState::kSdFull;
-    case SdState::kFormatError:
-      return RecordState::kFormatError;
-    case SdState::kSlow:
-      return RecordState::kSlowCard;
-    default:
-      return RecordState::kCardAbnormal;
-  }
+  static constexpr EnumTo<SdState, RecordState> kStates[] = {
+      {SdState::kAbsent, RecordState::kNoSdCard},
+      {SdState::kFull, RecordState::kSdFull},
+      {SdState::kFormatError, RecordState::kFormatError},
+      {SdState::kSlow, RecordState::kSlowCard}};
+  return lookup(kStates, card, RecordState::kCardAbnormal);
 }
 }  // namespace
 

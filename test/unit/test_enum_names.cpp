@@ -1,5 +1,5 @@
-// name_in() (codec/enum_names.h): each value's own text, and the fallback for a value the table
-// lacks (a byte off the wire cast to the enum).
+// name_in() and lookup() (codec/enum_names.h): each value's own text or value, and the fallback
+// for a value the table lacks (a byte off the wire cast to the enum, or a mapping's default).
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -24,6 +24,13 @@ TEST(EnumNames, NamesEachValue) {
 TEST(EnumNames, FallsBackForAValueNotInTheTable) {
   EXPECT_STREQ(name_in(kColours, static_cast<Colour>(3)), "?");
   EXPECT_STREQ(name_in(kColours, static_cast<Colour>(0), "no colour"), "no colour");
+}
+
+TEST(EnumNames, MapsToOtherValuesWithADefault) {
+  static constexpr EnumTo<Colour, int> kWavelengths[] = {{Colour::kRed, 700}, {Colour::kBlue, 450}};
+  EXPECT_EQ(lookup(kWavelengths, Colour::kRed, 0), 700);
+  EXPECT_EQ(lookup(kWavelengths, Colour::kBlue, 0), 450);
+  EXPECT_EQ(lookup(kWavelengths, Colour::kGreen, -1), -1);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// An enum's names as a table, instead of a switch statement per enum: each value once, beside its
-// text, and one lookup for all of them.
+// An enum's names (or other values it maps to) as a table, instead of a switch statement per
+// enum: each value once, beside what it maps to, and one lookup for all of them.
 //   const char* to_string(LinkState s) {
 //     static constexpr EnumName<LinkState> kNames[] = {{LinkState::kClosed, "closed"}, ...};
 //     return name_in(kNames, s, "invalid link state");
@@ -10,21 +10,29 @@
 
 namespace k40t {
 
-template <class Enum>
-struct EnumName {
+template <class Enum, class To>
+struct EnumTo {
   Enum value;
-  const char* name;
+  To to;
 };
 
-// The name of `value` in `table`, or `unknown` for a value the table lacks (a byte off the wire
-// cast to the enum).
+template <class Enum>
+using EnumName = EnumTo<Enum, const char*>;
+
+// What `value` maps to in `table`, or `otherwise` for a value the table lacks (a byte off the
+// wire cast to the enum, or the values a mapping leaves to a default).
+template <class Enum, class To, size_t N>
+constexpr To lookup(const EnumTo<Enum, To> (&table)[N], Enum value, To otherwise) {
+  for (const EnumTo<Enum, To>& entry : table) {
+    if (entry.value == value) return entry.to;
+  }
+  return otherwise;
+}
+
 template <class Enum, size_t N>
 constexpr const char* name_in(const EnumName<Enum> (&table)[N], Enum value,
                               const char* unknown = "?") {
-  for (const EnumName<Enum>& entry : table) {
-    if (entry.value == value) return entry.name;
-  }
-  return unknown;
+  return lookup(table, value, unknown);
 }
 
 }  // namespace k40t
