@@ -105,6 +105,10 @@ class SkyportBridge {
   // deferred() for a command whose DATA `decode(bytes, size)` reads (a layout variant).
   template <class Cmd, class Decode, class F>
   void deferred_raw(Decode decode, F answer);
+  // A mode the pod cannot report back: `send(const Set&)` sets it on the pod, the mode the pod
+  // accepted is kept in `kept`, and Get is answered from there (skyport_lens.cpp).
+  template <class Set, class Get, class Mode, class Send>
+  void kept_mode(Mode SkyportBridge::*kept, Send send);
   // The pod's answer as a return code (and counted).
   psdk::AckCode pod_code(const PodCall& call, const char* what);
   psdk::AckCode unsupported();
