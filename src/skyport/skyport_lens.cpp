@@ -135,9 +135,7 @@ void SkyportBridge::register_camera_lens() {
     ack.focal_length_mm = options_.tele_focal_length_mm * zoom_split(pod_.snapshot()).optical;
     return ack;
   });
-  session_.handle<GetOpticalZoomFactor>([this](const GetOpticalZoomFactor&) {
-    const PodSnapshot s = pod_.snapshot();
-    if (!s.have_visible) return refused<OpticalZoomFactorAck>(AckCode::kError);
+  from_snapshot<GetOpticalZoomFactor>(&PodSnapshot::have_visible, [this](const PodSnapshot& s) {
     OpticalZoomFactorAck ack;
     ack.factor_x = static_cast<float>(zoom_split(s).optical);
     return ack;
