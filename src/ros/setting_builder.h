@@ -3,7 +3,9 @@
 //   one_field<p::ThermalSharpnessRequest>("thermal_sharpness", &Req::sharpness,
 //   &C::thermal_sharpness)
 //       .reads(&p::ThermalSettingsAck::sharpness)
-// gives the binding, its clamp rule, its request id and its read-back together.
+// gives the binding, its clamp rule, its request id and its read-back together; a setting of
+// several parameters lists them as fields<Req>(name, from(&Req::a, &C::a), ...).reads(&Ack::a,
+// ...), or writes its request and read-back out with group() and reads_with().
 #pragma once
 
 #include <tuple>
