@@ -1,6 +1,7 @@
 #include "k40t_driver/driver/pod_health.h"
 
 #include <cstdio>
+#include <initializer_list>
 
 namespace k40t::driver {
 
@@ -19,9 +20,31 @@ const char* name_or(E value, const char* unknown) {
   return name ? name : unknown;
 }
 
-// Appends `name` to the comma-separated `list`.
-void append_name(std::string& list, const char* name) {
-  list += list.empty() ? name : std::string(", ") + name;
+// A sensor's self-test result or an alarm, by name.
+struct Flag {
+  const char* name;
+  bool set;
+};
+
+// The names of `flags` whose value is `set`, comma-separated.
+std::string names_where(std::initializer_list<Flag> flags, bool set) {
+  std::string list;
+  for (const Flag& flag : flags) {
+    if (flag.set == set) list += list.empty() ? flag.name : std::string(", ") + flag.name;
+  }
+  return list;
+}
+
+// The check `judge(report, check)` gives, or a warning while no `what` report has come.
+template <class Report, class Judge>
+HealthCheck when_reported(const std::optional<Report>& report, const char* what, Judge judge) {
+  HealthCheck check;
+  if (!report) {
+    check.set(HealthLevel::kWarn, std::string("no ") + what + " report yet");
+  } else {
+    judge(*report, check);
+  }
+  return check;
 }
 
 }  // namespace
@@ -91,102 +114,75 @@ HealthCheck link_health(const DriverStats& s, const LinkContext& context) {
 }
 
 HealthCheck self_test_health(const std::optional<p::GimbalStatus>& gimbal) {
-  HealthCheck check;
-  if (!gimbal) {
-    check.set(HealthLevel::kWarn, "no gimbal status report yet");
-    return check;
-  }
-  const p::GimbalStatus& g = *gimbal;
-  std::string failed;
-  auto sensor = [&](const char* name, bool ok) {
-    check.add(name, ok ? "passed" : "FAILED");
-    if (!ok) append_name(failed, name);
-  };
-  sensor("thermal", g.ir_ok);
-  sensor("tele", g.tele_ok);
-  sensor("wide", g.wide_ok);
-  sensor("laser", g.laser_ok);
-  const bool links_ok =
-      g.gimbal_link == p::GimbalLinkState::kNormal && g.camera_link == p::GimbalLinkState::kNormal;
-  check.add("gimbal link", name_or(g.gimbal_link, "unknown"));
-  check.add("camera link", name_or(g.camera_link, "unknown"));
-  check.add("upgrade", name_or(g.upgrade, "unknown"));
-  if (!failed.empty()) {
-    check.set(HealthLevel::kError, "self-test failed: " + failed);
-  } else if (!links_ok) {
-    check.set(HealthLevel::kError, "gimbal or camera connection abnormal");
-  } else if (g.upgrade != p::GimbalUpgradeState::kNormal) {
-    check.set(HealthLevel::kWarn, "firmware upgrade not completed");
-  } else {
-    check.set(HealthLevel::kOk, "all sensors passed");
-  }
-  return check;
+  return when_reported(gimbal, "gimbal status", [](const auto& g, HealthCheck& check) {
+    const std::initializer_list<Flag> sensors = {
+        {"thermal", g.ir_ok}, {"tele", g.tele_ok}, {"wide", g.wide_ok}, {"laser", g.laser_ok}};
+    for (const Flag& sensor : sensors) check.add(sensor.name, sensor.set ? "passed" : "FAILED");
+    const std::string failed = names_where(sensors, false);
+    const bool links_ok = g.gimbal_link == p::GimbalLinkState::kNormal &&
+                          g.camera_link == p::GimbalLinkState::kNormal;
+    check.add("gimbal link", name_or(g.gimbal_link, "unknown"));
+    check.add("camera link", name_or(g.camera_link, "unknown"));
+    check.add("upgrade", name_or(g.upgrade, "unknown"));
+    if (!failed.empty()) {
+      check.set(HealthLevel::kError, "self-test failed: " + failed);
+    } else if (!links_ok) {
+      check.set(HealthLevel::kError, "gimbal or camera connection abnormal");
+    } else if (g.upgrade != p::GimbalUpgradeState::kNormal) {
+      check.set(HealthLevel::kWarn, "firmware upgrade not completed");
+    } else {
+      check.set(HealthLevel::kOk, "all sensors passed");
+    }
+  });
 }
 
 HealthCheck stabilisation_health(const std::optional<p::GimbalStatus>& gimbal) {
-  HealthCheck check;
-  if (!gimbal) {
-    check.set(HealthLevel::kWarn, "no gimbal status report yet");
-    return check;
-  }
-  const bool trouble = gimbal->stabilisation == p::GimbalStabilisationState::kFailed ||
-                       gimbal->stabilisation == p::GimbalStabilisationState::kFeatureLost;
-  check.set(trouble ? HealthLevel::kWarn : HealthLevel::kOk,
-            name_or(gimbal->stabilisation, "unknown state"));
-  check.add("state code", static_cast<int>(gimbal->stabilisation));
-  return check;
+  return when_reported(gimbal, "gimbal status", [](const auto& g, HealthCheck& check) {
+    const bool trouble = g.stabilisation == p::GimbalStabilisationState::kFailed ||
+                         g.stabilisation == p::GimbalStabilisationState::kFeatureLost;
+    check.set(trouble ? HealthLevel::kWarn : HealthLevel::kOk,
+              name_or(g.stabilisation, "unknown state"));
+    check.add("state code", static_cast<int>(g.stabilisation));
+  });
 }
 
 HealthCheck sd_card_health(const std::optional<p::CameraSystemStatus>& camera) {
-  HealthCheck check;
-  if (!camera) {
-    check.set(HealthLevel::kWarn, "no camera status report yet");
-    return check;
-  }
-  const p::CameraSystemStatus& c = *camera;
-  HealthLevel level = HealthLevel::kOk;
-  switch (c.sd_state) {
-    case p::SdCardState::kNormal:
-      break;
-    case p::SdCardState::kAbnormal:
-    case p::SdCardState::kFormatError:
-      level = HealthLevel::kError;
-      break;
-    default:
-      level = HealthLevel::kWarn;
-      break;  // slow, missing, full, undocumented
-  }
-  check.set(level, name_or(c.sd_state, "unknown SD card state"));
-  check.add("total MB", c.sd_total_mb);
-  check.add("free MB", c.sd_free_mb);
-  check.add("used MB", c.sd_used_mb);
-  return check;
+  return when_reported(camera, "camera status", [](const auto& c, HealthCheck& check) {
+    HealthLevel level = HealthLevel::kOk;
+    switch (c.sd_state) {
+      case p::SdCardState::kNormal:
+        break;
+      case p::SdCardState::kAbnormal:
+      case p::SdCardState::kFormatError:
+        level = HealthLevel::kError;
+        break;
+      default:
+        level = HealthLevel::kWarn;
+        break;  // slow, missing, full, undocumented
+    }
+    check.set(level, name_or(c.sd_state, "unknown SD card state"));
+    check.add("total MB", c.sd_total_mb);
+    check.add("free MB", c.sd_free_mb);
+    check.add("used MB", c.sd_used_mb);
+  });
 }
 
 HealthCheck alarms_health(const std::optional<p::ThermalStatus>& thermal) {
-  HealthCheck check;
-  if (!thermal) {
-    check.set(HealthLevel::kWarn, "no thermal report yet");
-    return check;
-  }
-  const p::ThermalStatus& t = *thermal;
-  std::string active;
-  auto alarm = [&](const char* name, bool on) {
-    check.add(name, on);
-    if (on) append_name(active, name);
-  };
-  alarm("high temperature", t.high_alarm);
-  alarm("low temperature", t.low_alarm);
-  alarm("temperature difference", t.difference_alarm);
-  alarm("threshold", t.threshold_alarm);
-  check.add("max degC", t.max_degC);
-  check.add("min degC", t.min_degC);
-  if (active.empty()) {
-    check.set(HealthLevel::kOk, "no alarm");
-  } else {
-    check.set(HealthLevel::kWarn, "alarm: " + active);
-  }
-  return check;
+  return when_reported(thermal, "thermal", [](const auto& t, HealthCheck& check) {
+    const std::initializer_list<Flag> alarms = {{"high temperature", t.high_alarm},
+                                                {"low temperature", t.low_alarm},
+                                                {"temperature difference", t.difference_alarm},
+                                                {"threshold", t.threshold_alarm}};
+    for (const Flag& alarm : alarms) check.add(alarm.name, alarm.set);
+    const std::string active = names_where(alarms, true);
+    check.add("max degC", t.max_degC);
+    check.add("min degC", t.min_degC);
+    if (active.empty()) {
+      check.set(HealthLevel::kOk, "no alarm");
+    } else {
+      check.set(HealthLevel::kWarn, "alarm: " + active);
+    }
+  });
 }
 
 HealthCheck settings_health(const SettingsState& s) {

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "k40t_driver/codec/enum_names.h"
+
 namespace k40t::operations {
 
 namespace p = protocol;
@@ -22,6 +24,13 @@ std::string state_text(E state) {
   return text ? text : "state " + std::to_string(static_cast<int>(state));
 }
 
+// The step a status gives: the state's phase in `phases` (any state not there: failed) and its
+// text.
+template <class E, size_t N>
+Step step_for(E state, const EnumTo<E, Phase> (&phases)[N]) {
+  return step(lookup(phases, state, Phase::kFailed), state_text(state));
+}
+
 }  // namespace
 
 Step zoom_step(const p::ZoomStatus& status) {
@@ -30,43 +39,28 @@ Step zoom_step(const p::ZoomStatus& status) {
 }
 
 Step sd_format_step(const p::SdFormatStatus& status) {
-  switch (status.state) {
-    case p::SdFormatState::kDone:
-      return step(Phase::kSucceeded, state_text(status.state));
-    case p::SdFormatState::kFormatting:
-      return step(Phase::kRunning, state_text(status.state));
-    case p::SdFormatState::kFailed:
-    case p::SdFormatState::kUnavailable:
-      break;
-  }
-  return step(Phase::kFailed, state_text(status.state));
+  static constexpr EnumTo<p::SdFormatState, Phase> kPhases[] = {
+      {p::SdFormatState::kDone, Phase::kSucceeded},
+      {p::SdFormatState::kFormatting, Phase::kRunning}};
+  return step_for(status.state, kPhases);  // failed, unavailable: failed
 }
 
 Step reshoot_step(const p::PreciseReshootStatus& status) {
-  switch (status.state) {
-    case p::ReshootState::kDone:
-      return step(Phase::kSucceeded, state_text(status.state));
-    case p::ReshootState::kReshooting:
-    case p::ReshootState::kBurst:
-    case p::ReshootState::kContinuous:
-    case p::ReshootState::kTimeLapse:
-    case p::ReshootState::kSingleShot:
-      return step(Phase::kRunning, state_text(status.state));
-    default:  // stopped, failed, and the SD card states 7..11
-      return step(Phase::kFailed, state_text(status.state));
-  }
+  static constexpr EnumTo<p::ReshootState, Phase> kPhases[] = {
+      {p::ReshootState::kDone, Phase::kSucceeded},
+      {p::ReshootState::kReshooting, Phase::kRunning},
+      {p::ReshootState::kBurst, Phase::kRunning},
+      {p::ReshootState::kContinuous, Phase::kRunning},
+      {p::ReshootState::kTimeLapse, Phase::kRunning},
+      {p::ReshootState::kSingleShot, Phase::kRunning}};
+  return step_for(status.state, kPhases);  // stopped, failed, the SD card states 7..11: failed
 }
 
 Step tf_upgrade_step(const p::TfCardUpgradeStatus& status) {
-  switch (status.state) {
-    case p::TfUpgradeState::kSucceeded:
-      return step(Phase::kSucceeded, state_text(status.state));
-    case p::TfUpgradeState::kUpgrading:
-      return step(Phase::kRunning, state_text(status.state));
-    case p::TfUpgradeState::kFailed:
-      break;
-  }
-  return step(Phase::kFailed, state_text(status.state));
+  static constexpr EnumTo<p::TfUpgradeState, Phase> kPhases[] = {
+      {p::TfUpgradeState::kSucceeded, Phase::kSucceeded},
+      {p::TfUpgradeState::kUpgrading, Phase::kRunning}};
+  return step_for(status.state, kPhases);  // failed: failed
 }
 
 // ---- zoom ------------------------------------------------------------------------------------

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <string>
 
+#include "k40t_driver/codec/enum_names.h"
+
 namespace k40t::operations {
 
 namespace p = protocol;
@@ -14,15 +16,11 @@ constexpr double kRadToDeg = 180.0 / M_PI;
 constexpr double kDegToRad = M_PI / 180.0;
 
 const char* calibration_name(CalibrationKind kind) {
-  switch (kind) {
-    case CalibrationKind::kDrift:
-      return "gimbal drift calibration";
-    case CalibrationKind::kLinear:
-      return "gimbal linear calibration";
-    case CalibrationKind::kAccelerometer:
-      return "gimbal accelerometer calibration";
-  }
-  return "gimbal calibration";
+  static constexpr EnumName<CalibrationKind> kNames[] = {
+      {CalibrationKind::kDrift, "gimbal drift calibration"},
+      {CalibrationKind::kLinear, "gimbal linear calibration"},
+      {CalibrationKind::kAccelerometer, "gimbal accelerometer calibration"}};
+  return name_in(kNames, kind, "gimbal calibration");
 }
 }  // namespace
 

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <utility>
 
+#include "k40t_driver/codec/enum_names.h"
+
 namespace k40t::operations {
 
 namespace {
@@ -15,19 +17,12 @@ std::string seconds_text(double s) {
 }  // namespace
 
 const char* to_string(Phase phase) {
-  switch (phase) {
-    case Phase::kRunning:
-      return "running";
-    case Phase::kSucceeded:
-      return "succeeded";
-    case Phase::kFailed:
-      return "failed";
-    case Phase::kTimedOut:
-      return "timed out";
-    case Phase::kCancelled:
-      return "cancelled";
-  }
-  return "?";
+  static constexpr EnumName<Phase> kNames[] = {{Phase::kRunning, "running"},
+                                               {Phase::kSucceeded, "succeeded"},
+                                               {Phase::kFailed, "failed"},
+                                               {Phase::kTimedOut, "timed out"},
+                                               {Phase::kCancelled, "cancelled"}};
+  return name_in(kNames, phase);
 }
 
 OperationTracker::OperationTracker(std::string what, std::string awaited, double timeout_s,

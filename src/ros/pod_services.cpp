@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <std_srvs/Trigger.h>
 
@@ -52,6 +53,18 @@ Req file_capture(const SrvReq& req, Action action) {
   r.folder = req.folder;
   r.name = req.name;
   return r;
+}
+
+// The typed ACK of `request`; `res` gets the exchange's success and message. None when the pod
+// refused or did not answer, or (said in `res`) when its answer cannot be read.
+template <class Req, class Res>
+std::optional<typename Req::Ack> typed_ack(PodDriver& driver, const Req& request, Res& res) {
+  AckResult raw;
+  Result<typename Req::Ack> ack = driver.request_typed(request, &raw);
+  fill(res, raw);
+  if (ack) return ack.value();
+  if (raw.ok()) fail(res, ack.error());  // an OK code but an unreadable answer
+  return std::nullopt;
 }
 
 }  // namespace
@@ -181,11 +194,8 @@ void PodServices::advertise_thermal_and_laser() {
     fill(res, driver_.request(r));
   });
   serve<k40t_driver::MeasureRange>("laser/measure", [this](auto&, auto& res) {
-    AckResult raw;
-    Result<p::LaserRangeAck> ack = driver_.request_typed(p::LaserRangeRequest{}, &raw);
-    fill(res, raw);
+    const std::optional<p::LaserRangeAck> ack = typed_ack(driver_, p::LaserRangeRequest{}, res);
     if (!ack) {
-      if (raw.ok()) fail(res, ack.error());  // an OK code but an unreadable distance
       res.range = std::numeric_limits<float>::quiet_NaN();
       return;
     }
@@ -204,13 +214,8 @@ void PodServices::advertise_system() {
     res.camera = v.camera;
   });
   serve<k40t_driver::GetIp>("get_ip", [this](auto&, auto& res) {
-    AckResult raw;
-    Result<p::GetIpAck> ack = driver_.request_typed(p::GetIpRequest{}, &raw);
-    fill(res, raw);
-    if (!ack) {
-      if (raw.ok()) fail(res, ack.error());
-      return;
-    }
+    const std::optional<p::GetIpAck> ack = typed_ack(driver_, p::GetIpRequest{}, res);
+    if (!ack) return;
     res.address = ack->address;
     res.netmask = ack->netmask;
     res.gateway = ack->gateway;
@@ -227,13 +232,8 @@ void PodServices::advertise_system() {
   serve_trigger("factory_reset", p::FactoryResetRequest{});
   serve_trigger("shutdown", p::ShutdownRequest{});
   serve<k40t_driver::GetSbus>("sbus/get", [this](auto&, auto& res) {
-    AckResult raw;
-    Result<p::SbusConfigAck> ack = driver_.request_typed(p::SbusConfigRequest{}, &raw);
-    fill(res, raw);
-    if (!ack) {
-      if (raw.ok()) fail(res, ack.error());
-      return;
-    }
+    const std::optional<p::SbusConfigAck> ack = typed_ack(driver_, p::SbusConfigRequest{}, res);
+    if (!ack) return;
     res.max_value = ack->range.max_value;
     res.min_value = ack->range.min_value;
     res.stream_channel = ack->channels.stream_channel;

@@ -3,9 +3,12 @@
 //   one_field<p::ThermalSharpnessRequest>("thermal_sharpness", &Req::sharpness,
 //   &C::thermal_sharpness)
 //       .reads(&p::ThermalSettingsAck::sharpness)
-// gives the binding, its clamp rule, its request id and its read-back together.
+// gives the binding, its clamp rule, its request id and its read-back together; a setting of
+// several parameters lists them as fields<Req>(name, from(&Req::a, &C::a), ...).reads(&Ack::a,
+// ...), or writes its request and read-back out with group() and reads_with().
 #pragma once
 
+#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -76,32 +79,55 @@ Entry group(std::string name, Build build, Members... members) {
   return Entry(std::move(b));
 }
 
-// The common case: one parameter, one request field (enums, switches and levels alike), read
-// back, when it is, from one field of a report.
-template <class T>
-class OneField : public Entry {
- public:
-  OneField(Entry entry, T Config::*member) : Entry(std::move(entry)), member_(member) {}
+// One request field and the parameter it is sent from: an argument of fields().
+template <class ReqField, class T>
+struct FieldOf {
+  ReqField request;
+  T Config::*member;
+};
+template <class ReqField, class T>
+FieldOf<ReqField, T> from(ReqField request, T Config::*member) {
+  return {request, member};
+}
 
-  template <class Report, class V>
-  Entry&& reads(V Report::*field) && {
-    T Config::*member = member_;
+// The common case: each parameter goes to one field of the request and, when it is read back,
+// comes from one field of a report, in the same order (enums, switches and levels alike).
+template <class... Members>
+class Fields : public Entry {
+ public:
+  Fields(Entry entry, Members... members) : Entry(std::move(entry)), members_(members...) {}
+
+  template <class Report, class... V>
+  Entry&& reads(V Report::*... fields) && {
+    static_assert(sizeof...(V) == sizeof...(Members), "one report field per parameter");
     return std::move(*this).template reads_with<Report>(
-        [member, field](Config& c, const Report& r) { c.*member = static_cast<T>(r.*field); });
+        [members = members_, fields...](Config& c, const Report& r) {
+          std::apply(
+              [&](auto... member) {
+                ((c.*member = static_cast<std::decay_t<decltype(c.*member)>>(r.*fields)), ...);
+              },
+              members);
+        });
   }
 
  private:
-  T Config::*member_;
+  std::tuple<Members...> members_;
 };
 
-template <class Req, class ReqField, class T>
-OneField<T> one_field(std::string name, ReqField field, T Config::*member) {
-  auto build = [field, member](const Config& c) {
+template <class Req, class... ReqFields, class... Ts>
+Fields<Ts Config::*...> fields(std::string name, FieldOf<ReqFields, Ts>... pairs) {
+  auto build = [pairs...](const Config& c) {
     Req r;
-    r.*field = static_cast<std::decay_t<decltype(r.*field)>>(c.*member);
+    ((r.*pairs.request = static_cast<std::decay_t<decltype(r.*pairs.request)>>(c.*pairs.member)),
+     ...);
     return r;
   };
-  return OneField<T>(group(std::move(name), build, member), member);
+  return Fields<Ts Config::*...>(group(std::move(name), build, pairs.member...), pairs.member...);
+}
+
+template <class Req, class ReqField, class T>
+Fields<T Config::*> one_field(std::string name, ReqField field, T Config::*member) {
+  return fields<Req>(std::move(name), from(field, member));
 }
 
 }  // namespace k40t::driver::setting_table

@@ -31,21 +31,11 @@ std::vector<SettingBinding> general_and_gimbal() {
       one_field<p::LaserPeriodicRangeRequest>(
           "periodic_ranging", &p::LaserPeriodicRangeRequest::enable, &C::periodic_ranging)
           .write_only(),
-      group(
-          "photo_mode",
-          [](const C& c) {
-            p::PhotoSettingsRequest r;
-            r.photo_mode = static_cast<p::PhotoMode>(c.photo_mode);
-            r.time_lapse_interval_s = static_cast<uint8_t>(c.timelapse_interval);
-            r.burst_count = static_cast<uint8_t>(c.burst_count);
-            return r;
-          },
-          &C::photo_mode, &C::timelapse_interval, &C::burst_count)
-          .reads_with<Camera>([](C& c, const Camera& s) {
-            c.photo_mode = static_cast<int>(s.photo_mode);
-            c.timelapse_interval = s.time_lapse_interval_s;
-            c.burst_count = s.burst_count;
-          })
+      fields<p::PhotoSettingsRequest>(
+          "photo_mode", from(&p::PhotoSettingsRequest::photo_mode, &C::photo_mode),
+          from(&p::PhotoSettingsRequest::time_lapse_interval_s, &C::timelapse_interval),
+          from(&p::PhotoSettingsRequest::burst_count, &C::burst_count))
+          .reads(&Camera::photo_mode, &Camera::time_lapse_interval_s, &Camera::burst_count)
           .service("set_photo_mode"),
       one_field<p::GimbalStabilisationRequest>(
           "stabilisation", &p::GimbalStabilisationRequest::enable, &C::stabilisation)
@@ -90,19 +80,10 @@ std::vector<SettingBinding> thermal() {
       one_field<p::ThermalContrastRequest>("thermal_contrast", &p::ThermalContrastRequest::contrast,
                                            &C::thermal_contrast)
           .reads(&Thermal::contrast),
-      group(
-          "thermal_denoise",
-          [](const C& c) {
-            p::ThermalDenoiseRequest r;
-            r.denoise_on = c.thermal_denoise;
-            r.denoise_level = static_cast<uint8_t>(c.thermal_denoise_level);
-            return r;
-          },
-          &C::thermal_denoise, &C::thermal_denoise_level)
-          .reads_with<Thermal>([](C& c, const Thermal& t) {
-            c.thermal_denoise = t.denoise_on;
-            c.thermal_denoise_level = t.denoise_level;
-          }),
+      fields<p::ThermalDenoiseRequest>(
+          "thermal_denoise", from(&p::ThermalDenoiseRequest::denoise_on, &C::thermal_denoise),
+          from(&p::ThermalDenoiseRequest::denoise_level, &C::thermal_denoise_level))
+          .reads(&Thermal::denoise_on, &Thermal::denoise_level),
       one_field<p::ThermalEnhancementRequest>("thermal_enhancement",
                                               &p::ThermalEnhancementRequest::enhancement_level,
                                               &C::thermal_enhancement)
@@ -112,20 +93,13 @@ std::vector<SettingBinding> thermal() {
       one_field<p::ThermalOverlayRequest>("thermal_overlay", &p::ThermalOverlayRequest::overlay_on,
                                           &C::thermal_overlay)
           .write_only(),
-      group(
-          "temperature_alarms",
-          [](const C& c) {
-            p::ThermalAlarmsRequest r;
-            r.high_alarm_on = c.high_alarm;
-            r.high_alarm_degC = c.high_alarm_degC;
-            r.low_alarm_on = c.low_alarm;
-            r.low_alarm_degC = c.low_alarm_degC;
-            r.difference_alarm_on = c.difference_alarm;
-            r.difference_alarm_degC = c.difference_alarm_degC;
-            return r;
-          },
-          &C::high_alarm, &C::high_alarm_degC, &C::low_alarm, &C::low_alarm_degC,
-          &C::difference_alarm, &C::difference_alarm_degC)
+      fields<p::ThermalAlarmsRequest>(
+          "temperature_alarms", from(&p::ThermalAlarmsRequest::high_alarm_on, &C::high_alarm),
+          from(&p::ThermalAlarmsRequest::high_alarm_degC, &C::high_alarm_degC),
+          from(&p::ThermalAlarmsRequest::low_alarm_on, &C::low_alarm),
+          from(&p::ThermalAlarmsRequest::low_alarm_degC, &C::low_alarm_degC),
+          from(&p::ThermalAlarmsRequest::difference_alarm_on, &C::difference_alarm),
+          from(&p::ThermalAlarmsRequest::difference_alarm_degC, &C::difference_alarm_degC))
           .reads_with<Thermal>([](C& c, const Thermal& t) {
             // A switched-off alarm carries no threshold (-273.2 degC on the wire): keep the
             // parameter's.
@@ -136,21 +110,14 @@ std::vector<SettingBinding> thermal() {
             c.difference_alarm = t.difference_alarm_on;
             if (t.difference_alarm_on) c.difference_alarm_degC = t.difference_alarm_degC;
           }),
-      group(
+      fields<p::ThermalThresholdAlarmRequest>(
           "threshold_alarm",
-          [](const C& c) {
-            p::ThermalThresholdAlarmRequest r;
-            r.threshold_alarm_on = c.threshold_alarm;
-            r.threshold_reference_degC = c.threshold_reference_degC;
-            r.threshold_float_degC = c.threshold_float_degC;
-            return r;
-          },
-          &C::threshold_alarm, &C::threshold_reference_degC, &C::threshold_float_degC)
-          .reads_with<Thermal>([](C& c, const Thermal& t) {
-            c.threshold_alarm = t.threshold_alarm_on;
-            c.threshold_reference_degC = t.threshold_reference_degC;
-            c.threshold_float_degC = t.threshold_float_degC;
-          }),
+          from(&p::ThermalThresholdAlarmRequest::threshold_alarm_on, &C::threshold_alarm),
+          from(&p::ThermalThresholdAlarmRequest::threshold_reference_degC,
+               &C::threshold_reference_degC),
+          from(&p::ThermalThresholdAlarmRequest::threshold_float_degC, &C::threshold_float_degC))
+          .reads(&Thermal::threshold_alarm_on, &Thermal::threshold_reference_degC,
+                 &Thermal::threshold_float_degC),
   };
 }
 
@@ -176,33 +143,17 @@ std::vector<SettingBinding> visible() {
       one_field<p::VisibleAntiFlickerRequest>(
           "anti_flicker", &p::VisibleAntiFlickerRequest::anti_flicker, &C::anti_flicker)
           .reads(&Visible::anti_flicker),
-      group(
+      fields<p::VisibleStrongLightRequest>(
           "strong_light_suppression",
-          [](const C& c) {
-            p::VisibleStrongLightRequest r;
-            r.strong_light_on = c.strong_light_suppression;
-            r.strong_light_value = static_cast<uint8_t>(c.strong_light_level);
-            return r;
-          },
-          &C::strong_light_suppression, &C::strong_light_level)
-          .reads_with<Visible>([](C& c, const Visible& v) {
-            c.strong_light_suppression = v.strong_light_on;
-            c.strong_light_level = v.strong_light_value;
-          })
+          from(&p::VisibleStrongLightRequest::strong_light_on, &C::strong_light_suppression),
+          from(&p::VisibleStrongLightRequest::strong_light_value, &C::strong_light_level))
+          .reads(&Visible::strong_light_on, &Visible::strong_light_value)
           .sent_first_when_off(&C::strong_light_suppression),
-      group(
+      fields<p::VisibleBacklightRequest>(
           "backlight_compensation",
-          [](const C& c) {
-            p::VisibleBacklightRequest r;
-            r.backlight_on = c.backlight_compensation;
-            r.backlight_value = static_cast<uint8_t>(c.backlight_level);
-            return r;
-          },
-          &C::backlight_compensation, &C::backlight_level)
-          .reads_with<Visible>([](C& c, const Visible& v) {
-            c.backlight_compensation = v.backlight_on;
-            c.backlight_level = v.backlight_value;
-          })
+          from(&p::VisibleBacklightRequest::backlight_on, &C::backlight_compensation),
+          from(&p::VisibleBacklightRequest::backlight_value, &C::backlight_level))
+          .reads(&Visible::backlight_on, &Visible::backlight_value)
           .sent_first_when_off(&C::backlight_compensation),
       one_field<p::VisibleAeLockRequest>("ae_lock", &p::VisibleAeLockRequest::ae_lock_on,
                                          &C::ae_lock)

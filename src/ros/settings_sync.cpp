@@ -33,8 +33,7 @@ session::AckResult SettingsSync::apply(const SettingBinding& binding, Config& ne
     ++state_.changes_applied;
     state_.last_refusal.clear();
     binding.copy(current_, next);
-    set_by_user_.insert(binding.name);
-    written_during_read_.insert(binding.name);
+    writes_.written(binding.name);
   } else {
     ++state_.changes_refused;
     state_.last_refusal = binding.name + ": " + result.message;
@@ -60,7 +59,7 @@ SettingsState SettingsSync::read_from_pod() {
   std::lock_guard<std::mutex> one_read(read_mutex_);
   {
     boost::recursive_mutex::scoped_lock server_lock(server_mutex_);
-    written_during_read_.clear();
+    writes_.read_started();
   }
   const SettingsRead read = reader_.read();
   std::string message = read.message;
@@ -68,15 +67,12 @@ SettingsState SettingsSync::read_from_pod() {
     boost::recursive_mutex::scoped_lock server_lock(server_mutex_);
     Config config = current_;
     absorb(config, read.reports());
-    // A setting written meanwhile (a service called as soon as it exists) was accepted by the
-    // pod after, or while, its value was read: the written value is the pod's now.
-    for (const std::string& name : written_during_read_) find_binding(name)->copy(config, current_);
+    writes_.keep_written(setting_bindings(), config, current_);
     current_ = config;
     server_->updateConfig(config);
-    for (const SettingBinding& binding : setting_bindings()) {
-      if (binding.readable() || set_by_user_.count(binding.name) == 0) continue;
-      const session::AckResult result = binding.apply(driver_, current_);
-      if (!result.ok()) message += "; " + binding.name + " not restored: " + result.message;
+    for (const SettingBinding* binding : writes_.to_resend(setting_bindings())) {
+      const session::AckResult result = binding->apply(driver_, current_);
+      if (!result.ok()) message += "; " + binding->name + " not restored: " + result.message;
     }
   }
   std::lock_guard<std::mutex> lock(mutex_);

@@ -12,8 +12,6 @@ namespace k40t::driver {
 
 namespace {
 
-constexpr StampNs kSecondNs = 1000000000;
-
 ros::Time to_ros_time(StampNs stamp) {
   ros::Time t;
   t.fromNSec(stamp > 0 ? static_cast<uint64_t>(stamp) : 0);
@@ -45,16 +43,13 @@ TargetLocator::TargetLocator(ros::NodeHandle nh, const ros::NodeHandle& private_
   driver.on<protocol::LaserRangeAck>(range);
   driver.on<protocol::LaserPeriodicRangeStatus>(range);
   driver.on<protocol::TargetGpsAck>(
-      [this](const protocol::TargetGpsAck& m, StampNs s) { on_pod_target(m, s); });
+      [this](const protocol::TargetGpsAck& m, StampNs s) { record_.pod_target(m, s); });
   locate_pixel_ = nh.advertiseService("locate_pixel", &TargetLocator::locate_pixel, this);
   diagnostics.add_task("geolocation", [this](auto& stat) { diagnose(stat); });
 }
 
 void TargetLocator::on_range(double distance_m, StampNs stamp) {
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    last_range_ = {distance_m, stamp};
-  }
+  record_.range(distance_m);
   const ros::Time t = to_ros_time(stamp);
   Result<geo::VehiclePose> pose = vehicle_pose(driver_.vehicle_state_at(stamp));
   Result<geo::BodyRay> ray = pose ? ray_in_vehicle(tf_, vehicle_frame_, ids_.laser, t, {1, 0, 0})
@@ -62,41 +57,21 @@ void TargetLocator::on_range(double distance_m, StampNs stamp) {
   Result<geo::Located> located =
       ray ? geo::locate_at_range(pose.value(), ray.value(), distance_m, uncertainty_)
           : Result<geo::Located>::fail(ray.error());
-  std::lock_guard<std::mutex> lock(mutex_);
   if (!located) {
-    last_error_ = located.error();
+    record_.not_located(located.error());
     return;
   }
-  last_error_.clear();
-  ++located_;
-  last_local_ = {located->position, stamp};
-  compare_locked();
+  record_.located(located->position, stamp);
   target_local_.publish(to_nav_sat_fix(located.value(), t, ids_.laser));
 }
 
-void TargetLocator::on_pod_target(const protocol::TargetGpsAck& target, StampNs stamp) {
-  if (target.code != protocol::ResponseCode::kOk) return;
-  const Result<double> h = geo::Geoid::egm96().ellipsoid_from_msl(
-      target.latitude_deg, target.longitude_deg, target.altitude_m);
-  if (!h) return;
-  std::lock_guard<std::mutex> lock(mutex_);
-  last_pod_ = {{target.latitude_deg, target.longitude_deg, h.value()}, stamp};
-  compare_locked();
-}
-
-void TargetLocator::compare_locked() {
-  if (!last_local_ || !last_pod_) return;
-  if (std::llabs(last_local_->second - last_pod_->second) > kSecondNs) return;
-  disagreement_m_ = geo::distance_m(last_local_->first, last_pod_->first);
-}
-
 void TargetLocator::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  stat.add("laser targets located", located_);
-  stat.add("last error", last_error_.empty() ? "none" : last_error_);
-  stat.add("distance to the pod's laser target (m)", disagreement_m_ ? *disagreement_m_ : -1.0);
-  if (!last_error_.empty() && located_ == 0) {
-    stat.summary(diagnostic_msgs::DiagnosticStatus::OK, "no laser target located: " + last_error_);
+  const LaserTargetRecord::Summary s = record_.summary();
+  stat.add("laser targets located", s.located);
+  stat.add("last error", s.last_error.empty() ? "none" : s.last_error);
+  stat.add("distance to the pod's laser target (m)", s.disagreement_m ? *s.disagreement_m : -1.0);
+  if (!s.last_error.empty() && s.located == 0) {
+    stat.summary(diagnostic_msgs::DiagnosticStatus::OK, "no laser target located: " + s.last_error);
   } else {
     stat.summary(diagnostic_msgs::DiagnosticStatus::OK, "ok");
   }
@@ -104,11 +79,7 @@ void TargetLocator::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat) 
 
 bool TargetLocator::locate_pixel(k40t_driver::LocatePixel::Request& req,
                                  k40t_driver::LocatePixel::Response& res) {
-  std::optional<double> range_m;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (last_range_) range_m = last_range_->first;
-  }
+  const std::optional<double> range_m = record_.last_range_m();
   res.success = false;
   if (!std::isfinite(req.u) || !std::isfinite(req.v)) {
     res.message = "u, v must be finite";

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "k40t_driver/codec/enum_names.h"
+
 namespace k40t::sim {
 
 namespace {
@@ -13,32 +15,24 @@ bool is_one_of(int value, std::initializer_list<int> allowed) {
   return std::find(allowed.begin(), allowed.end(), value) != allowed.end();
 }
 
+// What a photo that cannot be taken reports for its refusal (a plain failure: by the card's
+// state); any refusal not listed: failed.
 PhotoState photo_state_for(Outcome refusal, SdState card) {
-  switch (refusal) {
-    case Outcome::kNoSdCard:
-      return PhotoState::kNoSdCard;
-    case Outcome::kNoSpace:
-      return PhotoState::kSdFull;
-    case Outcome::kFailure:
-      return card == SdState::kFormatError ? PhotoState::kFormatError : PhotoState::kCardAbnormal;
-    default:
-      return PhotoState::kFailed;
-  }
+  if (refusal == Outcome::kFailure)
+    return card == SdState::kFormatError ? PhotoState::kFormatError : PhotoState::kCardAbnormal;
+  static constexpr EnumTo<Outcome, PhotoState> kStates[] = {
+      {Outcome::kNoSdCard, PhotoState::kNoSdCard}, {Outcome::kNoSpace, PhotoState::kSdFull}};
+  return lookup(kStates, refusal, PhotoState::kFailed);
 }
 
+// What a recording that cannot start reports for the card's state; any other: card abnormal.
 RecordState record_state_for(SdState card) {
-  switch (card) {
-    case SdState::kAbsent:
-      return RecordState::kNoSdCard;
-    case SdState::kFull:
-      return RecordState::kSdFull;
-    case SdState::kFormatError:
-      return RecordState::kFormatError;
-    case SdState::kSlow:
-      return RecordState::kSlowCard;
-    default:
-      return RecordState::kCardAbnormal;
-  }
+  static constexpr EnumTo<SdState, RecordState> kStates[] = {
+      {SdState::kAbsent, RecordState::kNoSdCard},
+      {SdState::kFull, RecordState::kSdFull},
+      {SdState::kFormatError, RecordState::kFormatError},
+      {SdState::kSlow, RecordState::kSlowCard}};
+  return lookup(kStates, card, RecordState::kCardAbnormal);
 }
 }  // namespace
 

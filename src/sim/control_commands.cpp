@@ -64,10 +64,12 @@ std::string run_clear(const Args&, ControlTarget& target) {
   return "ok " + target.faults().describe();
 }
 
-std::string run_corrupt(const Args& args, ControlTarget& target) {
+// "RATE", a probability, becomes the fault setting kRate (corrupt, drop-acks).
+template <double FaultSettings::*kRate>
+std::string run_rate(const Args& args, ControlTarget& target) {
   const auto rate = number(args[0], "RATE", 0, 1);
   if (!rate) return error(rate.error());
-  return change_faults(target, [&](FaultSettings& s) { s.corrupt_rate = *rate; });
+  return change_faults(target, [&](FaultSettings& s) { s.*kRate = *rate; });
 }
 
 std::string run_garbage(const Args& args, ControlTarget& target) {
@@ -79,12 +81,6 @@ std::string run_garbage(const Args& args, ControlTarget& target) {
     s.garbage_rate = *rate;
     s.garbage_max_bytes = static_cast<size_t>(*max);
   });
-}
-
-std::string run_drop_acks(const Args& args, ControlTarget& target) {
-  const auto rate = number(args[0], "RATE", 0, 1);
-  if (!rate) return error(rate.error());
-  return change_faults(target, [&](FaultSettings& s) { s.drop_ack_rate = *rate; });
 }
 
 std::string run_delay_acks(const Args& args, ControlTarget& target) {
@@ -246,9 +242,9 @@ const std::vector<Command>& commands() {
       {"help", "help", 0, 0, run_help},
       {"status", "status", 0, 0, run_status},
       {"clear", "clear", 0, 0, run_clear},
-      {"corrupt", "corrupt RATE", 1, 1, run_corrupt},
+      {"corrupt", "corrupt RATE", 1, 1, run_rate<&FaultSettings::corrupt_rate>},
       {"garbage", "garbage RATE [MAX]", 1, 2, run_garbage},
-      {"drop-acks", "drop-acks RATE", 1, 1, run_drop_acks},
+      {"drop-acks", "drop-acks RATE", 1, 1, run_rate<&FaultSettings::drop_ack_rate>},
       {"delay-acks", "delay-acks MS [RATE]", 1, 2, run_delay_acks},
       {"refuse", "refuse ID [CODE]", 1, 2, run_refuse},
       {"silence", "silence SECONDS", 1, 1, run_silence},

@@ -137,50 +137,52 @@ Result<p::Payload> periodic_range(const PodModel& pod, const p::CodecOptions& co
 struct EventEncoder {
   const p::CodecOptions& codec;
 
-  std::optional<OutgoingMessage> wrap(p::MessageId id, const Result<p::Payload>& payload) const {
+  template <class Frame>
+  std::optional<OutgoingMessage> send(const Frame& frame) const {
+    const Result<p::Payload> payload = encode(frame, codec);
     if (!payload) return std::nullopt;
-    return OutgoingMessage{id, *payload};
+    return OutgoingMessage{Frame::kId, *payload};
   }
+  // Photo, precise reshoot and record status frames begin with the lens and the state.
+  template <class Frame, class Event>
+  static Frame lens_and_state(const Event& e) {
+    Frame frame;
+    frame.lens = same_code<decltype(frame.lens)>(e.lens_mode);
+    frame.state = same_code<decltype(frame.state)>(e.state);
+    return frame;
+  }
+
   std::optional<OutgoingMessage> operator()(const ZoomStatusEvent& e) const {
     p::ZoomStatus frame;
     frame.progress = e.zooming ? p::ZoomProgress::kZooming : p::ZoomProgress::kDone;
-    return wrap(p::ZoomStatus::kId, encode(frame, codec));
+    return send(frame);
   }
   std::optional<OutgoingMessage> operator()(const PhotoStatusEvent& e) const {
-    if (e.precise) {
-      p::PreciseReshootStatus frame;
-      frame.lens = same_code<p::PhotoLensMode>(e.lens_mode);
-      frame.state = same_code<p::ReshootState>(e.state);
-      return wrap(p::PreciseReshootStatus::kId, encode(frame, codec));
-    }
-    p::PhotoStatus frame;
-    frame.lens = same_code<p::PhotoLensMode>(e.lens_mode);
-    frame.state = same_code<p::PhotoState>(e.state);
+    if (e.precise) return send(lens_and_state<p::PreciseReshootStatus>(e));
+    p::PhotoStatus frame = lens_and_state<p::PhotoStatus>(e);
     frame.burst_count = e.count;
-    return wrap(p::PhotoStatus::kId, encode(frame, codec));
+    return send(frame);
   }
   std::optional<OutgoingMessage> operator()(const RecordStatusEvent& e) const {
-    p::RecordStatus frame;
-    frame.lens = same_code<p::RecordLensMode>(e.lens_mode);
-    frame.state = same_code<p::RecordState>(e.state);
+    p::RecordStatus frame = lens_and_state<p::RecordStatus>(e);
     frame.recording_time_s = e.seconds;
-    return wrap(p::RecordStatus::kId, encode(frame, codec));
+    return send(frame);
   }
   std::optional<OutgoingMessage> operator()(const FormatStatusEvent& e) const {
     p::SdFormatStatus frame;
     frame.state = same_code<p::SdFormatState>(e.state);
-    return wrap(p::SdFormatStatus::kId, encode(frame, codec));
+    return send(frame);
   }
   std::optional<OutgoingMessage> operator()(const TfUpgradeStatusEvent& e) const {
     p::TfCardUpgradeStatus frame;
     frame.state = same_code<p::TfUpgradeState>(e.state);
-    return wrap(p::TfCardUpgradeStatus::kId, encode(frame, codec));
+    return send(frame);
   }
   std::optional<OutgoingMessage> operator()(const MaintenanceEvent& e) const {
     p::CameraUpgradeStatus report;
     report.state = same_code<p::CameraUpgradeState>(e.state);
     report.progress_percent = e.progress;
-    return wrap(p::CameraUpgradeStatus::kId, encode(report, codec));
+    return send(report);
   }
   std::optional<OutgoingMessage> operator()(const GpsRequestEvent&) const { return std::nullopt; }
 };

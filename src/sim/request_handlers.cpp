@@ -3,30 +3,22 @@
 #include <algorithm>
 
 #include "handler_support.h"
+#include "k40t_driver/codec/enum_names.h"
 
 namespace k40t::sim {
 
 protocol::ResponseCode outcome_code(Outcome outcome) {
   using protocol::ResponseCode;
-  switch (outcome) {
-    case Outcome::kOk:
-      return ResponseCode::kOk;
-    case Outcome::kFailure:
-      return ResponseCode::kFailure;
-    case Outcome::kBusy:
-      return ResponseCode::kBusy;
-    case Outcome::kNoSpace:
-      return ResponseCode::kNoSpace;
-    case Outcome::kRecording:
-      return ResponseCode::kRecording;
-    case Outcome::kCameraOpenFailed:
-      return ResponseCode::kCameraOpenFailed;
-    case Outcome::kPhotoInProgress:
-      return ResponseCode::kPhotoInProgress;
-    case Outcome::kNoSdCard:
-      return ResponseCode::kNoSdCard;
-  }
-  return ResponseCode::kUnknownError;
+  static constexpr EnumTo<Outcome, ResponseCode> kCodes[] = {
+      {Outcome::kOk, ResponseCode::kOk},
+      {Outcome::kFailure, ResponseCode::kFailure},
+      {Outcome::kBusy, ResponseCode::kBusy},
+      {Outcome::kNoSpace, ResponseCode::kNoSpace},
+      {Outcome::kRecording, ResponseCode::kRecording},
+      {Outcome::kCameraOpenFailed, ResponseCode::kCameraOpenFailed},
+      {Outcome::kPhotoInProgress, ResponseCode::kPhotoInProgress},
+      {Outcome::kNoSdCard, ResponseCode::kNoSdCard}};
+  return lookup(kCodes, outcome, ResponseCode::kUnknownError);
 }
 
 namespace handlers {

@@ -4,24 +4,16 @@
 #include <utility>
 #include <vector>
 
+#include "k40t_driver/codec/enum_names.h"
+
 namespace k40t::sim {
 
 const char* to_string(SdState state) {
-  switch (state) {
-    case SdState::kNormal:
-      return "normal";
-    case SdState::kAbnormal:
-      return "abnormal";
-    case SdState::kSlow:
-      return "slow";
-    case SdState::kAbsent:
-      return "absent";
-    case SdState::kFull:
-      return "full";
-    case SdState::kFormatError:
-      return "format error";
-  }
-  return "?";
+  static constexpr EnumName<SdState> kNames[] = {
+      {SdState::kNormal, "normal"}, {SdState::kAbnormal, "abnormal"},
+      {SdState::kSlow, "slow"},     {SdState::kAbsent, "absent"},
+      {SdState::kFull, "full"},     {SdState::kFormatError, "format error"}};
+  return name_in(kNames, state);
 }
 
 SdState SdCard::state() const {

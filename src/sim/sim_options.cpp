@@ -18,13 +18,51 @@ Result<double> parse_number(const std::string& option, const std::string& text, 
 
 using OptionSpec = sim::OptionSpec<SimOptions>;
 
-// Sets a double field from a number within [lo, hi].
-Status set_number(double& field, const std::string& option, const std::string& value, double lo,
-                  double hi) {
-  const auto v = parse_number(option, value, lo, hi);
-  if (!v) return v.status();
-  field = *v;
-  return Status::ok();
+// Where an option writes: the field of the options it sets.
+template <class T>
+using FieldOf = T& (*)(SimOptions&);
+
+// An option whose number within [lo, hi] becomes `field`, converted to its type.
+template <class T>
+OptionSpec number_option(const char* name, const char* argument, const char* help, double lo,
+                         double hi, FieldOf<T> field) {
+  return {name, argument, help,
+          [=](SimOptions& o, const std::string& option, const std::string& v) {
+            const auto n = parse_number(option, v, lo, hi);
+            if (!n) return n.status();
+            field(o) = static_cast<T>(*n);
+            return Status::ok();
+          }};
+}
+
+OptionSpec byte_order_option(const char* name, const char* argument, const char* help,
+                             FieldOf<protocol::ByteOrder> field) {
+  return {name, argument, help,
+          [=](SimOptions& o, const std::string& option, const std::string& v) {
+            const auto order = protocol::parse_byte_order(v);
+            if (!order) return Status::fail(option + ": " + order.error());
+            field(o) = *order;
+            return Status::ok();
+          }};
+}
+
+// "AT:AMOUNT": a fault of `kind` scheduled AT seconds after the start.
+OptionSpec scheduled_option(const char* name, const char* argument, const char* help,
+                            ScheduledFault::Kind kind, double max_amount) {
+  return {name, argument, help,
+          [=](SimOptions& o, const std::string& option, const std::string& v) {
+            const auto f = parse_scheduled_fault(option, v, kind, max_amount);
+            if (!f) return f.status();
+            o.scheduled.push_back(*f);
+            return Status::ok();
+          }};
+}
+
+OptionSpec flag_option(const char* name, const char* help, FieldOf<bool> field) {
+  return {name, nullptr, help, [=](SimOptions& o, const std::string&, const std::string&) {
+            field(o) = true;
+            return Status::ok();
+          }};
 }
 
 const std::vector<OptionSpec>& option_table() {
@@ -51,62 +89,40 @@ const std::vector<OptionSpec>& option_table() {
          o.crc_coverage = *c;
          return Status::ok();
        }},
-      {"--ack-byte-order", "big|little",
-       "docs/protocol/decisions.md#a2: byte order of ACK fields (default big)",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         const auto order = protocol::parse_byte_order(v);
-         if (!order) return Status::fail(option + ": " + order.error());
-         o.codec.ack_byte_order = *order;
-         return Status::ok();
-       }},
-      {"--laser-status-byte-order", "little|big",
-       "byte order of status frame 0x020406 (default little, section 2.1)",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         const auto order = protocol::parse_byte_order(v);
-         if (!order) return Status::fail(option + ": " + order.error());
-         o.codec.laser_status_byte_order = *order;
-         return Status::ok();
-       }},
-      {"--angle-scale", "N",
-       "docs/protocol/decisions.md#a4: 0x000012 angles are degrees x N (default 100)",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         const auto n = parse_number(option, v, 1, 1000);
-         if (!n) return n.status();
-         o.codec.angle_command_scale = static_cast<int>(*n);
-         return Status::ok();
-       }},
-      {"--gimbal-system-id", "N",
-       "docs/protocol/decisions.md#a3: system id the gimbal answers from (default 3)",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         const auto n = parse_number(option, v, 1, 255);
-         if (!n) return n.status();
-         o.codec.gimbal_address.system = static_cast<uint8_t>(*n);
-         return Status::ok();
-       }},
-      {"--ground-height", "M", "flat ground this far below the pod (default 30 m)",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         return set_number(o.pod.world.ground_height_m, option, v, 1.0, 10000.0);
-       }},
-      {"--velocity-north", "M/S", "the vehicle flies north at this speed (default 0)",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         return set_number(o.pod.vehicle.velocity_north_m_s, option, v, -100.0, 100.0);
-       }},
-      {"--velocity-east", "M/S", "the vehicle flies east at this speed (default 0)",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         return set_number(o.pod.vehicle.velocity_east_m_s, option, v, -100.0, 100.0);
-       }},
-      {"--gps-delay", "S", "the GPS request leaves this long after its photo (default 0)",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         return set_number(o.gps_request_delay_s, option, v, 0.0, 5.0);
-       }},
-      {"--hot-object-temp", "DEGC", "temperature of the hot object (default 85)",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         return set_number(o.pod.world.hot.temperature_degC, option, v, -40.0, 2000.0);
-       }},
-      {"--sd-capacity-mb", "MB", "SD card size (default 65536)",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         return set_number(o.pod.camera.sd.capacity_mb, option, v, 64.0, 655350.0);
-       }},
+      byte_order_option(
+          "--ack-byte-order", "big|little",
+          "docs/protocol/decisions.md#a2: byte order of ACK fields (default big)",
+          [](SimOptions& o) -> protocol::ByteOrder& { return o.codec.ack_byte_order; }),
+      byte_order_option(
+          "--laser-status-byte-order", "little|big",
+          "byte order of status frame 0x020406 (default little, section 2.1)",
+          [](SimOptions& o) -> protocol::ByteOrder& { return o.codec.laser_status_byte_order; }),
+      number_option<int>(
+          "--angle-scale", "N",
+          "docs/protocol/decisions.md#a4: 0x000012 angles are degrees x N (default 100)", 1, 1000,
+          [](SimOptions& o) -> int& { return o.codec.angle_command_scale; }),
+      number_option<uint8_t>(
+          "--gimbal-system-id", "N",
+          "docs/protocol/decisions.md#a3: system id the gimbal answers from (default 3)", 1, 255,
+          [](SimOptions& o) -> uint8_t& { return o.codec.gimbal_address.system; }),
+      number_option<double>("--ground-height", "M",
+                            "flat ground this far below the pod (default 30 m)", 1.0, 10000.0,
+                            [](SimOptions& o) -> double& { return o.pod.world.ground_height_m; }),
+      number_option<double>(
+          "--velocity-north", "M/S", "the vehicle flies north at this speed (default 0)", -100.0,
+          100.0, [](SimOptions& o) -> double& { return o.pod.vehicle.velocity_north_m_s; }),
+      number_option<double>(
+          "--velocity-east", "M/S", "the vehicle flies east at this speed (default 0)", -100.0,
+          100.0, [](SimOptions& o) -> double& { return o.pod.vehicle.velocity_east_m_s; }),
+      number_option<double>("--gps-delay", "S",
+                            "the GPS request leaves this long after its photo (default 0)", 0.0,
+                            5.0, [](SimOptions& o) -> double& { return o.gps_request_delay_s; }),
+      number_option<double>(
+          "--hot-object-temp", "DEGC", "temperature of the hot object (default 85)", -40.0, 2000.0,
+          [](SimOptions& o) -> double& { return o.pod.world.hot.temperature_degC; }),
+      number_option<double>("--sd-capacity-mb", "MB", "SD card size (default 65536)", 64.0,
+                            655350.0,
+                            [](SimOptions& o) -> double& { return o.pod.camera.sd.capacity_mb; }),
       {"--sd", "CONDITION",
        "start with the SD card absent, fill(ed), abnormal, slow or in format-error",
        [](SimOptions& o, const std::string& option, const std::string& v) {
@@ -118,67 +134,35 @@ const std::vector<OptionSpec>& option_table() {
          o.sd_condition = v;
          return Status::ok();
        }},
-      {"--single-shot-status", nullptr,
-       "send photo status frames for single shots too (the document sends none)",
-       [](SimOptions& o, const std::string&, const std::string&) {
-         o.pod.camera.single_shot_status = true;
-         return Status::ok();
-       }},
-      {"--corrupt-rate", "P", "probability per byte sent of a flipped bit",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         return set_number(o.faults.corrupt_rate, option, v, 0.0, 1.0);
-       }},
-      {"--garbage-rate", "P", "probability per frame of random bytes before it",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         return set_number(o.faults.garbage_rate, option, v, 0.0, 1.0);
-       }},
-      {"--garbage-max", "N", "at most N garbage bytes at a time (default 16)",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         const auto n = parse_number(option, v, 1, 64);
-         if (!n) return n.status();
-         o.faults.garbage_max_bytes = static_cast<size_t>(*n);
-         return Status::ok();
-       }},
-      {"--drop-ack-rate", "P", "probability that a request gets no ACK",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         return set_number(o.faults.drop_ack_rate, option, v, 0.0, 1.0);
-       }},
-      {"--delay-ack-ms", "MS", "send ACKs this late",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         return set_number(o.faults.delay_ack_ms, option, v, 0.0, 60000.0);
-       }},
-      {"--delay-ack-rate", "P", "probability that an ACK is delayed (default 1)",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         return set_number(o.faults.delay_ack_rate, option, v, 0.0, 1.0);
-       }},
-      {"--silence", "AT:S", "send nothing for S seconds, AT seconds after the start",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         const auto f = parse_scheduled_fault(option, v, ScheduledFault::Kind::kSilence, 3600);
-         if (!f) return f.status();
-         o.scheduled.push_back(*f);
-         return Status::ok();
-       }},
-      {"--disconnect", "AT:S", "close the link for S seconds, AT seconds after the start",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         const auto f = parse_scheduled_fault(option, v, ScheduledFault::Kind::kDisconnect, 3600);
-         if (!f) return f.status();
-         o.scheduled.push_back(*f);
-         return Status::ok();
-       }},
-      {"--seq-jump", "AT:N", "skip N sequence numbers, AT seconds after the start",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         const auto f = parse_scheduled_fault(option, v, ScheduledFault::Kind::kSequenceJump, 255);
-         if (!f) return f.status();
-         o.scheduled.push_back(*f);
-         return Status::ok();
-       }},
-      {"--seed", "N", "seed of the fault generator (default 1)",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         const auto n = parse_number(option, v, 0, 4294967295.0);
-         if (!n) return n.status();
-         o.seed = static_cast<uint32_t>(*n);
-         return Status::ok();
-       }},
+      flag_option("--single-shot-status",
+                  "send photo status frames for single shots too (the document sends none)",
+                  [](SimOptions& o) -> bool& { return o.pod.camera.single_shot_status; }),
+      number_option<double>("--corrupt-rate", "P", "probability per byte sent of a flipped bit",
+                            0.0, 1.0,
+                            [](SimOptions& o) -> double& { return o.faults.corrupt_rate; }),
+      number_option<double>("--garbage-rate", "P",
+                            "probability per frame of random bytes before it", 0.0, 1.0,
+                            [](SimOptions& o) -> double& { return o.faults.garbage_rate; }),
+      number_option<size_t>("--garbage-max", "N", "at most N garbage bytes at a time (default 16)",
+                            1, 64,
+                            [](SimOptions& o) -> size_t& { return o.faults.garbage_max_bytes; }),
+      number_option<double>("--drop-ack-rate", "P", "probability that a request gets no ACK", 0.0,
+                            1.0, [](SimOptions& o) -> double& { return o.faults.drop_ack_rate; }),
+      number_option<double>("--delay-ack-ms", "MS", "send ACKs this late", 0.0, 60000.0,
+                            [](SimOptions& o) -> double& { return o.faults.delay_ack_ms; }),
+      number_option<double>("--delay-ack-rate", "P",
+                            "probability that an ACK is delayed (default 1)", 0.0, 1.0,
+                            [](SimOptions& o) -> double& { return o.faults.delay_ack_rate; }),
+      scheduled_option("--silence", "AT:S",
+                       "send nothing for S seconds, AT seconds after the start",
+                       ScheduledFault::Kind::kSilence, 3600),
+      scheduled_option("--disconnect", "AT:S",
+                       "close the link for S seconds, AT seconds after the start",
+                       ScheduledFault::Kind::kDisconnect, 3600),
+      scheduled_option("--seq-jump", "AT:N", "skip N sequence numbers, AT seconds after the start",
+                       ScheduledFault::Kind::kSequenceJump, 255),
+      number_option<uint32_t>("--seed", "N", "seed of the fault generator (default 1)", 0,
+                              4294967295.0, [](SimOptions& o) -> uint32_t& { return o.seed; }),
       {"--capture", "PREFIX",
        "record every byte to PREFIX.tx.bin (sent) and PREFIX.rx.bin (received)",
        [](SimOptions& o, const std::string& option, const std::string& v) {
@@ -205,16 +189,9 @@ const std::vector<OptionSpec>& option_table() {
          o.rtsp_port = static_cast<int>(*port);
          return Status::ok();
        }},
-      {"--verbose", nullptr, "print every frame sent and received",
-       [](SimOptions& o, const std::string&, const std::string&) {
-         o.verbose = true;
-         return Status::ok();
-       }},
-      {"--help", nullptr, "this text",
-       [](SimOptions& o, const std::string&, const std::string&) {
-         o.help = true;
-         return Status::ok();
-       }},
+      flag_option("--verbose", "print every frame sent and received",
+                  [](SimOptions& o) -> bool& { return o.verbose; }),
+      flag_option("--help", "this text", [](SimOptions& o) -> bool& { return o.help; }),
   };
   return kOptions;
 }

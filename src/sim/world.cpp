@@ -3,20 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include "k40t_driver/codec/enum_names.h"
+
 namespace k40t::sim {
 
 const char* to_string(Surface surface) {
-  switch (surface) {
-    case Surface::kSky:
-      return "sky";
-    case Surface::kGround:
-      return "ground";
-    case Surface::kHotObject:
-      return "hot object";
-    case Surface::kColdObject:
-      return "cold object";
-  }
-  return "?";
+  static constexpr EnumName<Surface> kNames[] = {{Surface::kSky, "sky"},
+                                                 {Surface::kGround, "ground"},
+                                                 {Surface::kHotObject, "hot object"},
+                                                 {Surface::kColdObject, "cold object"}};
+  return name_in(kNames, surface);
 }
 
 Vec3 World::hot_object_centre() const {

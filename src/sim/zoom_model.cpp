@@ -57,20 +57,22 @@ Outcome ZoomModel::zoom_control(ContinuousZoom command) {
 Outcome ZoomModel::focus(FocusCommand command, const FocusArea& area) {
   constexpr int kStreamWidthPx = 1920;  // the corners are stream pixels (section 3.2.4.18)
   constexpr int kStreamHeightPx = 1080;
+  // Auto focus runs for focus_time_s, on `on` or on the whole frame.
+  const auto start_focus = [this](std::optional<FocusArea> on) {
+    manual_focus_ = false;
+    focus_left_s_ = config_.focus_time_s;
+    focus_area_ = on;
+  };
   switch (command) {
     case FocusCommand::kArea:
       if (area.left < 0 || area.top < 0 || area.right <= area.left || area.bottom <= area.top ||
           area.right > kStreamWidthPx || area.bottom > kStreamHeightPx)
         return Outcome::kFailure;
-      manual_focus_ = false;
-      focus_left_s_ = config_.focus_time_s;
-      focus_area_ = area;
+      start_focus(area);
       break;
     case FocusCommand::kAuto:
     case FocusCommand::kOneTouch:
-      manual_focus_ = false;
-      focus_left_s_ = config_.focus_time_s;
-      focus_area_.reset();
+      start_focus(std::nullopt);
       break;
     case FocusCommand::kManualNear:
     case FocusCommand::kManualFar:

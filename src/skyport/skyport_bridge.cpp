@@ -76,6 +76,18 @@ AckCode SkyportBridge::unsupported() {
 
 // --- 0x01 payload state --------------------------------------------------------------------------
 
+namespace {
+// Cmd answered with an ACK whose one field is `value`, fixed by the options.
+template <class Cmd, class Field, class V>
+void answer_with(Session& session, Field field, const V& value) {
+  session.handle<Cmd>([field, value](const Cmd&) {
+    typename Cmd::Ack ack;
+    ack.*field = value;
+    return ack;
+  });
+}
+}  // namespace
+
 void SkyportBridge::register_payload_state() {
   session_.handle<IdentityVerification>([this](const IdentityVerification& c) {
     IdentityVerificationAck ack = answer_identity_verification(options_.app_key, c);
@@ -84,11 +96,7 @@ void SkyportBridge::register_payload_state() {
     if (ack.code != AckCode::kOk) ++stats_.identity_refused;
     return ack;
   });
-  session_.handle<GetPsdkVersion>([this](const GetPsdkVersion&) {
-    PsdkVersionAck ack;
-    ack.version = options_.firmware;
-    return ack;
-  });
+  answer_with<GetPsdkVersion>(session_, &PsdkVersionAck::version, options_.firmware);
   session_.handle<Handshake>([](const Handshake& c) {
     HandshakeAck ack;
     ack.data = c.data;
@@ -101,16 +109,8 @@ void SkyportBridge::register_payload_state() {
     ack.developer_account = options_.developer_account;
     return ack;
   });
-  session_.handle<GetProductAlias>([this](const GetProductAlias&) {
-    ProductAliasAck ack;
-    ack.alias = options_.alias;
-    return ack;
-  });
-  session_.handle<GetSkyportVersion>([this](const GetSkyportVersion&) {
-    SkyportVersionAck ack;
-    ack.version = options_.skyport_version;
-    return ack;
-  });
+  answer_with<GetProductAlias>(session_, &ProductAliasAck::alias, options_.alias);
+  answer_with<GetSkyportVersion>(session_, &SkyportVersionAck::version, options_.skyport_version);
 }
 
 // --- 0x03/0x03 battery and the power-off hand-shake ----------------------------------------------

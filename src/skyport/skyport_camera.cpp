@@ -34,9 +34,7 @@ void SkyportBridge::register_camera() {
   deferred<SetCameraWorkMode>([this](const SetCameraWorkMode& c) {
     return pod_code(pod_.set_video_mode(c.mode == CameraWorkMode::kRecordVideo), "work mode");
   });
-  session_.handle<GetCameraWorkMode>([this](const GetCameraWorkMode&) {
-    const PodSnapshot s = pod_.snapshot();
-    if (!s.have_camera) return refused<CameraWorkModeAck>(AckCode::kError);
+  from_snapshot<GetCameraWorkMode>(&PodSnapshot::have_camera, [](const PodSnapshot& s) {
     CameraWorkModeAck ack;
     ack.mode = s.video_mode ? CameraWorkMode::kRecordVideo : CameraWorkMode::kShootPhoto;
     return ack;
@@ -50,10 +48,8 @@ void SkyportBridge::register_camera() {
     photo_progress_.started(before, PhotoProgress::Clock::now());
     return pod_code(call, "shoot photo");
   });
-  session_.handle<GetShootPhotoState>([this](const GetShootPhotoState&) {
+  from_snapshot<GetShootPhotoState>(&PodSnapshot::have_camera, [this](const PodSnapshot& s) {
     // The pod reports no state for single shots: what the bridge saw of it (photo_progress.h).
-    const PodSnapshot s = pod_.snapshot();
-    if (!s.have_camera) return refused<ShootPhotoStateAck>(AckCode::kError);
     return photo_progress_.state(s, PhotoProgress::Clock::now());
   });
   // 3.4.5 by its length: a uint8 interval (document) or a uint16 one (DJI's headers, P30).
@@ -103,18 +99,14 @@ void SkyportBridge::register_camera() {
   deferred<RecordVideo>([this](const RecordVideo& c) {
     return capture_code(pod_.record(c.action == RecordAction::kStart), "record");
   });
-  session_.handle<GetRecordState>([this](const GetRecordState&) {
-    const PodSnapshot s = pod_.snapshot();
-    // record/status went silent while recording: the bridge cannot say, and does not guess.
-    if (!s.recording_known) return refused<RecordStateAck>(AckCode::kError);
+  // Unknown while record/status went silent during a recording.
+  from_snapshot<GetRecordState>(&PodSnapshot::recording_known, [](const PodSnapshot& s) {
     RecordStateAck ack;
     ack.recording = s.recording;
     ack.duration_s = s.recording ? s.record_duration_s : 0;
     return ack;
   });
-  session_.handle<GetSdCardInfo>([this](const GetSdCardInfo&) {
-    const PodSnapshot s = pod_.snapshot();
-    if (!s.have_camera) return refused<SdCardInfoAck>(AckCode::kError);
+  from_snapshot<GetSdCardInfo>(&PodSnapshot::have_camera, [this](const PodSnapshot& s) {
     SdCardInfoAck ack;
     ack.state.inserted = s.sd_state != kSdMissing;
     ack.state.formatted = s.sd_state == kSdOk || s.sd_state == kSdFull;

@@ -129,9 +129,7 @@ void SkyportBridge::register_gimbal() {
   });
   session_.handle<GetCalibrationProgress>(
       [this](const GetCalibrationProgress&) { return calibration_progress(pod_.snapshot()); });
-  session_.handle<GetGimbalAdditionalStatus>([this](const GetGimbalAdditionalStatus&) {
-    const PodSnapshot s = pod_.snapshot();
-    if (!s.have_joints) return refused<GimbalAdditionalStatusAck>(AckCode::kError);
+  from_snapshot<GetGimbalAdditionalStatus>(&PodSnapshot::have_joints, [](const PodSnapshot& s) {
     GimbalAdditionalStatusAck ack;
     ack.pitch_rate_deg_s = -s.pitch_rate_rad_s * kDegPerRad;
     ack.yaw_rate_deg_s = -s.yaw_rate_rad_s * kDegPerRad;

@@ -46,39 +46,35 @@ AckCode SkyportBridge::apply_zoom(double optical, double digital) {
   return code;
 }
 
+template <class Set, class Get, class Mode, class Send>
+void SkyportBridge::kept_mode(Mode SkyportBridge::*kept, Send send) {
+  deferred<Set>([this, kept, send](const Set& c) {
+    const AckCode code = send(c);
+    if (code == AckCode::kOk) {
+      std::lock_guard<std::mutex> lock(mutex_);  // Get reads it on the session thread
+      this->*kept = c.mode;
+    }
+    return code;
+  });
+  session_.handle<Get>([this, kept](const Get&) {
+    typename Get::Ack ack;
+    std::lock_guard<std::mutex> lock(mutex_);
+    ack.mode = this->*kept;
+    return ack;
+  });
+}
+
 void SkyportBridge::register_camera_lens() {
-  deferred<SetMeteringMode>([this](const SetMeteringMode& c) {
-    // The pod meters centre-weighted (1), by area (2) or average (3): no spot metering.
-    if (c.mode == MeteringMode::kSpot) return unsupported();
-    const AckCode code =
-        pod_code(pod_.set_metering(c.mode == MeteringMode::kCenter ? 1 : 3), "metering");
-    if (code == AckCode::kOk) {
-      std::lock_guard<std::mutex> lock(mutex_);  // GetMeteringMode reads it on the session thread
-      metering_ = c.mode;
-    }
-    return code;
-  });
-  session_.handle<GetMeteringMode>([this](const GetMeteringMode&) {
-    MeteringModeAck ack;
-    std::lock_guard<std::mutex> lock(mutex_);
-    ack.mode = metering_;
-    return ack;
-  });
-  deferred<SetFocusMode>([this](const SetFocusMode& c) {
+  kept_mode<SetMeteringMode, GetMeteringMode>(
+      &SkyportBridge::metering_, [this](const SetMeteringMode& c) {
+        // The pod meters centre-weighted (1), by area (2) or average (3): no spot metering.
+        if (c.mode == MeteringMode::kSpot) return unsupported();
+        return pod_code(pod_.set_metering(c.mode == MeteringMode::kCenter ? 1 : 3), "metering");
+      });
+  kept_mode<SetFocusMode, GetFocusMode>(&SkyportBridge::focus_mode_, [this](const SetFocusMode& c) {
     const bool autofocus = c.mode == FocusMode::kAuto;
-    const AckCode code = pod_code(
-        pod_.focus(autofocus ? PodFocus::kAuto : PodFocus::kManualStop, 0, 0, 0, 0), "focus mode");
-    if (code == AckCode::kOk) {
-      std::lock_guard<std::mutex> lock(mutex_);  // GetFocusMode reads it on the session thread
-      focus_mode_ = c.mode;
-    }
-    return code;
-  });
-  session_.handle<GetFocusMode>([this](const GetFocusMode&) {
-    FocusModeAck ack;
-    std::lock_guard<std::mutex> lock(mutex_);
-    ack.mode = focus_mode_;
-    return ack;
+    return pod_code(pod_.focus(autofocus ? PodFocus::kAuto : PodFocus::kManualStop, 0, 0, 0, 0),
+                    "focus mode");
   });
   deferred<SetFocusZone>([this](const SetFocusZone& c) {
     const double x = c.x * kStreamWidth, y = c.y * kStreamHeight;
@@ -139,9 +135,7 @@ void SkyportBridge::register_camera_lens() {
     ack.focal_length_mm = options_.tele_focal_length_mm * zoom_split(pod_.snapshot()).optical;
     return ack;
   });
-  session_.handle<GetOpticalZoomFactor>([this](const GetOpticalZoomFactor&) {
-    const PodSnapshot s = pod_.snapshot();
-    if (!s.have_visible) return refused<OpticalZoomFactorAck>(AckCode::kError);
+  from_snapshot<GetOpticalZoomFactor>(&PodSnapshot::have_visible, [this](const PodSnapshot& s) {
     OpticalZoomFactorAck ack;
     ack.factor_x = static_cast<float>(zoom_split(s).optical);
     return ack;

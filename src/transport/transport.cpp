@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "k40t_driver/codec/enum_names.h"
 #include "k40t_driver/transport/device_url.h"
 #include "k40t_driver/transport/fd_transport.h"
 #include "links.h"
@@ -32,17 +33,11 @@ const std::vector<SchemeEntry>& scheme_table() {
 }  // namespace
 
 const char* to_string(LinkState state) {
-  switch (state) {
-    case LinkState::kClosed:
-      return "closed";
-    case LinkState::kConnecting:
-      return "connecting";
-    case LinkState::kConnected:
-      return "connected";
-    case LinkState::kReconnecting:
-      return "reconnecting";
-  }
-  return "invalid link state";
+  static constexpr EnumName<LinkState> kNames[] = {{LinkState::kClosed, "closed"},
+                                                   {LinkState::kConnecting, "connecting"},
+                                                   {LinkState::kConnected, "connected"},
+                                                   {LinkState::kReconnecting, "reconnecting"}};
+  return name_in(kNames, state, "invalid link state");
 }
 
 std::vector<std::string> known_schemes() {

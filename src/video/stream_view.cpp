@@ -1,17 +1,13 @@
 #include "k40t_driver/video/stream_view.h"
 
+#include "k40t_driver/codec/enum_names.h"
+
 namespace k40t::video {
 
 const char* to_string(Lens lens) {
-  switch (lens) {
-    case Lens::kWide:
-      return "wide";
-    case Lens::kThermal:
-      return "thermal";
-    case Lens::kTele:
-      break;
-  }
-  return "tele";
+  static constexpr EnumName<Lens> kNames[] = {
+      {Lens::kWide, "wide"}, {Lens::kThermal, "thermal"}, {Lens::kTele, "tele"}};
+  return name_in(kNames, lens, "tele");
 }
 
 StreamView stream_view(std::optional<int> image_mode, cv::Size frame, Lens mode6_lens) {

@@ -15,7 +15,6 @@
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -25,6 +24,7 @@
 
 #include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/driver/pod_queries.h"
+#include "k40t_driver/driver/setting_writes.h"
 #include "k40t_driver/driver/settings_reader.h"
 #include "k40t_driver/driver/settings_state.h"
 #include "k40t_driver/protocol/messages/camera_reports.h"
@@ -59,10 +59,7 @@ class SettingsSync {
   std::unique_ptr<dynamic_reconfigure::Server<Config>> server_;
   Config current_;
   bool initialised_ = false;
-  std::set<std::string> set_by_user_;  // bindings applied through reconfigure (server mutex)
-  // Bindings applied while read_from_pod() was reading: what it read of them may predate the
-  // write, so the written value wins (server mutex).
-  std::set<std::string> written_during_read_;
+  SettingWrites writes_;   // what was written, and during which read (server mutex)
   std::mutex read_mutex_;  // one read_from_pod() at a time
 
   mutable std::mutex mutex_;  // guards what follows; never held while waiting for the pod

@@ -16,9 +16,6 @@
 // regenerates laser/target_local.
 #pragma once
 
-#include <mutex>
-#include <optional>
-
 #include <ros/node_handle.h>
 #include <ros/publisher.h>
 #include <ros/service_server.h>
@@ -28,6 +25,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include "k40t_driver/LocatePixel.h"
+#include "k40t_driver/driver/laser_target_record.h"
 #include "k40t_driver/driver/pixel_locator.h"
 #include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/geo/ray_locator.h"
@@ -44,8 +42,6 @@ class TargetLocator {
 
  private:
   void on_range(double distance_m, StampNs stamp);
-  void on_pod_target(const protocol::TargetGpsAck& target, StampNs stamp);
-  void compare_locked();
   bool locate_pixel(k40t_driver::LocatePixel::Request& req,
                     k40t_driver::LocatePixel::Response& res);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat);
@@ -60,13 +56,7 @@ class TargetLocator {
   ros::Publisher target_local_, located_point_, located_fix_;
   CameraViews camera_views_;
   ros::ServiceServer locate_pixel_;
-
-  std::mutex mutex_;  // everything below
-  std::optional<std::pair<double, StampNs>> last_range_;
-  std::optional<std::pair<geo::Geodetic, StampNs>> last_local_, last_pod_;
-  std::optional<double> disagreement_m_;
-  uint64_t located_ = 0;
-  std::string last_error_;
+  LaserTargetRecord record_;
 };
 
 }  // namespace k40t::driver

@@ -22,6 +22,7 @@
 
 #include "k40t_driver/sim/camera_settings.h"
 #include "k40t_driver/sim/events.h"
+#include "k40t_driver/sim/model_part.h"
 #include "k40t_driver/sim/outcome.h"
 #include "k40t_driver/sim/pod_clock.h"
 #include "k40t_driver/sim/sd_card.h"
@@ -82,14 +83,10 @@ class CameraModel {
  public:
   explicit CameraModel(const CameraConfig& config = {});
 
-  CameraSettings& settings() { return settings_; }
-  const CameraSettings& settings() const { return settings_; }
-  VisibleSettings& visible() { return visible_; }
-  const VisibleSettings& visible() const { return visible_; }
-  SdCard& sd() { return sd_; }
-  const SdCard& sd() const { return sd_; }
-  PodClock& clock() { return clock_; }
-  const PodClock& clock() const { return clock_; }
+  K40T_MODEL_PART(CameraSettings, settings)
+  K40T_MODEL_PART(VisibleSettings, visible)
+  K40T_MODEL_PART(SdCard, sd)
+  K40T_MODEL_PART(PodClock, clock)
 
   Outcome set_capture_mode(CaptureMode mode);                               // 0x000300
   Outcome set_photo_mode(PhotoMode mode, int interval_s, int burst_count);  // 0x000301

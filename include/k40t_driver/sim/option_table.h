@@ -4,6 +4,7 @@
 // "--name=value" and "--name value" both work.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,7 +18,8 @@ struct OptionSpec {
   const char* name;
   const char* argument;  // nullptr for flags
   const char* help;
-  Status (*apply)(Options& options, const std::string& option, const std::string& value);
+  std::function<Status(Options& options, const std::string& option, const std::string& value)>
+      apply;
 };
 
 // One argument split into its option name and the value given with '=' (if any).

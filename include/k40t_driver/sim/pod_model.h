@@ -17,6 +17,7 @@
 #include "k40t_driver/sim/gimbal_model.h"
 #include "k40t_driver/sim/ground_truth.h"
 #include "k40t_driver/sim/laser_model.h"
+#include "k40t_driver/sim/model_part.h"
 #include "k40t_driver/sim/thermal_model.h"
 #include "k40t_driver/sim/world.h"
 #include "k40t_driver/sim/zoom_model.h"
@@ -108,18 +109,12 @@ class PodModel {
   EventQueue take_events();
   double now_s() const { return now_s_; }
 
-  GimbalModel& gimbal() { return gimbal_; }
-  const GimbalModel& gimbal() const { return gimbal_; }
-  ZoomModel& zoom() { return zoom_; }
-  const ZoomModel& zoom() const { return zoom_; }
-  ThermalModel& thermal() { return thermal_; }
-  const ThermalModel& thermal() const { return thermal_; }
-  LaserModel& laser() { return laser_; }
-  const LaserModel& laser() const { return laser_; }
-  CameraModel& camera() { return camera_; }
-  const CameraModel& camera() const { return camera_; }
-  World& world() { return world_; }
-  const World& world() const { return world_; }
+  K40T_MODEL_PART(GimbalModel, gimbal)
+  K40T_MODEL_PART(ZoomModel, zoom)
+  K40T_MODEL_PART(ThermalModel, thermal)
+  K40T_MODEL_PART(LaserModel, laser)
+  K40T_MODEL_PART(CameraModel, camera)
+  K40T_MODEL_PART(World, world)
 
   // Where the boresight points in the world frame.
   double boresight_yaw_deg() const;
@@ -147,8 +142,7 @@ class PodModel {
   const VehicleAttitude& vehicle_attitude() const { return vehicle_; }
 
   const Versions& versions() const { return config_.versions; }
-  NetworkSettings& network() { return network_; }
-  const NetworkSettings& network() const { return network_; }
+  K40T_MODEL_PART(NetworkSettings, network)
   Outcome set_network(const NetworkSettings& settings);
   const SbusSettings& sbus() const { return sbus_; }
   Outcome set_sbus_range(int max_value, int min_value);

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "k40t_driver/protocol/messages/thermal.h"
+#include "k40t_driver/sim/model_part.h"
 #include "k40t_driver/sim/outcome.h"
 #include "k40t_driver/sim/world.h"
 
@@ -85,8 +86,7 @@ GainRange gain_range(GainMode mode);
 
 class ThermalModel {
  public:
-  ThermalSettings& settings() { return settings_; }
-  const ThermalSettings& settings() const { return settings_; }
+  K40T_MODEL_PART(ThermalSettings, settings)
 
   Outcome set_digital_zoom(int zoom);                                   // 1..8
   Outcome set_spot(int x, int y);                                       // inside the thermal image

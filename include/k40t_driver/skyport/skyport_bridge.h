@@ -105,6 +105,14 @@ class SkyportBridge {
   // deferred() for a command whose DATA `decode(bytes, size)` reads (a layout variant).
   template <class Cmd, class Decode, class F>
   void deferred_raw(Decode decode, F answer);
+  // Get answered from the pod's latest state by `answer(snapshot)`, or refused (kError) while the
+  // snapshot's `known` is false: the bridge does not guess.
+  template <class Get, class Answer>
+  void from_snapshot(bool PodSnapshot::*known, Answer answer);
+  // A mode the pod cannot report back: `send(const Set&)` sets it on the pod, the mode the pod
+  // accepted is kept in `kept`, and Get is answered from there (skyport_lens.cpp).
+  template <class Set, class Get, class Mode, class Send>
+  void kept_mode(Mode SkyportBridge::*kept, Send send);
   // The pod's answer as a return code (and counted).
   psdk::AckCode pod_code(const PodCall& call, const char* what);
   psdk::AckCode unsupported();
@@ -157,6 +165,15 @@ void SkyportBridge::deferred(F answer) {
   deferred_raw<Cmd>(
       [](const uint8_t* bytes, size_t size) { return psdk::decode_data<Cmd>(bytes, size); },
       std::move(answer));
+}
+
+template <class Get, class Answer>
+void SkyportBridge::from_snapshot(bool PodSnapshot::*known, Answer answer) {
+  session_.handle<Get>([this, known, answer](const Get&) -> typename Get::Ack {
+    const PodSnapshot s = pod_.snapshot();
+    if (!(s.*known)) return detail::refused<typename Get::Ack>(psdk::AckCode::kError);
+    return answer(s);
+  });
 }
 
 template <class Cmd, class Decode, class F>

@@ -1,24 +1,12 @@
 #include "k40t_driver/ros/skyport/skyport_config.h"
 
-#include <cstdio>
-
 #include "k40t_driver/psdk/app_key_file.h"
 #include "k40t_driver/ros/param_reader.h"
+#include "k40t_driver/skyport/version_text.h"
 
 namespace k40t::driver::skyport {
 
 namespace {
-// "A.B.C.D", each 0..255 (3.1.2: 0xAABBCCDD is version AA.BB.CC.DD).
-bool parse_version(const std::string& text, psdk::Version& out) {
-  unsigned a = 0, b = 0, c = 0, d = 0;
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%u.%u.%u.%u%c", &a, &b, &c, &d, &tail) != 4) return false;
-  if (a > 255 || b > 255 || c > 255 || d > 255) return false;
-  out = psdk::Version{static_cast<uint8_t>(a), static_cast<uint8_t>(b), static_cast<uint8_t>(c),
-                      static_cast<uint8_t>(d)};
-  return true;
-}
-
 void read_layout(ParamReader& p, const std::string& name, psdk::PsdkLayout& out) {
   const std::string text = p.get<std::string>(name, psdk::to_string(out));
   if (!psdk::parse_psdk_layout(text, out))

@@ -1,24 +1,15 @@
 // k40t_driver/SkyportNodelet: the SKYPORT bridge in the driver's nodelet manager.
-#include <nodelet/nodelet.h>
 #include <pluginlib/class_list_macros.hpp>
 
+#include "k40t_driver/ros/component_host.h"
 #include "k40t_driver/ros/skyport/skyport_ros.h"
 
 namespace k40t::driver::skyport {
 
-class SkyportNodelet : public nodelet::Nodelet {
- private:
-  void onInit() override {
-    // Multi-threaded handles: the pod's services are called while pushes keep arriving.
-    auto bridge = SkyportRos::create(getMTNodeHandle(), getMTPrivateNodeHandle());
-    if (!bridge) {
-      NODELET_FATAL("SKYPORT bridge not started: %s", bridge.error().c_str());
-      return;
-    }
-    bridge_ = std::move(bridge.value());
-  }
-
-  std::unique_ptr<SkyportRos> bridge_;
+class SkyportNodelet : public ComponentNodelet<SkyportRos> {
+ public:
+  // Multi-threaded handles: the pod's services are called while pushes keep arriving.
+  SkyportNodelet() : ComponentNodelet("SKYPORT bridge", Callbacks::kConcurrent) {}
 };
 
 }  // namespace k40t::driver::skyport

@@ -30,20 +30,21 @@ void SkyportRos::register_pushes() {
     height.data = static_cast<float>(p.relative_height_m);
     relative_height_.publish(height);
   });
-  session_->handle<RawGpsPush>([this](const RawGpsPush& p) {
-    const ros::Time now = ros::Time::now();
-    const sensor_msgs::NavSatFix fix = raw_gps_fix(p, now, config_.world_frame);
-    raw_gps_.publish(fix);
-    raw_gps_velocity_.publish(raw_gps_velocity(p, now, config_.world_frame));
-    if (config_.feed_pod && config_.feed_fix == "raw_gps") feed_fix_.publish(fix);
-  });
-  session_->handle<RawRtkPush>([this](const RawRtkPush& p) {
-    const ros::Time now = ros::Time::now();
-    const sensor_msgs::NavSatFix fix = rtk_fix(p, now, config_.world_frame);
-    rtk_.publish(fix);
-    rtk_velocity_.publish(rtk_velocity(p, now, config_.world_frame));
-    if (config_.feed_pod && config_.feed_fix == "rtk") feed_fix_.publish(fix);
-  });
+  // A receiver's push (raw GPS, RTK): its fix and velocity, and the fix fed to the pod when
+  // ~feed_fix names the receiver.
+  const auto receiver = [this](const char* name, ros::Publisher& fix_topic,
+                               ros::Publisher& velocity_topic, auto to_fix, auto to_velocity) {
+    return [this, name, &fix_topic, &velocity_topic, to_fix, to_velocity](const auto& p) {
+      const ros::Time now = ros::Time::now();
+      const sensor_msgs::NavSatFix fix = to_fix(p, now, config_.world_frame);
+      fix_topic.publish(fix);
+      velocity_topic.publish(to_velocity(p, now, config_.world_frame));
+      if (config_.feed_pod && config_.feed_fix == name) feed_fix_.publish(fix);
+    };
+  };
+  session_->handle<RawGpsPush>(
+      receiver("raw_gps", raw_gps_, raw_gps_velocity_, raw_gps_fix, raw_gps_velocity));
+  session_->handle<RawRtkPush>(receiver("rtk", rtk_, rtk_velocity_, rtk_fix, rtk_velocity));
   session_->handle<UavStatePush>(
       [this](const UavStatePush& p) { uav_state_.publish(uav_state(p, ros::Time::now())); });
   // 3.3.1 in either length: 42 bytes (document) or 33 (DJI's V1.0.0, no OSDK fields; P31).

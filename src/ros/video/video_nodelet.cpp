@@ -1,25 +1,15 @@
 // k40t_driver/VideoNodelet: the pod's video in the same nodelet manager as PodNodelet, so that
 // image subscribers in that manager receive the published shared pointers without a copy.
-#include <nodelet/nodelet.h>
 #include <pluginlib/class_list_macros.hpp>
 
+#include "k40t_driver/ros/component_host.h"
 #include "k40t_driver/ros/video/video_streamer.h"
 
 namespace k40t::driver {
 
-class VideoNodelet : public nodelet::Nodelet {
- private:
-  void onInit() override {
-    Result<std::unique_ptr<VideoStreamer>> streamer =
-        VideoStreamer::create(getNodeHandle(), getPrivateNodeHandle());
-    if (!streamer) {
-      NODELET_FATAL("K40T video not started: %s", streamer.error().c_str());
-      return;
-    }
-    streamer_ = std::move(streamer.value());
-  }
-
-  std::unique_ptr<VideoStreamer> streamer_;
+class VideoNodelet : public ComponentNodelet<VideoStreamer> {
+ public:
+  VideoNodelet() : ComponentNodelet("K40T video", Callbacks::kOneAtATime) {}
 };
 
 }  // namespace k40t::driver

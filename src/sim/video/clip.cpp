@@ -1,6 +1,6 @@
 #include "k40t_driver/sim/video/clip.h"
 
-#include <functional>
+#include <vector>
 
 namespace k40t::sim::video {
 
@@ -30,11 +30,20 @@ std::optional<std::pair<cv::Point2d, cv::Point2d>> clip_segment(cv::Point2d a, c
 }
 
 namespace {
-// One Sutherland-Hodgman pass against the half-plane where inside(p) holds; `cross` gives the
-// point where a segment from inside to outside (or back) meets the edge.
-std::vector<cv::Point2d> clip_edge(
-    const std::vector<cv::Point2d>& in, const std::function<bool(const cv::Point2d&)>& inside,
-    const std::function<cv::Point2d(const cv::Point2d&, const cv::Point2d&)>& cross) {
+// One Sutherland-Hodgman pass against the half-plane v.*axis >= bound (`keep_above`) or
+// v.*axis <= bound; a segment from inside to outside (or back) is cut where it meets the edge.
+std::vector<cv::Point2d> clip_edge(const std::vector<cv::Point2d>& in, double cv::Point2d::*axis,
+                                   double bound, bool keep_above) {
+  double cv::Point2d::*other = axis == &cv::Point2d::x ? &cv::Point2d::y : &cv::Point2d::x;
+  const auto inside = [&](const cv::Point2d& v) {
+    return keep_above ? v.*axis >= bound : v.*axis <= bound;
+  };
+  const auto cross = [&](const cv::Point2d& a, const cv::Point2d& b) {
+    cv::Point2d at;
+    at.*axis = bound;
+    at.*other = a.*other + (b.*other - a.*other) * (bound - a.*axis) / (b.*axis - a.*axis);
+    return at;
+  };
   std::vector<cv::Point2d> out;
   for (size_t i = 0; i < in.size(); ++i) {
     const cv::Point2d& cur = in[i];
@@ -48,35 +57,14 @@ std::vector<cv::Point2d> clip_edge(
   }
   return out;
 }
-
-cv::Point2d at_x(const cv::Point2d& a, const cv::Point2d& b, double x) {
-  return {x, a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x)};
-}
-cv::Point2d at_y(const cv::Point2d& a, const cv::Point2d& b, double y) {
-  return {a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y), y};
-}
 }  // namespace
 
 std::vector<cv::Point2d> clip_polygon(const std::vector<cv::Point2d>& polygon,
                                       const cv::Rect2d& box) {
-  const double x0 = box.x;
-  const double x1 = box.x + box.width;
-  const double y0 = box.y;
-  const double y1 = box.y + box.height;
-  std::vector<cv::Point2d> p = polygon;
-  p = clip_edge(
-      p, [x0](const cv::Point2d& v) { return v.x >= x0; },
-      [x0](const cv::Point2d& a, const cv::Point2d& b) { return at_x(a, b, x0); });
-  p = clip_edge(
-      p, [x1](const cv::Point2d& v) { return v.x <= x1; },
-      [x1](const cv::Point2d& a, const cv::Point2d& b) { return at_x(a, b, x1); });
-  p = clip_edge(
-      p, [y0](const cv::Point2d& v) { return v.y >= y0; },
-      [y0](const cv::Point2d& a, const cv::Point2d& b) { return at_y(a, b, y0); });
-  p = clip_edge(
-      p, [y1](const cv::Point2d& v) { return v.y <= y1; },
-      [y1](const cv::Point2d& a, const cv::Point2d& b) { return at_y(a, b, y1); });
-  return p;
+  std::vector<cv::Point2d> p = clip_edge(polygon, &cv::Point2d::x, box.x, true);
+  p = clip_edge(p, &cv::Point2d::x, box.x + box.width, false);
+  p = clip_edge(p, &cv::Point2d::y, box.y, true);
+  return clip_edge(p, &cv::Point2d::y, box.y + box.height, false);
 }
 
 }  // namespace k40t::sim::video

@@ -1,0 +1,69 @@
+// How the package's three components (RosPod, SkyportRos, VideoStreamer) are hosted, alike: each
+// has `static Result<std::unique_ptr<C>> create(nh, private_nh)` and runs either in a nodelet
+// manager (ComponentNodelet) or as a standalone node (run_standalone_node()). One that cannot
+// start logs a fatal line naming it (`what`, e.g. "K40T driver") and the reason.
+#pragma once
+
+#include <memory>
+#include <utility>
+
+#include <nodelet/nodelet.h>
+#include <ros/ros.h>
+
+#include "k40t_driver/ros/stop_signals.h"
+
+namespace k40t::driver {
+
+enum class Callbacks {
+  kOneAtATime,  // nodelet: the default handles; node: ros::spin()
+  kConcurrent,  // nodelet: the multi-threaded handles; node: a spinner of four threads
+};
+
+template <class Component>
+class ComponentNodelet : public nodelet::Nodelet {
+ protected:
+  ComponentNodelet(const char* what, Callbacks callbacks) : what_(what), callbacks_(callbacks) {}
+
+ private:
+  void onInit() override {
+    const bool concurrent = callbacks_ == Callbacks::kConcurrent;
+    auto created =
+        Component::create(concurrent ? getMTNodeHandle() : getNodeHandle(),
+                          concurrent ? getMTPrivateNodeHandle() : getPrivateNodeHandle());
+    if (!created) {
+      NODELET_FATAL("%s not started: %s", what_, created.error().c_str());
+      return;
+    }
+    component_ = std::move(created.value());
+  }
+
+  const char* what_;
+  Callbacks callbacks_;
+  std::unique_ptr<Component> component_;
+};
+
+// The whole main() of a standalone node named `node_name`.
+template <class Component>
+int run_standalone_node(int argc, char** argv, const char* node_name, const char* what,
+                        Callbacks callbacks) {
+  ros::init(argc, argv, node_name);
+  shutdown_on_sigterm();
+  ros::NodeHandle nh;
+  ros::NodeHandle private_nh("~");
+  if (stop_requested_before_ros_start()) return 0;  // Ctrl-C while loading
+  auto component = Component::create(nh, private_nh);
+  if (!component) {
+    ROS_FATAL("%s not started: %s", what, component.error().c_str());
+    return 1;
+  }
+  if (callbacks == Callbacks::kOneAtATime) {
+    ros::spin();
+    return 0;
+  }
+  ros::AsyncSpinner spinner(4);
+  spinner.start();
+  ros::waitForShutdown();
+  return 0;
+}
+
+}  // namespace k40t::driver
