@@ -4,8 +4,8 @@
 
 namespace k40t::protocol {
 
-// The texts follow the document's wording (Chinese original, sections 3.2.1.1 and 3.2.4); those
-// of the settings cfg/K40t.cfg offers come from cfg/setting_enums.txt (cfg_enum_names.h).
+// The names of the settings' codes come from cfg/setting_enums.txt (cfg_enum_names.h); the other
+// texts follow the document's wording (Chinese original, sections 3.2.1.1 and 3.2.4).
 
 const char* to_string(CaptureMode v) {
   return cfg_enums::constant_of(cfg_enums::camera_mode, static_cast<int>(v), "mode_");
@@ -22,13 +22,7 @@ const char* to_string(ReportedStreamResolution v) {
 }
 
 const char* to_string(StreamResolution v) {
-  switch (v) {
-    case StreamResolution::k1080p30:
-      return "1080P30";
-    case StreamResolution::k720p30:
-      return "720P30 (not supported)";
-  }
-  return nullptr;
+  return cfg_enums::constant_of(cfg_enums::stream_resolution, static_cast<int>(v), "stream_");
 }
 
 const char* to_string(VideoEncoding v) {
@@ -36,17 +30,7 @@ const char* to_string(VideoEncoding v) {
 }
 
 const char* to_string(ImageMode v) {
-  switch (v) {
-    case ImageMode::kInfrared:
-      return "infrared";
-    case ImageMode::kVisible:
-      return "visible";
-    case ImageMode::kVisibleAlt:
-      return "visible (code 6)";
-    case ImageMode::kSplit:
-      return "split screen";
-  }
-  return nullptr;
+  return cfg_enums::constant_of(cfg_enums::image_mode, static_cast<int>(v), "image_");
 }
 
 const char* to_string(StreamBitrate v) {
@@ -72,15 +56,7 @@ double bitrate_mbps(StreamBitrate v) {
 }
 
 const char* to_string(PhotoMode v) {
-  switch (v) {
-    case PhotoMode::kSingle:
-      return "single shot";
-    case PhotoMode::kBurst:
-      return "burst (3/5)";
-    case PhotoMode::kTimeLapse:
-      return "time-lapse";
-  }
-  return nullptr;
+  return cfg_enums::description_of(cfg_enums::photo_mode, static_cast<int>(v));
 }
 
 const char* to_string(SdCardState v) {
