@@ -185,8 +185,8 @@ TEST(CameraMessages, RangeErrorsSayTheAllowedValues) {
   ImageModeRequest image;
   image.mode = ImageMode{1};
   EXPECT_EQ(encode_payload(image).error(),
-            "image_mode: field 'mode' has no code 1; allowed: 0 (infrared), 5 (visible), "
-            "6 (visible (code 6)), 7 (split screen)");
+            "image_mode: field 'mode' has no code 1; allowed: 0 (thermal), 5 (visible), "
+            "6 (visible_alt), 7 (split)");
 
   BoxTrackingRequest box = sample<BoxTrackingRequest>();
   box.width_px = 201;

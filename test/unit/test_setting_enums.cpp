@@ -1,16 +1,14 @@
-// cfg/setting_enums.txt, the one list of the enumerated settings' names that cfg/K40t.cfg builds
-// its constants from and the build turns into the protocol's to_string() tables
-// (cmake/cfg_enum_names.cmake), against the C++ code that still names or takes the same codes:
-// every code is one the protocol knows (to_string), the names are the protocol's, the simulator's
-// palettes are the same 20 under the same names, and every setting request that takes an enum has
-// its list.
+// cfg/setting_enums.txt, the one list of the enumerated settings' names: the tables the build
+// generates from it (protocol/setting_enums.h, cmake/cfg_enum_names.cmake) are the file,
+// "protocol_only" marks included; the protocol's to_string() of every enum of the list names
+// exactly the list's codes, with the list's names; the simulator's palettes are the same 20 under
+// the same names. That the cfg offers exactly the entries that are not "protocol_only" is checked
+// against the generated K40tConfig by test/ros/unit/test_cfg_enums.cpp.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cctype>
 #include <fstream>
 #include <functional>
-#include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -18,6 +16,7 @@
 #include "k40t_driver/protocol/messages/camera_enums.h"
 #include "k40t_driver/protocol/messages/thermal.h"
 #include "k40t_driver/protocol/messages/visible.h"
+#include "k40t_driver/protocol/setting_enums.h"
 #include "k40t_driver/sim/video/palette.h"
 
 namespace k40t::protocol {
@@ -26,75 +25,133 @@ namespace {
 struct Item {
   int code;
   std::string constant;
+  std::string description;
+  bool offered;
 };
 
-// parameter -> its items, in file order.
-std::map<std::string, std::vector<Item>> read_enums() {
+struct List {
+  std::string parameter;
+  std::vector<Item> items;
+};
+
+// The file as the format at its top describes it, read without the build's generator.
+std::vector<List> read_file() {
   std::ifstream in(std::string(K40T_TEST_DATA_DIR) + "/../../cfg/setting_enums.txt");
   EXPECT_TRUE(in) << "cfg/setting_enums.txt not found";
-  std::map<std::string, std::vector<Item>> enums;
+  std::vector<List> lists;
   std::string line;
   while (std::getline(in, line)) {
     std::istringstream words(line.substr(0, line.find('#')));
-    std::string first, second, third;
-    if (!(words >> first >> second)) continue;
+    std::string first;
+    if (!(words >> first)) continue;
     if (first == "enum") {
-      enums[second];
+      lists.push_back({});
+      words >> lists.back().parameter;
       continue;
     }
-    EXPECT_TRUE(words >> third) << line;
-    EXPECT_EQ(enums.count(first), 1u) << "item before its 'enum' line: " << line;
-    enums[first].push_back({std::stoi(second, nullptr, 0), third});
+    const bool offered = first != "protocol_only";
+    std::string parameter = first, code, constant, description;
+    if (!offered) words >> parameter;
+    EXPECT_TRUE(words >> code >> constant && std::getline(words >> std::ws, description)) << line;
+    EXPECT_TRUE(!lists.empty() && lists.back().parameter == parameter)
+        << "not under its enum: " << line;
+    if (lists.empty()) continue;
+    description.erase(description.find_last_not_of(" \t") + 1);
+    lists.back().items.push_back({std::stoi(code, nullptr, 0), constant, description, offered});
   }
+  return lists;
+}
+
+TEST(SettingEnums, GeneratedTablesAreTheFile) {
+  const std::vector<List> file = read_file();
+  const std::vector<SettingEnum>& tables = setting_enums();
+  ASSERT_EQ(tables.size(), file.size());
+  for (size_t i = 0; i < file.size(); ++i) {
+    SCOPED_TRACE(file[i].parameter);
+    EXPECT_EQ(tables[i].parameter, file[i].parameter);
+    ASSERT_EQ(tables[i].size, file[i].items.size());
+    for (size_t j = 0; j < file[i].items.size(); ++j) {
+      const Item& item = file[i].items[j];
+      EXPECT_EQ(tables[i].names[j].code, item.code);
+      EXPECT_EQ(tables[i].names[j].constant, item.constant);
+      EXPECT_EQ(tables[i].names[j].description, item.description);
+      EXPECT_EQ(tables[i].names[j].offered, item.offered) << item.constant;
+    }
+  }
+}
+
+// One protocol enum read from a list: to_string() of every byte, and the column it names a code
+// by: the constant without `prefix`, or (no prefix) the description.
+struct NamedBy {
+  const char* parameter;
+  std::function<const char*(int)> name;
+  std::string prefix;
+};
+
+template <class E>
+std::function<const char*(int)> name_of() {
+  return [](int code) { return to_string(static_cast<E>(code)); };
+}
+
+const std::vector<NamedBy>& named_enums() {
+  static const std::vector<NamedBy> enums = {
+      {"image_mode", name_of<ImageMode>(), "image_"},
+      {"camera_mode", name_of<CaptureMode>(), "mode_"},
+      {"photo_mode", name_of<PhotoMode>(), ""},
+      {"palette", name_of<Palette>(), "palette_"},
+      {"thermal_gain", name_of<ThermalGainMode>(), "gain_"},
+      {"video_resolution", name_of<VideoResolution>(), ""},
+      {"photo_resolution", name_of<PhotoResolution>(), ""},
+      {"iso", name_of<Iso>(), ""},
+      {"shutter", name_of<Shutter>(), ""},
+      {"ev", name_of<ExposureValue>(), ""},
+      {"white_balance", name_of<WhiteBalance>(), "wb_"},
+      {"anti_flicker", name_of<AntiFlicker>(), "flicker_"},
+      {"metering", name_of<MeteringMode>(), "metering_"},
+      {"stream_bitrate", name_of<StreamBitrate>(), ""},
+      {"stream_resolution", name_of<StreamResolution>(), "stream_"},
+      {"stream_encoding", name_of<VideoEncoding>(), ""},
+  };
   return enums;
 }
 
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
+// The lists whose codes are plain numbers of a request (0x000301's interval and burst size), with
+// no protocol enum to name them.
+const std::set<std::string> kPlainNumbers = {"timelapse_interval", "burst_count"};
 
-// Every code of `parameter` is one the protocol's enum E knows; with a prefix, every constant is
-// prefix + the protocol's name of its code.
-template <class E>
-void expect_protocol_codes(const std::string& parameter, const std::string& prefix = "") {
-  const auto enums = read_enums();
-  ASSERT_EQ(enums.count(parameter), 1u) << parameter << " has no list";
-  ASSERT_FALSE(enums.at(parameter).empty()) << parameter;
-  for (const Item& item : enums.at(parameter)) {
-    const char* name = to_string(static_cast<E>(item.code));
-    ASSERT_NE(name, nullptr) << parameter << " code " << item.code << " is not a protocol code";
-    if (!prefix.empty()) {
-      EXPECT_EQ(item.constant, prefix + lower(name)) << parameter;
+TEST(SettingEnums, ToStringNamesExactlyTheListsCodesByTheListsNames) {
+  std::set<std::string> named;
+  for (const NamedBy& e : named_enums()) {
+    SCOPED_TRACE(e.parameter);
+    named.insert(e.parameter);
+    const SettingEnum* list = nullptr;
+    for (const SettingEnum& l : setting_enums()) {
+      if (l.parameter == std::string(e.parameter)) list = &l;
     }
+    ASSERT_NE(list, nullptr) << "no list";
+    std::vector<std::string> expected(256);
+    for (const SettingEnumName& item : *list) {
+      const std::string constant = item.constant;
+      ASSERT_EQ(constant.rfind(e.prefix, 0), 0u) << constant << " does not start with " << e.prefix;
+      expected.at(item.code) =
+          e.prefix.empty() ? item.description : constant.substr(e.prefix.size());
+    }
+    for (int code = 0; code <= 255; ++code) {
+      const char* name = e.name(code);
+      EXPECT_EQ(name ? name : "", expected[code]) << "code " << code;
+    }
+  }
+  for (const SettingEnum& list : setting_enums()) {
+    EXPECT_TRUE(named.count(list.parameter) || kPlainNumbers.count(list.parameter))
+        << list.parameter << ": a list no to_string() reads";
   }
 }
 
-TEST(SettingEnums, NamesAreTheProtocols) {
-  expect_protocol_codes<Palette>("palette", "palette_");
-  expect_protocol_codes<WhiteBalance>("white_balance", "wb_");
-  expect_protocol_codes<AntiFlicker>("anti_flicker", "flicker_");
-  expect_protocol_codes<ThermalGainMode>("thermal_gain", "gain_");
-  expect_protocol_codes<CaptureMode>("camera_mode", "mode_");
-  expect_protocol_codes<VideoEncoding>("stream_encoding", "encoding_");
-}
-
-TEST(SettingEnums, CodesAreTheProtocols) {
-  expect_protocol_codes<ImageMode>("image_mode");
-  expect_protocol_codes<PhotoMode>("photo_mode");
-  expect_protocol_codes<VideoResolution>("video_resolution");
-  expect_protocol_codes<PhotoResolution>("photo_resolution");
-  expect_protocol_codes<Iso>("iso");
-  expect_protocol_codes<Shutter>("shutter");
-  expect_protocol_codes<ExposureValue>("ev");
-  expect_protocol_codes<MeteringMode>("metering");
-  expect_protocol_codes<StreamBitrate>("stream_bitrate");
-  expect_protocol_codes<StreamResolution>("stream_resolution");
-}
-
 TEST(SettingEnums, EveryProtocolPaletteIsListedAndTheSimulatorDrawsEach) {
-  const auto palettes = read_enums().at("palette");
+  std::vector<Item> palettes;
+  for (const List& list : read_file()) {
+    if (list.parameter == "palette") palettes = list.items;
+  }
   std::vector<int> codes;
   for (int code = 0; code <= 255; ++code) {
     if (to_string(static_cast<Palette>(code))) codes.push_back(code);

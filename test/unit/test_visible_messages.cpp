@@ -275,7 +275,7 @@ TEST(VisibleEnums, NamesOfTheDocument) {
   EXPECT_STREQ(to_string(WhiteBalance::kWarmFluorescent), "warm_fluorescent");
   EXPECT_STREQ(to_string(WhiteBalance::kDark), "dark");
   EXPECT_STREQ(to_string(AntiFlicker::k50Hz), "50hz");
-  EXPECT_STREQ(to_string(MeteringMode::kCenterWeighted), "center_weighted");
+  EXPECT_STREQ(to_string(MeteringMode::kCenterWeighted), "center");
   EXPECT_STREQ(to_string(VideoResolution::k3840x2160), "3840x2160");
   EXPECT_STREQ(to_string(PhotoResolution::k5160x3870), "5160x3870");
 }

@@ -10,15 +10,7 @@ const char* to_string(VideoResolution resolution) {
 }
 
 const char* to_string(PhotoResolution resolution) {
-  switch (resolution) {
-    case PhotoResolution::k8000x6000:
-      return "8000x6000";
-    case PhotoResolution::k4000x3000:
-      return "4000x3000";
-    case PhotoResolution::k5160x3870:
-      return "5160x3870";
-  }
-  return nullptr;
+  return cfg_enums::description_of(cfg_enums::photo_resolution, static_cast<int>(resolution));
 }
 
 const char* to_string(Iso iso) {
@@ -43,15 +35,7 @@ const char* to_string(AntiFlicker anti_flicker) {
 }
 
 const char* to_string(MeteringMode mode) {
-  switch (mode) {
-    case MeteringMode::kCenterWeighted:
-      return "center_weighted";
-    case MeteringMode::kArea:
-      return "area";
-    case MeteringMode::kAverage:
-      return "average";
-  }
-  return nullptr;
+  return cfg_enums::constant_of(cfg_enums::metering, static_cast<int>(mode), "metering_");
 }
 
 double video_bitrate_mbps(uint8_t code, VideoResolution resolution, bool h265) {
