@@ -97,7 +97,7 @@ const std::vector<NamedBy>& named_enums() {
   static const std::vector<NamedBy> enums = {
       {"image_mode", name_of<ImageMode>(), "image_"},
       {"camera_mode", name_of<CaptureMode>(), "mode_"},
-      {"photo_mode", name_of<PhotoMode>(), ""},
+      {"photo_mode", name_of<PhotoMode>(), "photo_"},
       {"palette", name_of<Palette>(), "palette_"},
       {"thermal_gain", name_of<ThermalGainMode>(), "gain_"},
       {"video_resolution", name_of<VideoResolution>(), ""},

@@ -37,7 +37,7 @@ double bitrate_mbps(StreamBitrate v) {
 }
 
 const char* to_string(PhotoMode v) {
-  return cfg_enums::description_of(cfg_enums::photo_mode, static_cast<int>(v));
+  return cfg_enums::constant_of(cfg_enums::photo_mode, static_cast<int>(v), "photo_");
 }
 
 const char* to_string(SdCardState v) {
