@@ -15,6 +15,16 @@ std::vector<Field> version_fields() {
           {"major", 4, Kind::kU8}};
 }
 
+// One-bit flags in the byte at `offset`, bit 0 first, then the fields `after` them.
+std::vector<Field> flags(uint8_t offset, std::initializer_list<const char*> names,
+                         std::vector<Field> after = {}) {
+  std::vector<Field> out;
+  uint8_t bit = 0;
+  for (const char* name : names) out.push_back({name, offset, Kind::kBit, bit++});
+  out.insert(out.end(), after.begin(), after.end());
+  return out;
+}
+
 std::vector<AckEntry> build() {
   using K = Kind;
   return {
@@ -35,16 +45,8 @@ std::vector<AckEntry> build() {
       {0x04, 0x01, "set_camera_work_mode", "3.4.1", 1, {}},
       {0x04, 0x02, "get_camera_work_mode", "3.4.2", 2, {{"mode", 1, K::kU8}}},  // 0 photo, 1 video
       {0x04, 0x03, "shoot_photo", "3.4.3", 1, {}},
-      {0x04,
-       0x04,
-       "get_shoot_photo_state",
-       "3.4.4",
-       4,
-       {{"single", 1, K::kBit, 0},
-        {"interval", 1, K::kBit, 1},
-        {"burst", 1, K::kBit, 2},
-        {"storing", 1, K::kBit, 3},
-        {"countdown_s", 2, K::kU16}}},
+      {0x04, 0x04, "get_shoot_photo_state", "3.4.4", 4,
+       flags(1, {"single", "interval", "burst", "storing"}, {{"countdown_s", 2, K::kU16}})},
       {0x04, 0x05, "set_shoot_photo_mode", "3.4.5", 1, {}},
       {0x04, 0x07, "record_video", "3.4.7", 1, {}},
       {0x04,
@@ -77,16 +79,8 @@ std::vector<AckEntry> build() {
       {0x04, 0x39, "get_optical_zoom_factor", "3.4.24", 5, {{"factor", 1, K::kF32}}},
       {0x04, 0x40, "start_continuous_zoom", "3.4.25", 1, {}},
       {0x04, 0x41, "stop_continuous_zoom", "3.4.26", 1, {}},
-      {0x04,
-       0xFF,
-       "get_camera_capability",
-       "3.4.33",
-       2,
-       {{"camera_commands", 1, K::kBit, 0},
-        {"optical_zoom", 1, K::kBit, 1},
-        {"digital_zoom", 1, K::kBit, 2},
-        {"focus", 1, K::kBit, 3},
-        {"metering", 1, K::kBit, 4}}},
+      {0x04, 0xFF, "get_camera_capability", "3.4.33", 2,
+       flags(1, {"camera_commands", "optical_zoom", "digital_zoom", "focus", "metering"})},
       {0x05, 0x02, "set_gimbal_mode", "3.5.2", 1, {}},
       {0x05, 0x03, "gimbal_return_head", "3.5.3", 1, {}},
       {0x05, 0x04, "control_gimbal_speed", "3.5.4", 1, {}},
