@@ -17,8 +17,9 @@
 //
 // commands/declare.h writes the repeated forms once: K40T_PSDK_NAMED(name, section) for the
 // kName/kSection pair, K40T_PSDK_SETTING(...) for a Set/Get/ACK triple sharing one value struct,
-// K40T_PSDK_NO_DATA(...) for a command without data, K40T_PSDK_TRANSPARENT(...) for transparent
-// data.
+// K40T_PSDK_GET(...) for a Get/ACK pair, K40T_PSDK_NO_DATA(...) for a command without data,
+// K40T_PSDK_TRANSPARENT(...) for transparent data, K40T_PSDK_FLAGS(...) for a byte of one-bit
+// flags and K40T_PSDK_VARIABLE_LENGTH() for the members listed below.
 //
 // Variable-length commands (hand-shake data, transparent data, widget lists, positioning) have
 // no layout(); they define kMinBodySize, kMaxBodySize, encode(ByteWriter&) const,

@@ -13,14 +13,8 @@ const char* to_string(GimbalMode mode) {
 }
 
 GimbalStateMode to_state_mode(GimbalMode mode) {
-  switch (mode) {
-    case GimbalMode::kFpv:
-      return GimbalStateMode::kFpv;
-    case GimbalMode::kFollowing:
-      return GimbalStateMode::kFollowing;
-    case GimbalMode::kFree:
-      break;
-  }
+  if (mode == GimbalMode::kFpv) return GimbalStateMode::kFpv;
+  if (mode == GimbalMode::kFollowing) return GimbalStateMode::kFollowing;
   return GimbalStateMode::kFree;
 }
 

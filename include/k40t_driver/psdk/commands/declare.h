@@ -55,6 +55,13 @@ struct ModeValue {
     K40T_PSDK_NAMED(name, section);                                                         \
   }
 
+// The members a variable-length struct defines in its .cpp instead of layout() (command.h).
+#define K40T_PSDK_VARIABLE_LENGTH() \
+  Status validate() const;          \
+  void encode(ByteWriter& w) const; \
+  Status decode(ByteReader& r);     \
+  void describe(FieldSink& sink) const
+
 // A byte (or word) of one-bit flags, bit 0 first: the struct with a bool per flag and the layout
 // of wire::bit(0), wire::bit(1), ... in the order the flags are named (at most 9).
 //   K40T_PSDK_FLAGS(FocusAssistant, for_auto_focus, for_manual_focus);

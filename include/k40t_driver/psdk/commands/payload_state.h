@@ -47,7 +47,6 @@ struct IdentityVerification
   K40T_PSDK_LAYOUT(s, v) { v("random", s.random, wire::Bytes<kRandomSize>{}); }
 };
 
-// 3.1.2 ACK.
 // 3.1.2: GetPsdkVersion, PsdkVersionAck.
 K40T_PSDK_GET(PsdkVersion, psdk_version, VersionValue, kPayloadState, 0x02, "3.1.2");
 
@@ -78,8 +77,8 @@ struct ProductInfoValue {
 // 3.1.4: GetProductInfo, ProductInfoAck.
 K40T_PSDK_GET(ProductInfo, product_info, ProductInfoValue, kPayloadState, 0x04, "3.1.4");
 
-// 3.1.5 ACK: the SKYPORT version the payload wants (for upgrading it with DJI Assistant 2).
-// 3.1.5: GetSkyportVersion, SkyportVersionAck.
+// 3.1.5: GetSkyportVersion, SkyportVersionAck: the SKYPORT version the payload wants (for
+// upgrading it with DJI Assistant 2).
 K40T_PSDK_GET(SkyportVersion, skyport_version, VersionValue, kPayloadState, 0x05, "3.1.5");
 
 // 3.1.6 ACK.

@@ -88,10 +88,7 @@ struct PositionList {
   DateTime base_time;
   std::array<Point, kMaxTargetPoints> points{};
 
-  Status validate() const;  // count 1..5, the base time and each point
-  void encode(ByteWriter& w) const;
-  Status decode(ByteReader& r);
-  void describe(FieldSink& sink) const;
+  K40T_PSDK_VARIABLE_LENGTH();  // validate(): count 1..5, the base time and each point
 };
 
 // 3.7.1 ACK: one position per requested point. At 56 bytes a point, DATA (256 bytes at most)

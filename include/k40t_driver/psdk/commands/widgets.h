@@ -31,7 +31,6 @@ struct CountUpTo {
   K40T_PSDK_LAYOUT(s, v) { v("count", s.count, wire::u8); }
 };
 
-// 3.2.4 ACK.
 // 3.2.4: GetWidgetListLength, WidgetListLengthAck.
 K40T_PSDK_GET(WidgetListLength, widget_list_length, CountUpTo<kMaxWidgets>, kAppFunction, 0x04,
               "3.2.4");
@@ -50,10 +49,7 @@ struct WidgetListDataAck : Reply<CommandSet::kAppFunction, 0x05, Sender::kPayloa
   std::array<std::string, kMaxChooseItems> choose_items{};  // each at most 15 bytes + NUL
   std::string input_box_suffix;                             // integer input box: at most 31 + NUL
 
-  Status validate() const;
-  void encode(ByteWriter& w) const;
-  Status decode(ByteReader& r);
-  void describe(FieldSink& sink) const;
+  K40T_PSDK_VARIABLE_LENGTH();
 };
 
 // 3.2.5: the n-th widget of the list, from 0.
@@ -65,8 +61,7 @@ struct GetWidgetListData
   K40T_PSDK_LAYOUT(s, v) { v("index", s.index, wire::u8); }
 };
 
-// 3.2.6 ACK: widget values are read in groups of at most 15.
-// 3.2.6: GetWidgetGroupCount, WidgetGroupCountAck.
+// 3.2.6: GetWidgetGroupCount, WidgetGroupCountAck: widget values are read in groups of at most 15.
 K40T_PSDK_GET(WidgetGroupCount, widget_group_count, CountUpTo<kMaxWidgetGroups>, kAppFunction, 0x06,
               "3.2.6");
 
@@ -90,10 +85,7 @@ struct WidgetGroupDataAck : Reply<CommandSet::kAppFunction, 0x07, Sender::kPaylo
   uint8_t count = 0;
   std::array<WidgetValue, kMaxWidgetsPerGroup> widgets{};
 
-  Status validate() const;
-  void encode(ByteWriter& w) const;
-  Status decode(ByteReader& r);
-  void describe(FieldSink& sink) const;
+  K40T_PSDK_VARIABLE_LENGTH();
 };
 
 // 3.2.7: the values of group n, from 0.
