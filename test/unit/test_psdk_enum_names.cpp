@@ -26,8 +26,9 @@ void expect_names(std::initializer_list<NameCase> cases) {
   for (const NameCase& c : cases) EXPECT_STREQ(c.actual, c.name);
 }
 
-TEST(PsdkEnumNames, CodesWithoutGapsFromTheirFirstCode) {
+TEST(PsdkEnumNames, EachCodeHasItsNameAndTheCodesBesideHaveNone) {
   expect_names({
+      // Codes without gaps, from their first code.
       name_of<CommandSet>(0x00, nullptr),
       name_of<CommandSet>(0x01, "payload_state"),
       name_of<CommandSet>(0x07, "positioning"),
@@ -47,11 +48,7 @@ TEST(PsdkEnumNames, CodesWithoutGapsFromTheirFirstCode) {
       name_of<WidgetType>(5, "integer_input_box"),
       name_of<GimbalMode>(1, "fpv"),
       name_of<GimbalStateMode>(1, "following"),
-  });
-}
-
-TEST(PsdkEnumNames, CodesWithGapsPairedWithTheirNames) {
-  expect_names({
+      // Codes with gaps, paired with their names.
       name_of<ShootPhotoType>(1, "single"),
       name_of<ShootPhotoType>(2, nullptr),
       name_of<ShootPhotoType>(4, "burst"),
