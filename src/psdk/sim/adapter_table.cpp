@@ -25,9 +25,17 @@ std::vector<Field> flags(uint8_t offset, std::initializer_list<const char*> name
   return out;
 }
 
-std::vector<AckEntry> build() {
+uint32_t le(const Data& d, size_t at, size_t n) {
+  uint32_t v = 0;
+  for (size_t i = 0; i < n; ++i) v |= static_cast<uint32_t>(d.bytes[at + i]) << (8 * i);
+  return v;
+}
+
+}  // namespace
+
+const std::vector<AckEntry>& acks() {
   using K = Kind;
-  return {
+  static const std::vector<AckEntry> all = {
       {0x01, 0x02, "get_psdk_version", "3.1.2", 5, version_fields()},
       {0x01, 0x03, "link_handshake", "3.1.3", 2, {}},  // 2:(N+1): the command's bytes, N >= 1
       {0x01,
@@ -102,18 +110,6 @@ std::vector<AckEntry> build() {
         {"yaw_deg_s", 9, K::kF32, 0, 0.1}}},
       {0x05, 0xFF, "get_gimbal_capability", "3.5.10", 2, {{"supported", 1, K::kU8}}},
   };
-}
-
-uint32_t le(const Data& d, size_t at, size_t n) {
-  uint32_t v = 0;
-  for (size_t i = 0; i < n; ++i) v |= static_cast<uint32_t>(d.bytes[at + i]) << (8 * i);
-  return v;
-}
-
-}  // namespace
-
-const std::vector<AckEntry>& acks() {
-  static const std::vector<AckEntry> all = build();
   return all;
 }
 
