@@ -6,13 +6,30 @@
 
 #include <set>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "byte_checks.h"
 #include "field_recorder.h"
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/messages/ack.h"
 
 namespace k40t::testing {
+
+// Each request answers with the plain ACK, not with an ACK struct of its own.
+template <class... Requests>
+inline constexpr bool acked_plainly = (std::is_same_v<typename Requests::Ack, protocol::PlainAck> &&
+                                       ...);
+
+// A field by its name and member pointer, for tests that loop over several fields of one type:
+//   const NamedField<Msg, int> fields[] = {K40T_NAMED_FIELD(Msg, a), K40T_NAMED_FIELD(Msg, b)};
+template <class T, class F>
+struct NamedField {
+  const char* name;
+  F T::*member;
+};
+#define K40T_NAMED_FIELD(T, f) \
+  { #f, &T::f }
 
 template <class T>
 Result<T> decode_bytes(const std::vector<uint8_t>& payload,
@@ -36,6 +53,12 @@ void expect_round_trip(const T& message, const protocol::CodecOptions& options =
   EXPECT_TRUE(same_bytes(std::vector<uint8_t>(second->data(), second->data() + second->size),
                          std::vector<uint8_t>(first->data(), first->data() + first->size)))
       << "re-encoding the decoded message";
+}
+
+// expect_round_trip of each message, all with the same options.
+template <class... T>
+void expect_round_trips(const protocol::CodecOptions& options, const T&... messages) {
+  (expect_round_trip(messages, options), ...);
 }
 
 // encode_payload refuses `message`, naming `field` and the message in its error.

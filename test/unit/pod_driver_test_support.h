@@ -53,6 +53,15 @@ inline void wait_until_linked(FakePod& pod, PodDriver& driver) {
   ASSERT_GT(driver.stats().session.parser.frames_good, 0u) << "the driver never received a frame";
 }
 
+// make_driver, started and linked to `pod`.
+inline std::unique_ptr<PodDriver> started_driver(
+    FakePod& pod, const DriverOptions& o, PodDriver::Clock clock = [] { return kFixedNow; }) {
+  std::unique_ptr<PodDriver> driver = make_driver(o, std::move(clock));
+  EXPECT_TRUE(driver->start().is_ok());
+  wait_until_linked(pod, *driver);
+  return driver;
+}
+
 inline std::vector<SentFrame> wait_for_time_syncs(FakePod& pod, size_t n) {
   pod.wait_for(FakePod::count_of(protocol::TimeSyncRequest::kId, n), milliseconds(3000));
   return pod.frames_with_id(protocol::TimeSyncRequest::kId);

@@ -119,13 +119,8 @@ class TestPayload {
       a.supported = {true, true, false, true, true};
       return a;
     });
-    s.handle<SetCameraWorkMode>(
-        [this](const SetCameraWorkMode& c) { return lock_and([&] { mode_ = c.mode; }); });
-    s.handle<GetCameraWorkMode>([this](const GetCameraWorkMode&) {
-      CameraWorkModeAck a;
-      lock_and([&] { a.mode = mode_; });
-      return a;
-    });
+    serve_setting<SetCameraWorkMode, GetCameraWorkMode>(mode_, &SetCameraWorkMode::mode,
+                                                        &CameraWorkModeAck::mode);
     s.handle<ShootPhoto>([this](const ShootPhoto&) {
       return mode_ == CameraWorkMode::kShootPhoto ? AckCode::kOk : AckCode::kError;
     });
@@ -166,32 +161,16 @@ class TestPayload {
       a.focal_length_step_mm = 0.1;
       return a;
     });
-    s.handle<SetOpticalZoomFocalLength>([this](const SetOpticalZoomFocalLength& c) {
-      return lock_and([&] { focal_mm_ = c.focal_length_mm; });
-    });
-    s.handle<GetOpticalZoomFocalLength>([this](const GetOpticalZoomFocalLength&) {
-      OpticalZoomFocalLengthAck a;
-      lock_and([&] { a.focal_length_mm = focal_mm_; });
-      return a;
-    });
+    serve_setting<SetOpticalZoomFocalLength, GetOpticalZoomFocalLength>(
+        focal_mm_, &SetOpticalZoomFocalLength::focal_length_mm,
+        &OpticalZoomFocalLengthAck::focal_length_mm);
     s.handle<GetOpticalZoomFactor>(
         [](const GetOpticalZoomFactor&) { return OpticalZoomFactorAck{}; });
     s.handle<StartContinuousZoom>([](const StartContinuousZoom&) { return AckCode::kOk; });
     s.handle<StopContinuousZoom>([](const StopContinuousZoom&) { return AckCode::kOk; });
-    s.handle<SetFocusMode>(
-        [this](const SetFocusMode& c) { return lock_and([&] { focus_ = c.mode; }); });
-    s.handle<GetFocusMode>([this](const GetFocusMode&) {
-      FocusModeAck a;
-      lock_and([&] { a.mode = focus_; });
-      return a;
-    });
-    s.handle<SetMeteringMode>(
-        [this](const SetMeteringMode& c) { return lock_and([&] { metering_ = c.mode; }); });
-    s.handle<GetMeteringMode>([this](const GetMeteringMode&) {
-      MeteringModeAck a;
-      lock_and([&] { a.mode = metering_; });
-      return a;
-    });
+    serve_setting<SetFocusMode, GetFocusMode>(focus_, &SetFocusMode::mode, &FocusModeAck::mode);
+    serve_setting<SetMeteringMode, GetMeteringMode>(metering_, &SetMeteringMode::mode,
+                                                    &MeteringModeAck::mode);
     s.handle<GetGimbalCapability>([](const GetGimbalCapability&) {
       GimbalCapabilityAck a;
       a.supported = true;
@@ -217,6 +196,17 @@ class TestPayload {
     });
     s.handle<GetGimbalAdditionalStatus>(
         [](const GetGimbalAdditionalStatus&) { return GimbalAdditionalStatusAck{}; });
+  }
+  // A setting the payload keeps: Set's field `from` stores it, Get's ACK answers it in `to`.
+  template <class Set, class Get, class T, class SetOwner, class AckOwner>
+  void serve_setting(T& stored, T SetOwner::*from, T AckOwner::*to) {
+    session_->handle<Set>(
+        [this, &stored, from](const Set& c) { return lock_and([&] { stored = c.*from; }); });
+    session_->handle<Get>([this, &stored, to](const Get&) {
+      typename Get::Ack a;
+      lock_and([&] { a.*to = stored; });
+      return a;
+    });
   }
   template <class F>
   AckCode lock_and(F f) {

@@ -46,6 +46,12 @@ inline protocol::GimbalDialSpeedRequest dial_speed(double pitch_deg_s, double ya
   return request;
 }
 
+// The suite of most conformance tests: a quick pod behind a link.
+class SimConformance : public ::testing::Test {
+ protected:
+  SimLink link{quick_pod()};
+};
+
 // Turns the gimbal at full speed and waits until the attitude report shows it there.
 inline void aim(SimLink& link, double pitch_deg, double yaw_deg) {
   ASSERT_EQ(link.send(dial_speed(30, 30)), ResponseCode::kOk);

@@ -17,6 +17,7 @@
 namespace k40t::sim::testing {
 
 using k40t::testing::request_with;
+using protocol::ResponseCode;
 
 class PodHarness {
  public:
@@ -105,6 +106,13 @@ class PodHarness {
   PodModel pod;
   protocol::CodecOptions codec;
   EventQueue events;
+};
+
+// The tests that drive one default pod, `h`; a suite names it by an alias:
+//   using SimFocus = SimPodTest;  TEST_F(SimFocus, ...) { h.send(...); }
+class SimPodTest : public ::testing::Test {
+ protected:
+  PodHarness h;
 };
 
 }  // namespace k40t::sim::testing

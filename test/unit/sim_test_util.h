@@ -28,4 +28,12 @@ std::vector<Event> events_of(const EventQueue& events) {
   return out;
 }
 
+// The `state` of each event of type Event, in order.
+template <class Event>
+auto states_of(const EventQueue& events) {
+  std::vector<decltype(Event::state)> out;
+  for (const Event& e : events_of<Event>(events)) out.push_back(e.state);
+  return out;
+}
+
 }  // namespace k40t::sim::testing

@@ -3,6 +3,10 @@
 // precise re-shoot request built from physical units and the latest 0x000005.
 #include <gtest/gtest.h>
 
+#include <initializer_list>
+#include <utility>
+#include <vector>
+
 #include "k40t_driver/operations/camera_operations.h"
 
 namespace k40t::operations {
@@ -10,24 +14,45 @@ namespace {
 
 namespace p = protocol;
 
+// The phase `step_of` gives for a status frame with `field` set to each case's state.
+template <class Status, class State>
+void expect_phases(Step (*step_of)(const Status&), State Status::*field,
+                   std::initializer_list<std::pair<State, Phase>> cases) {
+  for (const auto& [state, phase] : cases) {
+    Status s;
+    s.*field = state;
+    EXPECT_EQ(step_of(s).phase, phase) << Status::kName << " state " << static_cast<int>(state);
+  }
+}
+
+// Feeds the operation a status frame with `field` set to each state in turn; the phase after each.
+template <class Op, class Status, class State>
+std::vector<Phase> phases_after(Result<Op>& op, State Status::*field,
+                                std::initializer_list<State> states) {
+  std::vector<Phase> phases;
+  for (State state : states) {
+    Status s;
+    s.*field = state;
+    op->on_status(s);
+    phases.push_back(op->tracker().phase());
+  }
+  return phases;
+}
+
 TEST(StatusSteps, ZoomStatus) {
-  p::ZoomStatus s;
-  s.progress = p::ZoomProgress::kZooming;
-  EXPECT_EQ(zoom_step(s).phase, Phase::kRunning);
-  s.progress = p::ZoomProgress::kDone;
-  EXPECT_EQ(zoom_step(s).phase, Phase::kSucceeded);
+  expect_phases(
+      zoom_step, &p::ZoomStatus::progress,
+      {{p::ZoomProgress::kZooming, Phase::kRunning}, {p::ZoomProgress::kDone, Phase::kSucceeded}});
 }
 
 TEST(StatusSteps, SdFormatStatus) {
+  expect_phases(sd_format_step, &p::SdFormatStatus::state,
+                {{p::SdFormatState::kFormatting, Phase::kRunning},
+                 {p::SdFormatState::kDone, Phase::kSucceeded},
+                 {p::SdFormatState::kFailed, Phase::kFailed},
+                 {p::SdFormatState::kUnavailable, Phase::kFailed}});
   p::SdFormatStatus s;
-  s.state = p::SdFormatState::kFormatting;
-  EXPECT_EQ(sd_format_step(s).phase, Phase::kRunning);
-  s.state = p::SdFormatState::kDone;
-  EXPECT_EQ(sd_format_step(s).phase, Phase::kSucceeded);
-  s.state = p::SdFormatState::kFailed;
-  EXPECT_EQ(sd_format_step(s).phase, Phase::kFailed);
   s.state = p::SdFormatState::kUnavailable;
-  EXPECT_EQ(sd_format_step(s).phase, Phase::kFailed);
   EXPECT_EQ(sd_format_step(s).text, "SD card unavailable");
 }
 
@@ -51,13 +76,10 @@ TEST(StatusSteps, PreciseReshootStatusEveryState) {
 
 TEST(StatusSteps, TfUpgradeStatus) {
   // Section 3.2.4.11: 0x01 upgrading, 0x02 failed, 0x00 succeeded.
-  p::TfCardUpgradeStatus s;
-  s.state = p::TfUpgradeState::kUpgrading;
-  EXPECT_EQ(tf_upgrade_step(s).phase, Phase::kRunning);
-  s.state = p::TfUpgradeState::kSucceeded;
-  EXPECT_EQ(tf_upgrade_step(s).phase, Phase::kSucceeded);
-  s.state = p::TfUpgradeState::kFailed;
-  EXPECT_EQ(tf_upgrade_step(s).phase, Phase::kFailed);
+  expect_phases(tf_upgrade_step, &p::TfCardUpgradeStatus::state,
+                {{p::TfUpgradeState::kUpgrading, Phase::kRunning},
+                 {p::TfUpgradeState::kSucceeded, Phase::kSucceeded},
+                 {p::TfUpgradeState::kFailed, Phase::kFailed}});
 }
 
 TEST(ZoomTo, ValidatesTheRatioAndEndsOnDone) {
@@ -75,13 +97,9 @@ TEST(ZoomTo, ValidatesTheRatioAndEndsOnDone) {
   zoom->on_visible(visible);
   EXPECT_EQ(zoom->ratio_x().value(), 4.2);
   zoom->tracker().acknowledged(true, "ok");
-  p::ZoomStatus status;
-  status.progress = p::ZoomProgress::kZooming;
-  zoom->on_status(status);
-  EXPECT_EQ(zoom->tracker().phase(), Phase::kRunning);
-  status.progress = p::ZoomProgress::kDone;
-  zoom->on_status(status);
-  EXPECT_EQ(zoom->tracker().phase(), Phase::kSucceeded);
+  EXPECT_EQ(phases_after(zoom, &p::ZoomStatus::progress,
+                         {p::ZoomProgress::kZooming, p::ZoomProgress::kDone}),
+            (std::vector{Phase::kRunning, Phase::kSucceeded}));
 }
 
 TEST(SdFormat, TimeoutChoice) {
@@ -138,13 +156,9 @@ TEST(PreciseReshoot, EndsOnTakenOrAFailureState) {
   Result<PreciseReshoot> shot = PreciseReshoot::create(goal, visible, 0);
   ASSERT_TRUE(shot);
   shot->tracker().acknowledged(true, "ok");
-  p::PreciseReshootStatus status;
-  status.state = p::ReshootState::kReshooting;
-  shot->on_status(status);
-  EXPECT_EQ(shot->tracker().phase(), Phase::kRunning);
-  status.state = p::ReshootState::kSdFull;
-  shot->on_status(status);
-  EXPECT_EQ(shot->tracker().phase(), Phase::kFailed);
+  EXPECT_EQ(phases_after(shot, &p::PreciseReshootStatus::state,
+                         {p::ReshootState::kReshooting, p::ReshootState::kSdFull}),
+            (std::vector{Phase::kRunning, Phase::kFailed}));
 }
 
 TEST(TfUpgrade, ProgressOnlyFromUpgradingFrames) {

@@ -79,21 +79,21 @@ double distance_m(const protocol::CameraGpsAck& ack, const geo::Geodetic& truth)
   return std::sqrt(d.east * d.east + d.north * d.north + d.up * d.up);
 }
 
-std::unique_ptr<PodDriver> linked_driver(FakePod& pod, const std::string& pty, bool match) {
+// A driver linked to `pod` that has been fed the whole flight.
+std::unique_ptr<PodDriver> flown_driver(FakePod& pod, const std::string& pty, bool match,
+                                        const Flight& flight) {
   DriverOptions o = options_for(pty);
   o.geotag_time_match = match;
-  std::unique_ptr<PodDriver> driver = make_driver(o, system_now_ns);
-  EXPECT_TRUE(driver->start().is_ok());
-  wait_until_linked(pod, *driver);
+  std::unique_ptr<PodDriver> driver = started_driver(pod, o, system_now_ns);
+  flight.feed(*driver);
   return driver;
 }
 
 TEST(GeotagTimeMatch, TheAnswerIsTheStateAtTheRequestedTime) {
   const std::string pty = unique_pty("geotag");
   FakePod pod(pty);
-  std::unique_ptr<PodDriver> driver = linked_driver(pod, pty, true);
   const Flight flight;
-  flight.feed(*driver);
+  std::unique_ptr<PodDriver> driver = flown_driver(pod, pty, true, flight);
   // A photo 1.55 s after the start (between two fixes), the pod's clock on the system's.
   const StampNs photo = flight.start + 1550 * kMs;
   const protocol::CameraGpsAck ack = ask(pod, request_at(photo / kMs), 1);
@@ -128,9 +128,8 @@ TEST(GeotagTimeMatch, TheAnswerIsTheStateAtTheRequestedTime) {
 TEST(GeotagTimeMatch, WithoutMatchingTheLatestStateAnswers) {
   const std::string pty = unique_pty("geotag_latest");
   FakePod pod(pty);
-  std::unique_ptr<PodDriver> driver = linked_driver(pod, pty, false);
   const Flight flight;
-  flight.feed(*driver);
+  std::unique_ptr<PodDriver> driver = flown_driver(pod, pty, false, flight);
   VehicleState latest = driver->vehicle_state();
   const geo::Geodetic last = flight.truth(flight.start + 3000 * kMs);
   latest.latitude_deg = last.latitude_deg;

@@ -42,9 +42,7 @@ protocol::CameraGpsAck answer_for_high_vehicle(bool clamp, DriverStats* stats) {
   FakePod pod(pty);
   DriverOptions o = options_for(pty);
   o.gps_clamp_height = clamp;
-  std::unique_ptr<PodDriver> driver = make_driver(o);
-  EXPECT_TRUE(driver->start().is_ok());
-  wait_until_linked(pod, *driver);
+  std::unique_ptr<PodDriver> driver = started_driver(pod, o);
   driver->set_vehicle_state(high_vehicle());
   const protocol::CameraGpsAck ack = gps_answer(pod, 1);
   *stats = driver->stats();
@@ -78,9 +76,7 @@ TEST(TimeSync, CarriesTheTimeZoneParameter) {
   DriverOptions o = options_for(pty);
   o.time_sync_period_s = 0.25;
   o.time_zone_minutes_west = -480;  // UTC+8
-  std::unique_ptr<PodDriver> driver = make_driver(o);
-  ASSERT_TRUE(driver->start().is_ok());
-  wait_until_linked(pod, *driver);
+  std::unique_ptr<PodDriver> driver = started_driver(pod, o);
   const std::vector<SentFrame> syncs = wait_for_time_syncs(pod, 1);
   ASSERT_GE(syncs.size(), 1u);
   // Section 3.2.4.13: int64 ms, then int32 tz_minuteswest low byte first: -480 = 20 FE FF FF.

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <type_traits>
 
 #include "golden_checks.h"
@@ -14,27 +15,17 @@
 namespace k40t::protocol {
 namespace {
 
-using testing::decode_bytes;
-using testing::decode_golden;
-using testing::expect_decode_error;
-using testing::expect_encodes_to;
-using testing::golden;
+using namespace testing;  // the checks of golden_checks.h and message_checks.h
 
 const char kGolden[] = "gimbal_laser_sbus.txt";
 
 // Every request names its ACK type; the data-carrying one is its own struct.
-static_assert(std::is_same_v<GimbalControlRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalAngleRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalDriftCalibrationRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalDialSpeedRequest::Ack, PlainAck>);
+static_assert(acked_plainly<GimbalControlRequest, GimbalAngleRequest, GimbalDriftCalibrationRequest,
+                            GimbalDialSpeedRequest, GimbalPointAtRequest, GimbalServoOffRequest,
+                            GimbalLinearCalibrationRequest, GimbalRestartRequest,
+                            GimbalUseFlightControllerAttitudeRequest,
+                            GimbalAccelerationCalibrationRequest, GimbalStabilisationRequest>);
 static_assert(std::is_same_v<GimbalVersionRequest::Ack, GimbalVersionAck>);
-static_assert(std::is_same_v<GimbalPointAtRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalServoOffRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalLinearCalibrationRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalRestartRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalUseFlightControllerAttitudeRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalAccelerationCalibrationRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<GimbalStabilisationRequest::Ack, PlainAck>);
 
 // ---- golden: 3.1.1.1 status -----------------------------------------------------------------
 TEST(GimbalGolden, StatusNibblesBitsAndStates) {
@@ -241,29 +232,21 @@ TEST(GimbalVersionAck, ByteOrderOfTheCodeFollowsTheOption) {
 }
 
 // ---- golden: 3.1.2.6 point at ---------------------------------------------------------------
-TEST(GimbalGolden, PointAtWideLens) {
-  GimbalPointAtRequest m;
-  m.lens = GimbalAimLens::kWide;
-  m.zoom_x = 4;
-  m.x_px = 1600;
-  m.y_px = 300;
-  expect_encodes_to(m, golden(kGolden, "gimbal_point_at", 0));
-  const auto d = decode_golden<GimbalPointAtRequest>(golden(kGolden, "gimbal_point_at", 0));
-  EXPECT_EQ(d.lens, GimbalAimLens::kWide);
-  EXPECT_DOUBLE_EQ(d.zoom_x, 4);
-  EXPECT_EQ(d.x_px, 1600);
-  EXPECT_EQ(d.y_px, 300);
-}
-
-TEST(GimbalGolden, PointAtTelephotoAtTheCorner) {
-  GimbalPointAtRequest m;
-  m.lens = GimbalAimLens::kTele;
-  m.zoom_x = 35.5;
-  m.x_px = 1920;
-  m.y_px = 1;
-  expect_encodes_to(m, golden(kGolden, "gimbal_point_at", 1));
-  EXPECT_DOUBLE_EQ(
-      decode_golden<GimbalPointAtRequest>(golden(kGolden, "gimbal_point_at", 1)).zoom_x, 35.5);
+TEST(GimbalGolden, PointAtBothFrames) {
+  const GimbalPointAtRequest frames[] = {
+      {GimbalAimLens::kWide, 4, 1600, 300},   // frame 0: the wide lens
+      {GimbalAimLens::kTele, 35.5, 1920, 1},  // frame 1: the telephoto at the corner
+  };
+  for (size_t i = 0; i < 2; ++i) {
+    SCOPED_TRACE("gimbal_point_at #" + std::to_string(i));
+    const GimbalPointAtRequest& m = frames[i];
+    expect_encodes_to(m, golden(kGolden, "gimbal_point_at", i));
+    const auto d = decode_golden<GimbalPointAtRequest>(golden(kGolden, "gimbal_point_at", i));
+    EXPECT_EQ(d.lens, m.lens);
+    EXPECT_DOUBLE_EQ(d.zoom_x, m.zoom_x);
+    EXPECT_EQ(d.x_px, m.x_px);
+    EXPECT_EQ(d.y_px, m.y_px);
+  }
 }
 
 // ---- golden: 3.1.2.12 stabilisation ---------------------------------------------------------

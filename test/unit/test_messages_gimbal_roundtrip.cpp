@@ -15,9 +15,7 @@
 namespace k40t::protocol {
 namespace {
 
-using testing::expect_range_error;
-using testing::expect_round_trip;
-using testing::golden;
+using namespace testing;  // the checks of golden_checks.h and message_checks.h
 
 // ---- round trips ----------------------------------------------------------------------------
 CodecOptions unusual_options() {
@@ -73,23 +71,12 @@ TEST(GimbalRoundTrip, EveryStruct) {
   GimbalStabilisationRequest stabilisation;
   stabilisation.enable = false;
 
-  for (const CodecOptions& o : {CodecOptions{}, unusual_options()}) {
-    expect_round_trip(status, o);
-    expect_round_trip(attitude, o);
-    expect_round_trip(control, o);
-    expect_round_trip(angle, o);
-    expect_round_trip(dial, o);
-    expect_round_trip(GimbalDriftCalibrationRequest{}, o);
-    expect_round_trip(GimbalVersionRequest{}, o);
-    expect_round_trip(version, o);
-    expect_round_trip(point, o);
-    expect_round_trip(GimbalServoOffRequest{}, o);
-    expect_round_trip(GimbalLinearCalibrationRequest{}, o);
-    expect_round_trip(GimbalRestartRequest{}, o);
-    expect_round_trip(GimbalUseFlightControllerAttitudeRequest{}, o);
-    expect_round_trip(GimbalAccelerationCalibrationRequest{}, o);
-    expect_round_trip(stabilisation, o);
-  }
+  for (const CodecOptions& o : {CodecOptions{}, unusual_options()})
+    expect_round_trips(o, status, attitude, control, angle, dial, GimbalDriftCalibrationRequest{},
+                       GimbalVersionRequest{}, version, point, GimbalServoOffRequest{},
+                       GimbalLinearCalibrationRequest{}, GimbalRestartRequest{},
+                       GimbalUseFlightControllerAttitudeRequest{},
+                       GimbalAccelerationCalibrationRequest{}, stabilisation);
 }
 
 TEST(GimbalRoundTrip, AngleWithoutMovementOnEitherAxis) {
@@ -101,49 +88,43 @@ TEST(GimbalRoundTrip, AngleWithoutMovementOnEitherAxis) {
 
 // ---- range errors: every validated field ----------------------------------------------------
 TEST(GimbalRanges, Status) {
-  GimbalStatus m;
-  m.gimbal_link = static_cast<GimbalLinkState>(2);
-  expect_range_error(m, "gimbal_link");
-  m = {};
-  m.camera_link = static_cast<GimbalLinkState>(16);
-  expect_range_error(m, "camera_link");
-  m = {};
-  m.upgrade = static_cast<GimbalUpgradeState>(3);
-  expect_range_error(m, "upgrade");
-  m = {};
-  m.stabilisation = static_cast<GimbalStabilisationState>(4);
-  expect_range_error(m, "stabilisation");
+  const GimbalStatus valid;
+  expect_range_error(valid, "gimbal_link",
+                     [](auto& m) { m.gimbal_link = static_cast<GimbalLinkState>(2); });
+  expect_range_error(valid, "camera_link",
+                     [](auto& m) { m.camera_link = static_cast<GimbalLinkState>(16); });
+  expect_range_error(valid, "upgrade",
+                     [](auto& m) { m.upgrade = static_cast<GimbalUpgradeState>(3); });
+  expect_range_error(valid, "stabilisation",
+                     [](auto& m) { m.stabilisation = static_cast<GimbalStabilisationState>(4); });
 }
 
 TEST(GimbalRanges, Attitude) {
-  double GimbalAttitude::*fields[] = {
-      &GimbalAttitude::joint_yaw_deg,   &GimbalAttitude::joint_roll_deg,
-      &GimbalAttitude::joint_pitch_deg, &GimbalAttitude::yaw_deg,
-      &GimbalAttitude::roll_deg,        &GimbalAttitude::pitch_deg,
-      &GimbalAttitude::yaw_rate_deg_s,  &GimbalAttitude::pitch_rate_deg_s,
-      &GimbalAttitude::roll_rate_deg_s};
-  const char* names[] = {"joint_yaw_deg",  "joint_roll_deg",   "joint_pitch_deg",
-                         "yaw_deg",        "roll_deg",         "pitch_deg",
-                         "yaw_rate_deg_s", "pitch_rate_deg_s", "roll_rate_deg_s"};
-  for (size_t i = 0; i < 9; ++i) {
+  const NamedField<GimbalAttitude, double> fields[] = {
+      K40T_NAMED_FIELD(GimbalAttitude, joint_yaw_deg),
+      K40T_NAMED_FIELD(GimbalAttitude, joint_roll_deg),
+      K40T_NAMED_FIELD(GimbalAttitude, joint_pitch_deg),
+      K40T_NAMED_FIELD(GimbalAttitude, yaw_deg),
+      K40T_NAMED_FIELD(GimbalAttitude, roll_deg),
+      K40T_NAMED_FIELD(GimbalAttitude, pitch_deg),
+      K40T_NAMED_FIELD(GimbalAttitude, yaw_rate_deg_s),
+      K40T_NAMED_FIELD(GimbalAttitude, pitch_rate_deg_s),
+      K40T_NAMED_FIELD(GimbalAttitude, roll_rate_deg_s)};
+  for (const auto& [name, field] : fields) {
     GimbalAttitude m;
-    m.*fields[i] = 327.68;  // int16 x100 ends at 327.67
-    expect_range_error(m, names[i]);
-    m.*fields[i] = -327.69;
-    expect_range_error(m, names[i]);
+    m.*field = 327.68;  // int16 x100 ends at 327.67
+    expect_range_error(m, name);
+    m.*field = -327.69;
+    expect_range_error(m, name);
   }
 }
 
 TEST(GimbalRanges, Control) {
-  GimbalControlRequest m;
-  m.mode = static_cast<GimbalMode>(3);
-  expect_range_error(m, "mode");
-  m = {};
-  m.yaw = static_cast<GimbalYawDirection>(3);
-  expect_range_error(m, "yaw");
-  m = {};
-  m.pitch = static_cast<GimbalPitchDirection>(9);
-  expect_range_error(m, "pitch");
+  const GimbalControlRequest valid;
+  expect_range_error(valid, "mode", [](auto& m) { m.mode = static_cast<GimbalMode>(3); });
+  expect_range_error(valid, "yaw", [](auto& m) { m.yaw = static_cast<GimbalYawDirection>(3); });
+  expect_range_error(valid, "pitch",
+                     [](auto& m) { m.pitch = static_cast<GimbalPitchDirection>(9); });
 }
 
 TEST(GimbalRanges, Angle) {
@@ -195,16 +176,10 @@ TEST(GimbalRanges, PointAt) {
       expect_range_error(m, "zoom_x");
     }
   }
-  m = {};
-  m.x_px = 0;
-  expect_range_error(m, "x_px");
-  m.x_px = 1921;
-  expect_range_error(m, "x_px");
-  m = {};
-  m.y_px = 0;
-  expect_range_error(m, "y_px");
-  m.y_px = 1081;
-  expect_range_error(m, "y_px");
+  for (int bad : {0, 1921})
+    expect_range_error(GimbalPointAtRequest{}, "x_px", [&](auto& r) { r.x_px = bad; });
+  for (int bad : {0, 1081})
+    expect_range_error(GimbalPointAtRequest{}, "y_px", [&](auto& r) { r.y_px = bad; });
 }
 
 // ---- catalogue ------------------------------------------------------------------------------

@@ -13,21 +13,13 @@
 namespace k40t::protocol {
 namespace {
 
-using testing::decode_bytes;
-using testing::decode_golden;
-using testing::expect_decode_error;
-using testing::expect_encodes_to;
-using testing::expect_range_error;
-using testing::expect_round_trip;
-using testing::golden;
+using namespace testing;  // the checks of golden_checks.h and message_checks.h
 
 const char kGolden[] = "gimbal_laser_sbus.txt";
 
 static_assert(std::is_same_v<LaserRangeRequest::Ack, LaserRangeAck>);
-static_assert(std::is_same_v<LaserPeriodicRangeRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<SbusRangeRequest::Ack, PlainAck>);
-static_assert(std::is_same_v<SbusChannelsRequest::Ack, PlainAck>);
 static_assert(std::is_same_v<SbusConfigRequest::Ack, SbusConfigAck>);
+static_assert(acked_plainly<LaserPeriodicRangeRequest, SbusRangeRequest, SbusChannelsRequest>);
 
 CodecOptions little_endian_acks() {
   CodecOptions o;
@@ -203,16 +195,9 @@ TEST(LaserSbusRoundTrip, EveryStruct) {
   config.range = range;
   config.channels = channels;
 
-  for (const CodecOptions& o : {CodecOptions{}, little_endian_acks()}) {
-    expect_round_trip(single, o);
-    expect_round_trip(ack, o);
-    expect_round_trip(periodic, o);
-    expect_round_trip(status, o);
-    expect_round_trip(range, o);
-    expect_round_trip(channels, o);
-    expect_round_trip(SbusConfigRequest{}, o);
-    expect_round_trip(config, o);
-  }
+  for (const CodecOptions& o : {CodecOptions{}, little_endian_acks()})
+    expect_round_trips(o, single, ack, periodic, status, range, channels, SbusConfigRequest{},
+                       config);
 }
 
 // ---- range errors ---------------------------------------------------------------------------
@@ -228,35 +213,34 @@ TEST(LaserRanges, Distance) {
 }
 
 TEST(SbusRanges, RangeValues) {
-  SbusRangeRequest m;
-  m.max_value = 2048;
-  expect_range_error(m, "max_value");
-  m = {};
-  m.min_value = 2048;
-  expect_range_error(m, "min_value");
-  m.max_value = 1000;
-  m.min_value = 1000;  // must be strictly less
-  expect_range_error(m, "min_value");
-  m.min_value = 1001;
-  expect_range_error(m, "min_value");
+  const SbusRangeRequest valid;
+  expect_range_error(valid, "max_value", [](auto& m) { m.max_value = 2048; });
+  expect_range_error(valid, "min_value", [](auto& m) { m.min_value = 2048; });
+  // The minimum must be strictly less than the maximum.
+  expect_range_error(valid, "min_value", [](auto& m) { m.max_value = m.min_value = 1000; });
+  expect_range_error(valid, "min_value", [](auto& m) {
+    m.max_value = 1000;
+    m.min_value = 1001;
+  });
 }
 
 TEST(SbusRanges, EveryChannel) {
-  int SbusChannelsRequest::*fields[] = {
-      &SbusChannelsRequest::stream_channel, &SbusChannelsRequest::zoom_channel,
-      &SbusChannelsRequest::photo_channel,  &SbusChannelsRequest::record_channel,
-      &SbusChannelsRequest::pitch_channel,  &SbusChannelsRequest::yaw_channel,
-      &SbusChannelsRequest::centre_channel};
-  const char* names[] = {"stream_channel", "zoom_channel", "photo_channel", "record_channel",
-                         "pitch_channel",  "yaw_channel",  "centre_channel"};
-  for (size_t i = 0; i < 7; ++i) {
+  const NamedField<SbusChannelsRequest, int> fields[] = {
+      K40T_NAMED_FIELD(SbusChannelsRequest, stream_channel),
+      K40T_NAMED_FIELD(SbusChannelsRequest, zoom_channel),
+      K40T_NAMED_FIELD(SbusChannelsRequest, photo_channel),
+      K40T_NAMED_FIELD(SbusChannelsRequest, record_channel),
+      K40T_NAMED_FIELD(SbusChannelsRequest, pitch_channel),
+      K40T_NAMED_FIELD(SbusChannelsRequest, yaw_channel),
+      K40T_NAMED_FIELD(SbusChannelsRequest, centre_channel)};
+  for (const auto& [name, field] : fields) {
     for (int bad : {0, 17}) {
       SbusChannelsRequest m;
-      m.*fields[i] = bad;
-      expect_range_error(m, names[i]);
+      m.*field = bad;
+      expect_range_error(m, name);
       SbusConfigAck ack;
-      ack.channels.*fields[i] = bad;
-      expect_range_error(ack, names[i]);
+      ack.channels.*field = bad;
+      expect_range_error(ack, name);
     }
   }
   SbusConfigAck ack;

@@ -42,9 +42,7 @@ TEST(PodDriver, StampIsReceptionMinusWireTime) {
 TEST(PodDriver, GpsRequestIsAnsweredFromTheVehicleState) {
   const std::string pty = unique_pty("gps");
   FakePod pod(pty);
-  std::unique_ptr<PodDriver> driver = make_driver(options_for(pty));
-  ASSERT_TRUE(driver->start().is_ok());
-  wait_until_linked(pod, *driver);
+  std::unique_ptr<PodDriver> driver = started_driver(pod, options_for(pty));
   protocol::CameraGpsRequest request;
   request.hour = 13;
   request.minute = 14;
@@ -98,9 +96,7 @@ TEST(PodDriver, GpsRequestIsAnsweredFromTheVehicleState) {
 TEST(PodDriver, RateCommandsStopHalfASecondAfterTheLast) {
   const std::string pty = unique_pty("deadman");
   FakePod pod(pty);
-  std::unique_ptr<PodDriver> driver = make_driver(options_for(pty));
-  ASSERT_TRUE(driver->start().is_ok());
-  wait_until_linked(pod, *driver);
+  std::unique_ptr<PodDriver> driver = started_driver(pod, options_for(pty));
 
   const auto commanded = std::chrono::steady_clock::now();
   driver->command_rate(10.0, 0.0);

@@ -3,6 +3,9 @@
 // types (a text never becomes a bool).
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
+
 #include "k40t_driver/driver/pod_health.h"
 
 namespace k40t::driver {
@@ -24,6 +27,12 @@ LinkContext live(double silence_timeout_s = 0.5) {
   return c;
 }
 
+// A check's level with its summary: one expectation per state, and a failure shows both.
+using Shown = std::pair<HealthLevel, std::string>;
+Shown shown(const HealthCheck& check) {
+  return {check.level, check.summary};
+}
+
 template <class T>
 T value_of(const HealthCheck& check, const std::string& key) {
   const HealthValue* v = check.value(key);
@@ -34,17 +43,14 @@ T value_of(const HealthCheck& check, const std::string& key) {
 }
 
 TEST(PodHealthLink, LevelFollowsTheLinkAndTheSilence) {
-  EXPECT_EQ(link_health(connected_stats(0.1), live()).level, HealthLevel::kOk);
-  EXPECT_EQ(link_health(connected_stats(0.1), live()).summary, "receiving");
+  EXPECT_EQ(shown(link_health(connected_stats(0.1), live())), Shown(HealthLevel::kOk, "receiving"));
   // Silent longer than silence_timeout: ERROR, the silence to 0.1 s.
   const HealthCheck silent = link_health(connected_stats(0.84), live());
-  EXPECT_EQ(silent.level, HealthLevel::kError);
-  EXPECT_EQ(silent.summary, "pod silent for 0.8 s");
+  EXPECT_EQ(shown(silent), Shown(HealthLevel::kError, "pod silent for 0.8 s"));
   // The same silence under a longer timeout is fine.
   EXPECT_EQ(link_health(connected_stats(0.84), live(1.0)).level, HealthLevel::kOk);
   const HealthCheck nothing = link_health(connected_stats(-1), live());
-  EXPECT_EQ(nothing.level, HealthLevel::kError);
-  EXPECT_EQ(nothing.summary, "connected, but the pod has sent nothing");
+  EXPECT_EQ(shown(nothing), Shown(HealthLevel::kError, "connected, but the pod has sent nothing"));
 }
 
 TEST(PodHealthLink, ADownLinkIsAnErrorNamingWhy) {
@@ -52,8 +58,8 @@ TEST(PodHealthLink, ADownLinkIsAnErrorNamingWhy) {
   s.session.link_state = transport::LinkState::kReconnecting;
   s.session.link.last_error = "open /dev/ttyUSB0: No such file or directory";
   HealthCheck check = link_health(s, live());
-  EXPECT_EQ(check.level, HealthLevel::kError);
-  EXPECT_EQ(check.summary, "link reconnecting: open /dev/ttyUSB0: No such file or directory");
+  EXPECT_EQ(shown(check), Shown(HealthLevel::kError,
+                                "link reconnecting: open /dev/ttyUSB0: No such file or directory"));
   s.session.link_state = transport::LinkState::kConnecting;
   s.session.link.last_error.clear();
   check = link_health(s, live());
@@ -66,8 +72,7 @@ TEST(PodHealthLink, ReplayIsAlwaysOk) {
   replay.replay = true;
   DriverStats s;  // closed link, no frame: in replay that is just "no frame yet"
   HealthCheck check = link_health(s, replay);
-  EXPECT_EQ(check.level, HealthLevel::kOk);
-  EXPECT_EQ(check.summary, "replay: no frame yet");
+  EXPECT_EQ(shown(check), Shown(HealthLevel::kOk, "replay: no frame yet"));
   EXPECT_EQ(value_of<std::string>(check, "device"), "replay of raw/rx");
   s.seconds_since_last_frame = 30;
   EXPECT_EQ(link_health(s, replay).summary, "replay");
@@ -91,16 +96,14 @@ TEST(PodHealthLink, CountersKeepTheirNamesAndTypes) {
 }
 
 TEST(PodHealthSelfTest, FailedSensorsAreNamedInOrder) {
-  EXPECT_EQ(self_test_health(std::nullopt).level, HealthLevel::kWarn);
-  EXPECT_EQ(self_test_health(std::nullopt).summary, "no gimbal status report yet");
+  EXPECT_EQ(shown(self_test_health(std::nullopt)),
+            Shown(HealthLevel::kWarn, "no gimbal status report yet"));
   p::GimbalStatus g;
-  EXPECT_EQ(self_test_health(g).level, HealthLevel::kOk);
-  EXPECT_EQ(self_test_health(g).summary, "all sensors passed");
+  EXPECT_EQ(shown(self_test_health(g)), Shown(HealthLevel::kOk, "all sensors passed"));
   g.laser_ok = false;
   g.tele_ok = false;
   const HealthCheck failed = self_test_health(g);
-  EXPECT_EQ(failed.level, HealthLevel::kError);
-  EXPECT_EQ(failed.summary, "self-test failed: tele, laser");
+  EXPECT_EQ(shown(failed), Shown(HealthLevel::kError, "self-test failed: tele, laser"));
   EXPECT_EQ(value_of<std::string>(failed, "laser"), "FAILED");
   EXPECT_EQ(value_of<std::string>(failed, "thermal"), "passed");
 }
@@ -108,12 +111,12 @@ TEST(PodHealthSelfTest, FailedSensorsAreNamedInOrder) {
 TEST(PodHealthSelfTest, LinksAndUpgrade) {
   p::GimbalStatus g;
   g.camera_link = p::GimbalLinkState::kAbnormal;
-  EXPECT_EQ(self_test_health(g).level, HealthLevel::kError);
-  EXPECT_EQ(self_test_health(g).summary, "gimbal or camera connection abnormal");
+  EXPECT_EQ(shown(self_test_health(g)),
+            Shown(HealthLevel::kError, "gimbal or camera connection abnormal"));
   g.camera_link = p::GimbalLinkState::kNormal;
   g.upgrade = p::GimbalUpgradeState::kFirmwareUpgradeIncomplete;
-  EXPECT_EQ(self_test_health(g).level, HealthLevel::kWarn);
-  EXPECT_EQ(self_test_health(g).summary, "firmware upgrade not completed");
+  EXPECT_EQ(shown(self_test_health(g)),
+            Shown(HealthLevel::kWarn, "firmware upgrade not completed"));
   g.upgrade = static_cast<p::GimbalUpgradeState>(9);  // not in the document
   EXPECT_EQ(value_of<std::string>(self_test_health(g), "upgrade"), "unknown");
 }
@@ -160,34 +163,31 @@ TEST(PodHealthSdCard, AbnormalAndFormatErrorsAreErrors) {
 TEST(PodHealthAlarms, ActiveAlarmsAreListed) {
   EXPECT_EQ(alarms_health(std::nullopt).summary, "no thermal report yet");
   p::ThermalStatus t;
-  EXPECT_EQ(alarms_health(t).level, HealthLevel::kOk);
-  EXPECT_EQ(alarms_health(t).summary, "no alarm");
+  EXPECT_EQ(shown(alarms_health(t)), Shown(HealthLevel::kOk, "no alarm"));
   t.high_alarm = true;
   t.threshold_alarm = true;
   const HealthCheck check = alarms_health(t);
-  EXPECT_EQ(check.level, HealthLevel::kWarn);
-  EXPECT_EQ(check.summary, "alarm: high temperature, threshold");
+  EXPECT_EQ(shown(check), Shown(HealthLevel::kWarn, "alarm: high temperature, threshold"));
   EXPECT_TRUE(value_of<bool>(check, "high temperature"));
   EXPECT_FALSE(value_of<bool>(check, "low temperature"));
 }
 
 TEST(PodHealthSettings, EachStateHasItsText) {
   SettingsState s;
-  EXPECT_EQ(settings_health(s).level, HealthLevel::kWarn);
-  EXPECT_EQ(settings_health(s).summary, "settings not read from the pod yet");
+  EXPECT_EQ(shown(settings_health(s)),
+            Shown(HealthLevel::kWarn, "settings not read from the pod yet"));
   s.reads = 1;
   s.read_message = "thermal_get_settings: ACK timeout";
   EXPECT_EQ(settings_health(s).summary,
             "settings read-back incomplete: thermal_get_settings: ACK timeout");
   s.read_ok = true;
   s.last_refusal = "palette: NACK";
-  EXPECT_EQ(settings_health(s).level, HealthLevel::kWarn);
-  EXPECT_EQ(settings_health(s).summary, "last change refused and reverted: palette: NACK");
+  EXPECT_EQ(shown(settings_health(s)),
+            Shown(HealthLevel::kWarn, "last change refused and reverted: palette: NACK"));
   s.last_refusal.clear();
   s.changes_applied = 4;
   const HealthCheck ok = settings_health(s);
-  EXPECT_EQ(ok.level, HealthLevel::kOk);
-  EXPECT_EQ(ok.summary, "in sync with the pod");
+  EXPECT_EQ(shown(ok), Shown(HealthLevel::kOk, "in sync with the pod"));
   EXPECT_EQ(value_of<uint64_t>(ok, "changes applied"), 4u);
   EXPECT_EQ(value_of<uint64_t>(ok, "read-backs"), 1u);
 }

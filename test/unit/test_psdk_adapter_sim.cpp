@@ -160,14 +160,24 @@ TEST(PsdkAdapterSim, DelayedAcksStillArrive) {
   EXPECT_EQ(rig.adapter->stats().acks_delayed, 1u);
 }
 
+// Once the attitude pushes flow, starts `fault` and expects no push for `quiet` (after 50 ms for
+// the frames already in flight); returns the count the pushes stopped at.
+template <class Fault>
+uint64_t expect_pushes_stop(Rig& rig, Fault fault, std::chrono::milliseconds quiet) {
+  EXPECT_TRUE(eventually([&] { return rig.payload->pushes(AttitudePush::kName) > 0; }));
+  fault();
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  const uint64_t before = rig.payload->pushes(AttitudePush::kName);
+  std::this_thread::sleep_for(quiet);
+  EXPECT_EQ(rig.payload->pushes(AttitudePush::kName), before);
+  return before;
+}
+
 TEST(PsdkAdapterSim, SilenceStopsThePushes) {
   Rig rig = make_rig(default_options());
-  EXPECT_TRUE(eventually([&] { return rig.payload->pushes(AttitudePush::kName) > 0; }));
-  rig.adapter->silence_for(std::chrono::hours(1));
-  std::this_thread::sleep_for(std::chrono::milliseconds(50));  // let frames in flight land
-  const uint64_t before = rig.payload->pushes(AttitudePush::kName);
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  EXPECT_EQ(rig.payload->pushes(AttitudePush::kName), before);
+  expect_pushes_stop(
+      rig, [&] { rig.adapter->silence_for(std::chrono::hours(1)); },
+      std::chrono::milliseconds(200));
   EXPECT_GT(rig.adapter->stats().byte_faults.writes_silenced, 0u);
 }
 
@@ -179,12 +189,9 @@ namespace {
 
 TEST(PsdkAdapterSim, DisconnectStopsThePushesUntilTheLinkIsBack) {
   Rig rig = make_rig(default_options());
-  EXPECT_TRUE(eventually([&] { return rig.payload->pushes(AttitudePush::kName) > 0; }));
-  rig.adapter->disconnect_for(std::chrono::seconds(1));
-  std::this_thread::sleep_for(std::chrono::milliseconds(50));  // let frames in flight land
-  const uint64_t before = rig.payload->pushes(AttitudePush::kName);
-  std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  EXPECT_EQ(rig.payload->pushes(AttitudePush::kName), before);
+  const uint64_t before = expect_pushes_stop(
+      rig, [&] { rig.adapter->disconnect_for(std::chrono::seconds(1)); },
+      std::chrono::milliseconds(100));
   EXPECT_TRUE(eventually([&] { return rig.payload->pushes(AttitudePush::kName) > before + 10; }));
   const AdapterStats stats = rig.adapter->stats();
   EXPECT_EQ(stats.byte_faults.disconnects, 1u);

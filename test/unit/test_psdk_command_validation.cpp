@@ -6,9 +6,12 @@
 #include <cmath>
 
 #include "k40t_driver/psdk/commands/all.h"
+#include "request_with.h"
 
 namespace k40t::psdk {
 namespace {
+
+using testing::request_with;
 
 template <class T>
 std::string encode_error(const T& m) {
@@ -53,9 +56,9 @@ TEST(PsdkValidation, EnumCodesTheDocumentDefines) {
   const std::string e = encode_error(m);
   EXPECT_MENTIONS(e, "'type' has no code 2");
   EXPECT_MENTIONS(e, "1 (single), 4 (burst), 6 (interval)");
-  StartContinuousZoom z;
-  z.speed = static_cast<ZoomSpeed>(79);
-  EXPECT_MENTIONS(encode_error(z), "'speed' has no code 79");
+  EXPECT_MENTIONS(
+      encode_error(request_with(&StartContinuousZoom::speed, static_cast<ZoomSpeed>(79))),
+      "'speed' has no code 79");
 }
 
 TEST(PsdkValidation, IntervalShootingNeedsCountAndInterval) {
@@ -87,15 +90,13 @@ TEST(PsdkValidation, BitFieldRanges) {
 }
 
 TEST(PsdkValidation, FocusZoneAndZoomFactors) {
-  SetFocusZone f;
-  f.x = 1.5f;
-  EXPECT_MENTIONS(encode_error(f), "'x' must be 0..1");
-  SetDigitalZoomFactor d;
-  d.factor_x = 0.5f;
-  EXPECT_MENTIONS(encode_error(d), "'factor_x' must be 1..");
-  OpticalZoomFactorAck o;
-  o.factor_x = 31.0f;
-  EXPECT_MENTIONS(encode_error(o), "'factor_x' must be 1..30");
+  EXPECT_MENTIONS(encode_error(request_with<SetFocusZone>(&SetFocusZone::x, 1.5f)),
+                  "'x' must be 0..1");
+  EXPECT_MENTIONS(
+      encode_error(request_with<SetDigitalZoomFactor>(&SetDigitalZoomFactor::factor_x, 0.5f)),
+      "'factor_x' must be 1..");
+  EXPECT_MENTIONS(encode_error(request_with(&OpticalZoomFactorAck::factor_x, 31.0f)),
+                  "'factor_x' must be 1..30");
 }
 
 TEST(PsdkValidation, TextMustLeaveRoomForItsTerminator) {
@@ -139,12 +140,10 @@ TEST(PsdkValidation, WidgetLists) {
   m.type = WidgetType::kButton;
   m.choose_items[0].clear();
   EXPECT_MENTIONS(encode_error(m), "unless the widget is a choose list");
-  WidgetGroupDataAck g;
-  g.count = 16;
-  EXPECT_MENTIONS(encode_error(g), "'count' must be 1..15");
-  GetWidgetGroupData d;
-  d.group = 2;
-  EXPECT_MENTIONS(encode_error(d), "'group' must be 0..1");
+  EXPECT_MENTIONS(encode_error(request_with(&WidgetGroupDataAck::count, 16)),
+                  "'count' must be 1..15");
+  EXPECT_MENTIONS(encode_error(request_with(&GetWidgetGroupData::group, 2)),
+                  "'group' must be 0..1");
 }
 
 TEST(PsdkValidation, PositionCountsAndOffsets) {
@@ -167,9 +166,8 @@ TEST(PsdkValidation, DateFields) {
   AppDateTimePush m;
   m.time.month = 13;
   EXPECT_MENTIONS(encode_error(m), "'month' must be 1..12");
-  UtcTimePush u;
-  u.microsecond = 1000000;
-  EXPECT_MENTIONS(encode_error(u), "'microsecond' must be 0..999999 us");
+  EXPECT_MENTIONS(encode_error(request_with(&UtcTimePush::microsecond, 1000000)),
+                  "'microsecond' must be 0..999999 us");
 }
 
 TEST(PsdkDecoding, ShortDataNamesTheStruct) {

@@ -13,6 +13,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "field_recorder.h"
 #include "golden_file.h"
@@ -153,28 +154,30 @@ void check_frame(const GoldenFrame& golden) {
       << "the frame layer does not give back the frame written by hand";
 }
 
-TEST(PsdkGoldenFrames, EveryFrameDecodesAndEncodesBackByteForByte) {
-  size_t count = 0;
+// Every frame of every PSDK golden file; a file that cannot be read fails the test.
+std::vector<GoldenFrame> all_golden_frames() {
+  std::vector<GoldenFrame> all;
   for (const std::string& path : test::psdk_golden_paths()) {
     const Result<std::vector<GoldenFrame>> frames = testing::read_golden_file(path);
-    ASSERT_TRUE(frames) << frames.error();
-    for (const GoldenFrame& frame : frames.value()) {
-      EXPECT_FALSE(frame.name.empty()) << frame.where() << ": no title '# <section> <name>:'";
-      check_frame(frame);
-      ++count;
-    }
+    EXPECT_TRUE(frames) << frames.error();
+    if (frames) all.insert(all.end(), frames->begin(), frames->end());
   }
-  EXPECT_GT(count, 0u);
+  return all;
+}
+
+TEST(PsdkGoldenFrames, EveryFrameDecodesAndEncodesBackByteForByte) {
+  const std::vector<GoldenFrame> frames = all_golden_frames();
+  for (const GoldenFrame& frame : frames) {
+    EXPECT_FALSE(frame.name.empty()) << frame.where() << ": no title '# <section> <name>:'";
+    check_frame(frame);
+  }
+  EXPECT_GT(frames.size(), 0u);
 }
 
 TEST(PsdkGoldenFrames, SomeFramesAreEncrypted) {
   size_t encrypted = 0;
-  for (const std::string& path : test::psdk_golden_paths()) {
-    const Result<std::vector<GoldenFrame>> frames = testing::read_golden_file(path);
-    ASSERT_TRUE(frames) << frames.error();
-    for (const GoldenFrame& frame : frames.value()) {
-      if (frame.bytes.size() > 4 && frame.bytes[4] >> 5 == 1) ++encrypted;
-    }
+  for (const GoldenFrame& frame : all_golden_frames()) {
+    if (frame.bytes.size() > 4 && frame.bytes[4] >> 5 == 1) ++encrypted;
   }
   EXPECT_GE(encrypted, 2u) << "an encrypted command and an encrypted ACK at least";
 }

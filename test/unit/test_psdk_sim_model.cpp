@@ -126,41 +126,40 @@ std::unique_ptr<FaultyTransport> faulty_over(testing::FakeLink*& raw, ByteFaults
   return std::make_unique<FaultyTransport>(std::move(link), faults);
 }
 
-TEST(PsdkSimFaults, CorruptionShowsUpAsCrcErrors) {
+// `count` GetVersion frames sent through a FaultyTransport with `faults`, and what a parser makes
+// of the bytes that reached the link.
+struct FaultyRun {
+  FaultyRun(ByteFaults faults, int count) : faulty(faulty_over(link, faults)) {
+    EXPECT_TRUE(faulty->open());
+    for (int i = 0; i < count; ++i)
+      EXPECT_TRUE(faulty->send(testing::kGetVersion.data(), testing::kGetVersion.size()));
+    for (const auto& write : link->sent())
+      parser.feed(write.data(), write.size(), [&](const FrameView&) { ++good; });
+    faulty->close();
+  }
   testing::FakeLink* link = nullptr;
-  ByteFaults faults;
-  faults.corrupt_rate = 0.05;
-  auto faulty = faulty_over(link, faults);
-  ASSERT_TRUE(faulty->open());
-  for (int i = 0; i < 200; ++i)
-    ASSERT_TRUE(faulty->send(testing::kGetVersion.data(), testing::kGetVersion.size()));
+  std::unique_ptr<FaultyTransport> faulty;
   FrameParser parser;
   size_t good = 0;
-  for (const auto& write : link->sent())
-    parser.feed(write.data(), write.size(), [&](const FrameView&) { ++good; });
-  const ParserStats& p = parser.stats();
-  EXPECT_GT(faulty->fault_stats().bytes_corrupted, 0u);
-  EXPECT_LT(good, 200u);
+};
+
+TEST(PsdkSimFaults, CorruptionShowsUpAsCrcErrors) {
+  ByteFaults faults;
+  faults.corrupt_rate = 0.05;
+  const FaultyRun run(faults, 200);
+  const ParserStats& p = run.parser.stats();
+  EXPECT_GT(run.faulty->fault_stats().bytes_corrupted, 0u);
+  EXPECT_LT(run.good, 200u);
   EXPECT_GT(p.header_crc_errors + p.frame_crc_errors + p.length_errors + p.version_errors, 0u);
-  faulty->close();
 }
 
 TEST(PsdkSimFaults, GarbageBetweenFramesLosesNoFrame) {
-  testing::FakeLink* link = nullptr;
   ByteFaults faults;
   faults.garbage_rate = 1.0;
-  auto faulty = faulty_over(link, faults);
-  ASSERT_TRUE(faulty->open());
-  for (int i = 0; i < 100; ++i)
-    ASSERT_TRUE(faulty->send(testing::kGetVersion.data(), testing::kGetVersion.size()));
-  FrameParser parser;
-  size_t good = 0;
-  for (const auto& write : link->sent())
-    parser.feed(write.data(), write.size(), [&](const FrameView&) { ++good; });
-  EXPECT_EQ(good, 100u);
-  EXPECT_EQ(faulty->fault_stats().garbage_bursts, 100u);
-  EXPECT_EQ(parser.stats().bytes_discarded, faulty->fault_stats().garbage_bytes);
-  faulty->close();
+  const FaultyRun run(faults, 100);
+  EXPECT_EQ(run.good, 100u);
+  EXPECT_EQ(run.faulty->fault_stats().garbage_bursts, 100u);
+  EXPECT_EQ(run.parser.stats().bytes_discarded, run.faulty->fault_stats().garbage_bytes);
 }
 
 TEST(PsdkSimFaults, SilenceWritesNothing) {

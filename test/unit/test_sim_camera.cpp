@@ -9,6 +9,7 @@ namespace k40t::sim {
 namespace {
 
 using testing::events_of;
+using testing::states_of;
 
 // CameraModel::step has an extra argument (optics busy).
 struct Stepper {
@@ -27,9 +28,14 @@ CameraConfig small_card(double capacity_mb) {
   return config;
 }
 
-TEST(SimCamera, PhotoInVideoModeAndRecordingInPhotoModeAreRefused) {
+// A camera with the default configuration and the queue its events go to.
+class SimCamera : public ::testing::Test {
+ protected:
   CameraModel camera;
   EventQueue events;
+};
+
+TEST_F(SimCamera, PhotoInVideoModeAndRecordingInPhotoModeAreRefused) {
   EXPECT_EQ(camera.start_recording(0, "", ""), Outcome::kFailure);  // photo mode
   ASSERT_EQ(camera.set_capture_mode(CaptureMode::kVideo), Outcome::kOk);
   EXPECT_EQ(camera.take_photo(0, "", ""), Outcome::kFailure);
@@ -51,8 +57,7 @@ TEST(SimCamera, PhotoInVideoModeAndRecordingInPhotoModeAreRefused) {
   EXPECT_EQ(camera.set_photo_mode(PhotoMode::kSingle, 5, 3), Outcome::kPhotoInProgress);
 }
 
-TEST(SimCamera, CardConditionsRefuseWithTheirCodes) {
-  CameraModel camera;
+TEST_F(SimCamera, CardConditionsRefuseWithTheirCodes) {
   camera.sd().remove();
   EXPECT_EQ(camera.take_photo(0, "", ""), Outcome::kNoSdCard);
   EXPECT_EQ(camera.format_sd(), Outcome::kNoSdCard);
@@ -66,8 +71,7 @@ TEST(SimCamera, CardConditionsRefuseWithTheirCodes) {
   EXPECT_EQ(camera.format_sd(), Outcome::kBusy);
 }
 
-TEST(SimCamera, PhotoModeParametersAreChecked) {
-  CameraModel camera;
+TEST_F(SimCamera, PhotoModeParametersAreChecked) {
   EXPECT_EQ(camera.set_photo_mode(PhotoMode::kBurst, 0, 4), Outcome::kFailure);
   EXPECT_EQ(camera.set_photo_mode(PhotoMode::kTimeLapse, 6, 0), Outcome::kFailure);
   ASSERT_EQ(camera.set_photo_mode(PhotoMode::kBurst, 0, 5), Outcome::kOk);
@@ -75,7 +79,7 @@ TEST(SimCamera, PhotoModeParametersAreChecked) {
   EXPECT_EQ(camera.settings().time_lapse_interval_s, 5);  // unchanged default
 }
 
-TEST(SimCamera, SdCardFillsWithPhotosUntilNoSpace) {
+TEST(SimCameraSmallCard, SdCardFillsWithPhotosUntilNoSpace) {
   CameraModel camera(small_card(60));  // 4000x3000 visible 6 MB + IR 1 MB per photo
   EventQueue events;
   int taken = 0;
@@ -95,9 +99,7 @@ TEST(SimCamera, SdCardFillsWithPhotosUntilNoSpace) {
   EXPECT_EQ(camera.sd().state(), SdState::kFull);
 }
 
-TEST(SimCamera, SingleShotSendsNoStatusFrameButAsksForGps) {
-  CameraModel camera;
-  EventQueue events;
+TEST_F(SimCamera, SingleShotSendsNoStatusFrameButAsksForGps) {
   ASSERT_EQ(camera.take_photo(2, "", ""), Outcome::kOk);
   run(camera, 1.0, events);
   EXPECT_TRUE(events_of<PhotoStatusEvent>(events).empty());  // section 3.2.4.3
@@ -118,9 +120,7 @@ TEST(SimCamera, SingleShotSendsNoStatusFrameButAsksForGps) {
   EXPECT_EQ(status[1].count, 1);
 }
 
-TEST(SimCamera, BurstReportsEachShotThenDone) {
-  CameraModel camera;
-  EventQueue events;
+TEST_F(SimCamera, BurstReportsEachShotThenDone) {
   ASSERT_EQ(camera.set_photo_mode(PhotoMode::kBurst, 0, 3), Outcome::kOk);
   ASSERT_EQ(camera.take_photo(1, "survey", "roof"), Outcome::kOk);
   run(camera, 2.0, events);
@@ -139,9 +139,7 @@ TEST(SimCamera, BurstReportsEachShotThenDone) {
   EXPECT_EQ(camera.photos()[2].path, "survey/roof_3.jpg");
 }
 
-TEST(SimCamera, TimeLapseShootsEveryIntervalUntilStopped) {
-  CameraModel camera;
-  EventQueue events;
+TEST_F(SimCamera, TimeLapseShootsEveryIntervalUntilStopped) {
   ASSERT_EQ(camera.set_photo_mode(PhotoMode::kTimeLapse, 7, 0), Outcome::kOk);
   ASSERT_EQ(camera.take_photo(0, "", ""), Outcome::kOk);
   run(camera, 15.0, events);  // shots at 0, 7, 14 s
@@ -156,7 +154,7 @@ TEST(SimCamera, TimeLapseShootsEveryIntervalUntilStopped) {
   EXPECT_EQ(camera.stop_photo(), Outcome::kFailure);
 }
 
-TEST(SimCamera, RecordingReportsSecondsAtOneHertzAndFillsTheCard) {
+TEST(SimCameraSmallCard, RecordingReportsSecondsAtOneHertzAndFillsTheCard) {
   CameraModel camera(small_card(100));
   EventQueue events;
   ASSERT_EQ(camera.set_capture_mode(CaptureMode::kVideo), Outcome::kOk);
@@ -180,9 +178,7 @@ TEST(SimCamera, RecordingReportsSecondsAtOneHertzAndFillsTheCard) {
   EXPECT_EQ(camera.videos()[0].path, "flight.mp4");
 }
 
-TEST(SimCamera, FormatReportsProgressAtFiveHertzAndEmptiesTheCard) {
-  CameraModel camera;
-  EventQueue events;
+TEST_F(SimCamera, FormatReportsProgressAtFiveHertzAndEmptiesTheCard) {
   ASSERT_EQ(camera.take_photo(0, "", ""), Outcome::kOk);
   run(camera, 1.0, events);
   ASSERT_GT(camera.sd().used_mb(), 0);
@@ -198,9 +194,7 @@ TEST(SimCamera, FormatReportsProgressAtFiveHertzAndEmptiesTheCard) {
   EXPECT_TRUE(camera.photos().empty());
 }
 
-TEST(SimCamera, FileNamesUseTheSyncedLocalTime) {
-  CameraModel camera;
-  EventQueue events;
+TEST_F(SimCamera, FileNamesUseTheSyncedLocalTime) {
   // 2025-03-04T05:06:07.089Z, an hour east of Greenwich (tz_minuteswest -60).
   camera.clock().sync(1741064767089, -60, 0);
   ASSERT_EQ(camera.take_photo(2, "", ""), Outcome::kOk);
@@ -215,9 +209,7 @@ TEST(SimCamera, FileNamesUseTheSyncedLocalTime) {
   EXPECT_EQ(gps[0].time.millisecond, 99);
 }
 
-TEST(SimCamera, GpsAnswerIsRecordedWithThePhoto) {
-  CameraModel camera;
-  EventQueue events;
+TEST_F(SimCamera, GpsAnswerIsRecordedWithThePhoto) {
   ASSERT_EQ(camera.take_photo(0, "", ""), Outcome::kOk);
   run(camera, 0.1, events);
   const auto requests = events_of<GpsRequestEvent>(events);
@@ -231,25 +223,20 @@ TEST(SimCamera, GpsAnswerIsRecordedWithThePhoto) {
   EXPECT_DOUBLE_EQ(camera.photos()[0].gps->latitude_deg, 47.5);
 }
 
-TEST(SimCamera, BacklightAndStrongLightExcludeEachOther) {
-  CameraModel camera;
+TEST_F(SimCamera, BacklightAndStrongLightExcludeEachOther) {
   ASSERT_EQ(camera.set_backlight(true, 40), Outcome::kOk);
   EXPECT_EQ(camera.set_strong_light(true, 10), Outcome::kFailure);
   ASSERT_EQ(camera.set_backlight(false, 0), Outcome::kOk);
   EXPECT_EQ(camera.set_strong_light(true, 10), Outcome::kOk);
 }
 
-TEST(SimCamera, TfUpgradeReportsProgressAndSuccess) {
-  CameraModel camera;
-  EventQueue events;
+TEST_F(SimCamera, TfUpgradeReportsProgressAndSuccess) {
   ASSERT_EQ(camera.start_tf_upgrade(), Outcome::kOk);
   EXPECT_EQ(camera.start_tf_upgrade(), Outcome::kBusy);
   EXPECT_EQ(camera.take_photo(0, "", ""), Outcome::kBusy);
   run(camera, 10.5, events);
-  const auto status = events_of<TfUpgradeStatusEvent>(events);
-  ASSERT_EQ(status.size(), 2u);
-  EXPECT_EQ(status[0].state, TfUpgradeState::kUpgrading);
-  EXPECT_EQ(status[1].state, TfUpgradeState::kSucceeded);
+  EXPECT_EQ(states_of<TfUpgradeStatusEvent>(events),
+            (std::vector{TfUpgradeState::kUpgrading, TfUpgradeState::kSucceeded}));
   const auto progress = events_of<MaintenanceEvent>(events);
   ASSERT_EQ(progress.size(), 11u);
   EXPECT_EQ(progress[5].state, MaintenanceState::kUpgrading);

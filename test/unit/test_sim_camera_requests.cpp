@@ -10,9 +10,8 @@ namespace k40t::sim {
 namespace {
 
 namespace p = protocol;
-using testing::request_with;
-using p::ResponseCode;
-using testing::PodHarness;
+using namespace testing;  // PodHarness, SimPodTest, request_with, ResponseCode
+using SimCameraRequests = SimPodTest;
 
 p::TakePhotoRequest photo(p::PhotoAction action = p::PhotoAction::kStart) {
   p::TakePhotoRequest request;
@@ -34,8 +33,7 @@ p::CaptureModeRequest mode(p::CaptureMode m) {
   return request;
 }
 
-TEST(SimCameraRequests, ModesAndPhotoSettingsShowInTheSystemStatus) {
-  PodHarness h;
+TEST_F(SimCameraRequests, ModesAndPhotoSettingsShowInTheSystemStatus) {
   EXPECT_EQ(h.send(mode(p::CaptureMode::kVideo)), ResponseCode::kOk);
   p::PhotoSettingsRequest settings;
   settings.photo_mode = p::PhotoMode::kTimeLapse;
@@ -61,8 +59,7 @@ TEST(SimCameraRequests, ModesAndPhotoSettingsShowInTheSystemStatus) {
   EXPECT_DOUBLE_EQ(status.sd_total_mb, 65530);  // 64 GB in the wire's 10 MB steps
 }
 
-TEST(SimCameraRequests, PhotoAndRecordingRefusalsCarryTheirCodes) {
-  PodHarness h;
+TEST_F(SimCameraRequests, PhotoAndRecordingRefusalsCarryTheirCodes) {
   EXPECT_EQ(h.send(record(p::RecordAction::kStart)), ResponseCode::kFailure);  // photo mode
   EXPECT_EQ(h.send(mode(p::CaptureMode::kVideo)), ResponseCode::kOk);
   EXPECT_EQ(h.send(photo()), ResponseCode::kFailure);  // video mode, not recording
@@ -96,8 +93,7 @@ TEST(SimCameraRequests, PhotoAndRecordingRefusalsCarryTheirCodes) {
   EXPECT_EQ(photos[5].state, p::PhotoState::kDone);
 }
 
-TEST(SimCameraRequests, SdCardConditionsRefuseAndShowInTheStatus) {
-  PodHarness h;
+TEST_F(SimCameraRequests, SdCardConditionsRefuseAndShowInTheStatus) {
   h.pod.camera().sd().remove();
   EXPECT_EQ(h.send(photo()), ResponseCode::kNoSdCard);
   EXPECT_EQ(h.send(p::FormatSdRequest{}), ResponseCode::kNoSdCard);
@@ -120,8 +116,7 @@ TEST(SimCameraRequests, SdCardConditionsRefuseAndShowInTheStatus) {
   EXPECT_DOUBLE_EQ(status.sd_used_mb, 0);
 }
 
-TEST(SimCameraRequests, BadPayloadsAreRefusedAndUnknownIdsIgnored) {
-  PodHarness h;
+TEST_F(SimCameraRequests, BadPayloadsAreRefusedAndUnknownIdsIgnored) {
   // 0x000302 needs 54 bytes.
   const auto short_ack = h.raw(0x000302, {0x02, 0x00});
   ASSERT_TRUE(short_ack);
@@ -145,8 +140,7 @@ TEST(SimCameraRequests, BadPayloadsAreRefusedAndUnknownIdsIgnored) {
   EXPECT_FALSE(h.raw(0x000310, {1, 2, 3, 4, 5, 0}));  // the pod's own request, not answered by it
 }
 
-TEST(SimCameraRequests, ZoomMovesAndReportsItsStatus) {
-  PodHarness h;
+TEST_F(SimCameraRequests, ZoomMovesAndReportsItsStatus) {
   EXPECT_EQ(h.send(request_with(&p::ZoomRatioRequest::zoom_x, 4.0)), ResponseCode::kOk);
   h.run(1.2);
   const auto frames = h.status_frames<p::ZoomStatus>();
@@ -163,8 +157,7 @@ TEST(SimCameraRequests, ZoomMovesAndReportsItsStatus) {
   EXPECT_TRUE(h.pod.zoom().focusing());
 }
 
-TEST(SimCameraRequests, PreciseReshootZoomsThenShootsWithItsOwnStatus) {
-  PodHarness h;
+TEST_F(SimCameraRequests, PreciseReshootZoomsThenShootsWithItsOwnStatus) {
   p::PreciseReshootRequest request;
   request.lens = p::PhotoLensMode::kVisible;
   request.zoom_x = 8.0;
@@ -182,8 +175,7 @@ TEST(SimCameraRequests, PreciseReshootZoomsThenShootsWithItsOwnStatus) {
   EXPECT_EQ(h.pod.camera().settings().precise_focal_length_raw, 3760);
 }
 
-TEST(SimCameraRequests, SystemRequestsAnswerWithData) {
-  PodHarness h;
+TEST_F(SimCameraRequests, SystemRequestsAnswerWithData) {
   const auto version = h.ask(p::CameraVersionRequest{});
   EXPECT_EQ(version.code, ResponseCode::kOk);
   EXPECT_EQ(version.version_text(), "2.1.7");
@@ -212,8 +204,7 @@ TEST(SimCameraRequests, SystemRequestsAnswerWithData) {
   EXPECT_TRUE(h.pod.camera().settings().watermark);
 }
 
-TEST(SimCameraRequests, TargetPositionFollowsTheLaser) {
-  PodHarness h;
+TEST_F(SimCameraRequests, TargetPositionFollowsTheLaser) {
   p::TargetGpsRequest request;
   request.latitude_deg = 47.0;
   request.longitude_deg = 8.0;
@@ -232,8 +223,7 @@ TEST(SimCameraRequests, TargetPositionFollowsTheLaser) {
   EXPECT_EQ(target.utc_time_ms, request.utc_time_ms);
 }
 
-TEST(SimCameraRequests, AiAndTrackingRules) {
-  PodHarness h;
+TEST_F(SimCameraRequests, AiAndTrackingRules) {
   p::BoxTrackingRequest track;
   track.x_px = 900;
   track.y_px = 500;
@@ -249,7 +239,7 @@ TEST(SimCameraRequests, AiAndTrackingRules) {
   EXPECT_EQ(h.pod.ai().classes[2], 7);
 }
 
-TEST(SimCameraRequests, ShutdownSilencesTheCameraUntilItBoots) {
+TEST(SimCameraRequestsConfigured, ShutdownSilencesTheCameraUntilItBoots) {
   PodConfig config;
   config.camera_boot_s = 2;
   PodHarness h(config);
@@ -260,8 +250,7 @@ TEST(SimCameraRequests, ShutdownSilencesTheCameraUntilItBoots) {
   EXPECT_EQ(h.send(p::CameraVersionRequest{}), ResponseCode::kOk);
 }
 
-TEST(SimCameraRequests, FactoryResetRestoresSettings) {
-  PodHarness h;
+TEST_F(SimCameraRequests, FactoryResetRestoresSettings) {
   EXPECT_EQ(h.send(mode(p::CaptureMode::kVideo)), ResponseCode::kOk);
   EXPECT_EQ(h.send(p::FactoryResetRequest{}), ResponseCode::kOk);
   EXPECT_EQ(h.send(p::FactoryResetRequest{}), ResponseCode::kBusy);
@@ -269,7 +258,7 @@ TEST(SimCameraRequests, FactoryResetRestoresSettings) {
   EXPECT_EQ(h.report<p::CameraSystemStatus>().capture_mode, p::CaptureMode::kPhoto);
 }
 
-TEST(SimCameraRequests, AckByteOrderFollowsTheOption) {
+TEST(SimCameraRequestsConfigured, AckByteOrderFollowsTheOption) {
   p::CodecOptions little;
   little.ack_byte_order = p::ByteOrder::kLittle;
   PodHarness h({}, little);

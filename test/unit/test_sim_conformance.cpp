@@ -18,13 +18,11 @@ namespace k40t::sim {
 namespace {
 
 namespace p = protocol;
-using namespace testing;  // SimLink, quick_pod, near, aim, angles, ResponseCode
-using namespace std::chrono_literals;
+using namespace testing;  // SimConformance, SimLink, quick_pod, near, aim, ResponseCode, 1s
 
 // ---- common camera part (3.2.4) -------------------------------------------------------------
 
-TEST(SimConformance, PhotosAskForGpsAndRecordTheAnswer) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, PhotosAskForGpsAndRecordTheAnswer) {
   p::TimeSyncRequest sync;
   sync.unix_time_ms = 1741064767089;  // 2025-03-04T05:06:07.089Z
   EXPECT_EQ(link.send(sync), ResponseCode::kOk);
@@ -48,8 +46,7 @@ TEST(SimConformance, PhotosAskForGpsAndRecordTheAnswer) {
   EXPECT_TRUE(link.all<p::PhotoStatus>().empty());  // no status frame for a single shot
 }
 
-TEST(SimConformance, BurstRecordingAndModeRules) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, BurstRecordingAndModeRules) {
   p::PhotoSettingsRequest burst;
   burst.photo_mode = p::PhotoMode::kBurst;
   burst.burst_count = 3;
@@ -94,8 +91,7 @@ TEST(SimConformance, BurstRecordingAndModeRules) {
   });
 }
 
-TEST(SimConformance, StreamNetworkAiAndSystemRequests) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, StreamNetworkAiAndSystemRequests) {
   for (ResponseCode code :
        {link.send(request_with(&p::StreamBitrateRequest::bitrate, p::StreamBitrate::k2Mbps)),
         link.send(
@@ -142,8 +138,7 @@ TEST(SimConformance, StreamNetworkAiAndSystemRequests) {
       [](const p::VisibleStatus& v) { return near(v.precise_shot_focal_length_mm, 9.40, 0.001); }));
 }
 
-TEST(SimConformance, SdCardFormatAndUpgrade) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, SdCardFormatAndUpgrade) {
   EXPECT_EQ(link.send(p::FormatSdRequest{}), ResponseCode::kOk);
   EXPECT_EQ(link.send(p::FormatSdRequest{}), ResponseCode::kBusy);
   EXPECT_TRUE(link.wait_report<p::SdFormatStatus>(
@@ -166,7 +161,7 @@ TEST(SimConformance, SdCardFormatAndUpgrade) {
   EXPECT_EQ(link.send(photo), ResponseCode::kBusy);  // the upgrade is still running
 }
 
-TEST(SimConformance, NoSdCardRefusesPhotos) {
+TEST(SimConformanceOptions, NoSdCardRefusesPhotos) {
   SimOptions options = quick_pod();
   options.sd_condition = "absent";
   SimLink link(options);
@@ -177,8 +172,7 @@ TEST(SimConformance, NoSdCardRefusesPhotos) {
   }));
 }
 
-TEST(SimConformance, ShutdownAndFactoryReset) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, ShutdownAndFactoryReset) {
   EXPECT_EQ(link.send(request_with(&p::CaptureModeRequest::mode, p::CaptureMode::kVideo)),
             ResponseCode::kOk);
   EXPECT_EQ(link.send(p::FactoryResetRequest{}), ResponseCode::kOk);
@@ -198,8 +192,7 @@ TEST(SimConformance, ShutdownAndFactoryReset) {
   EXPECT_EQ(link.send(p::CameraVersionRequest{}), ResponseCode::kOk);
 }
 
-TEST(SimConformance, TargetPositionFromTheLaser) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, TargetPositionFromTheLaser) {
   aim(link, -45, 90);
   p::TargetGpsRequest request;
   request.latitude_deg = 47.0;
@@ -216,8 +209,7 @@ TEST(SimConformance, TargetPositionFromTheLaser) {
 
 // ---- laser (3.2.5) and SBUS (3.2.6) ---------------------------------------------------------
 
-TEST(SimConformance, LaserRangesTheWorld) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, LaserRangesTheWorld) {
   aim(link, -30, 60);  // clear of both objects: flat ground 30 m below
   const auto single = link.ask(p::LaserRangeRequest{});
   EXPECT_EQ(single.code, ResponseCode::kOk);
@@ -235,8 +227,7 @@ TEST(SimConformance, LaserRangesTheWorld) {
   EXPECT_EQ(link.send(periodic), ResponseCode::kOk);
 }
 
-TEST(SimConformance, SbusConfigurationIsStoredAndReadBack) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, SbusConfigurationIsStoredAndReadBack) {
   p::SbusRangeRequest range;
   range.max_value = 1900;
   range.min_value = 100;
@@ -257,7 +248,7 @@ TEST(SimConformance, SbusConfigurationIsStoredAndReadBack) {
 
 // ---- what every request shares --------------------------------------------------------------
 
-TEST(SimConformance, UnknownIdsAreIgnored) {
+TEST(SimConformanceOptions, UnknownIdsAreIgnored) {
   session::SessionOptions client;
   client.ack_timeout = 200ms;
   client.retries = 0;
@@ -266,7 +257,7 @@ TEST(SimConformance, UnknownIdsAreIgnored) {
   EXPECT_EQ(link.send_raw(0x000017, {50, 50, 0}), ResponseCode::kOk);  // still talking
 }
 
-TEST(SimConformance, WholeFrameCoverageIsDetectedByAnAutoClient) {
+TEST(SimConformanceOptions, WholeFrameCoverageIsDetectedByAnAutoClient) {
   SimOptions options = quick_pod();
   options.crc_coverage = p::CrcCoverage::kWholeFrame;
   session::SessionOptions client;
@@ -284,7 +275,7 @@ TEST(SimConformance, WholeFrameCoverageIsDetectedByAnAutoClient) {
   }));
 }
 
-TEST(SimConformance, LittleEndianAcks) {
+TEST(SimConformanceOptions, LittleEndianAcks) {
   SimOptions options = quick_pod();
   options.codec.ack_byte_order = p::ByteOrder::kLittle;
   session::SessionOptions client;

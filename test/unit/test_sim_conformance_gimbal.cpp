@@ -12,13 +12,11 @@ namespace k40t::sim {
 namespace {
 
 namespace p = protocol;
-using namespace testing;  // SimLink, quick_pod, near, aim, angles, ResponseCode
-using namespace std::chrono_literals;
+using namespace testing;  // SimConformance, SimLink, quick_pod, near, aim, ResponseCode, 1s
 
 // ---- gimbal (3.1) ---------------------------------------------------------------------------
 
-TEST(SimConformance, GimbalMovesAsCommandedAtTheDialSpeed) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, GimbalMovesAsCommandedAtTheDialSpeed) {
   EXPECT_EQ(link.send(dial_speed(10, 20)), ResponseCode::kOk);
   EXPECT_EQ(link.send(angles(-10, 40)), ResponseCode::kOk);
   // Moving: the reported rates are the dial speeds.
@@ -55,8 +53,7 @@ TEST(SimConformance, GimbalMovesAsCommandedAtTheDialSpeed) {
       15s));
 }
 
-TEST(SimConformance, GimbalPointAtUsesTheLensFieldOfView) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, GimbalPointAtUsesTheLensFieldOfView) {
   ASSERT_EQ(link.send(dial_speed(30, 30)), ResponseCode::kOk);
   p::GimbalPointAtRequest point;
   point.lens = p::GimbalAimLens::kThermal;
@@ -70,8 +67,7 @@ TEST(SimConformance, GimbalPointAtUsesTheLensFieldOfView) {
   }));
 }
 
-TEST(SimConformance, GimbalServoStabilisationVersionAndRestart) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, GimbalServoStabilisationVersionAndRestart) {
   EXPECT_TRUE(link.wait_report<p::GimbalStatus>([](const p::GimbalStatus& s) {
     return s.stabilisation == p::GimbalStabilisationState::kStabilising && s.ir_ok && s.laser_ok &&
            s.gimbal_link == p::GimbalLinkState::kNormal &&
@@ -108,8 +104,7 @@ TEST(SimConformance, GimbalServoStabilisationVersionAndRestart) {
       [](const p::GimbalStatus& s) { return s.gimbal_link == p::GimbalLinkState::kNormal; }));
 }
 
-TEST(SimConformance, GimbalCalibrationsReportProgress) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, GimbalCalibrationsReportProgress) {
   EXPECT_EQ(link.send(p::GimbalDriftCalibrationRequest{}), ResponseCode::kOk);
   EXPECT_EQ(link.send(p::GimbalLinearCalibrationRequest{}), ResponseCode::kBusy);
   EXPECT_EQ(link.send(angles(0, 10)), ResponseCode::kBusy);
@@ -128,8 +123,7 @@ TEST(SimConformance, GimbalCalibrationsReportProgress) {
   EXPECT_EQ(link.send(p::GimbalAccelerationCalibrationRequest{}), ResponseCode::kOk);
 }
 
-TEST(SimConformance, GimbalRefusesWhatTheDocumentDoesNotAllow) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, GimbalRefusesWhatTheDocumentDoesNotAllow) {
   EXPECT_EQ(link.send_raw(0x000017, {200, 10, 0}), ResponseCode::kFailure);  // dial speed 40 deg/s
   EXPECT_EQ(link.send_raw(0x000012, {0x00, 0x10, 0x27}),
             ResponseCode::kLengthMismatch);  // 3 of 6 bytes

@@ -14,13 +14,11 @@ namespace k40t::sim {
 namespace {
 
 namespace p = protocol;
-using namespace testing;  // SimLink, quick_pod, near, aim, angles, ResponseCode
-using namespace std::chrono_literals;
+using namespace testing;  // SimConformance, SimLink, quick_pod, near, aim, ResponseCode, 1s
 
 // ---- thermal camera (3.2.2) -----------------------------------------------------------------
 
-TEST(SimConformance, ThermalSettingsAreStoredAndReadBack) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, ThermalSettingsAreStoredAndReadBack) {
   auto defaults = link.ask(p::ThermalReadSettingsRequest{});
   EXPECT_EQ(defaults.code, ResponseCode::kOk);
   EXPECT_EQ(defaults.palette, p::Palette::kWhiteHot);
@@ -88,8 +86,7 @@ TEST(SimConformance, ThermalSettingsAreStoredAndReadBack) {
   EXPECT_EQ(link.send_raw(0x000106, {21, 0}), ResponseCode::kFailure);  // palette 21
 }
 
-TEST(SimConformance, ThermalMeasurementSwitchStartsAndStopsTheReport) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, ThermalMeasurementSwitchStartsAndStopsTheReport) {
   ASSERT_TRUE(link.wait_for([&] { return link.count(p::ThermalStatus::kId) > 0; }));
   EXPECT_EQ(link.send(request_with(&p::ThermalMeasurementRequest::measurement_on, false)),
             ResponseCode::kOk);
@@ -105,8 +102,7 @@ TEST(SimConformance, ThermalMeasurementSwitchStartsAndStopsTheReport) {
   EXPECT_TRUE(link.wait_for([&] { return link.count(p::ThermalStatus::kId) > after_off; }));
 }
 
-TEST(SimConformance, ThermalStatsFollowTheSceneAndTripAlarms) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, ThermalStatsFollowTheSceneAndTripAlarms) {
   const World world;
   const Vec3 hot = world.hot_object_centre();
   const double yaw = std::round(yaw_of(hot) * 100) / 100;
@@ -141,8 +137,7 @@ TEST(SimConformance, ThermalStatsFollowTheSceneAndTripAlarms) {
 
 // ---- visible camera (3.2.3) -----------------------------------------------------------------
 
-TEST(SimConformance, VisibleSettingsAreStoredReadBackAndReported) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, VisibleSettingsAreStoredReadBackAndReported) {
   p::VisibleEvRequest ev;
   ev.ev = p::ExposureValue::kPlus1;
   p::VisibleStrongLightRequest strong;
@@ -194,8 +189,7 @@ TEST(SimConformance, VisibleSettingsAreStoredReadBackAndReported) {
   EXPECT_EQ(link.send_raw(0x000203, {0x01, 0x03}), ResponseCode::kFailure);  // not "start setting"
 }
 
-TEST(SimConformance, ZoomAndFocusShowInTheVisibleStatus) {
-  SimLink link(quick_pod());
+TEST_F(SimConformance, ZoomAndFocusShowInTheVisibleStatus) {
   p::ZoomRatioRequest zoom;
   zoom.zoom_x = 4;
   EXPECT_EQ(link.send(zoom), ResponseCode::kOk);

@@ -22,6 +22,14 @@ p::ParserStats parser_of(SimLink& link) {
   return link.client().stats().parser;
 }
 
+// Turns one fault of the simulated pod on.
+template <class Field, class Value>
+void set_fault(SimLink& link, Field FaultSettings::*field, Value value) {
+  FaultSettings faults;
+  faults.*field = value;
+  link.server().faults().set_settings(faults);
+}
+
 // A client that gives up on an ACK after 150 ms and retries `retries` times.
 session::SessionOptions impatient_client(int retries) {
   session::SessionOptions client;
@@ -32,9 +40,7 @@ session::SessionOptions impatient_client(int retries) {
 
 TEST(SimFaultCounters, CorruptionShowsAsChecksumErrorsAndDiscardedBytes) {
   SimLink link;
-  FaultSettings faults;
-  faults.corrupt_rate = 0.01;  // a 32-byte frame is hit one time in four
-  link.server().faults().set_settings(faults);
+  set_fault(link, &FaultSettings::corrupt_rate, 0.01);  // a 32-byte frame is hit one time in four
   ASSERT_TRUE(SimLink::wait_for([&] { return parser_of(link).checksum_errors >= 3; }));
   const p::ParserStats stats = parser_of(link);
   EXPECT_GT(stats.bytes_discarded, 0u);
@@ -46,9 +52,7 @@ TEST(SimFaultCounters, GarbageIsDiscardedByteForByteAndCostsNoFrame) {
   SimLink link;
   const p::ParserStats before = parser_of(link);
   const size_t attitude_before = link.count(p::GimbalAttitude::kId);
-  FaultSettings faults;
-  faults.garbage_rate = 0.5;
-  link.server().faults().set_settings(faults);
+  set_fault(link, &FaultSettings::garbage_rate, 0.5);
   ASSERT_TRUE(
       SimLink::wait_for([&] { return link.server().faults().counters().garbage_bursts >= 10; }));
   link.server().faults().clear();
@@ -65,9 +69,7 @@ TEST(SimFaultCounters, GarbageIsDiscardedByteForByteAndCostsNoFrame) {
 
 TEST(SimFaultCounters, DroppedAcksShowAsRetriesThenATimeout) {
   SimLink link({}, impatient_client(2));
-  FaultSettings faults;
-  faults.drop_ack_rate = 1.0;
-  link.server().faults().set_settings(faults);
+  set_fault(link, &FaultSettings::drop_ack_rate, 1.0);
   const session::SessionStats before = link.client().stats();
   EXPECT_EQ(link.send(p::CameraVersionRequest{}), p::ResponseCode::kTimeout);
   const session::SessionStats after = link.client().stats();
@@ -81,9 +83,7 @@ TEST(SimFaultCounters, DroppedAcksShowAsRetriesThenATimeout) {
 
 TEST(SimFaultCounters, DelayedAcksShowAsRetriesAndLateAcks) {
   SimLink link({}, impatient_client(3));
-  FaultSettings faults;
-  faults.delay_ack_ms = 250;
-  link.server().faults().set_settings(faults);
+  set_fault(link, &FaultSettings::delay_ack_ms, 250);
   const session::SessionStats before = link.client().stats();
   // The first attempt's ACK arrives while the second is outstanding: the request succeeds late,
   // and the ACK of the retry arrives with nothing waiting for it.

@@ -14,9 +14,14 @@ namespace {
 using testing::advance;
 using testing::events_of;
 
-TEST(SimGimbal, ReachesTheCommandedAngleInTheTimeTheDialSpeedImplies) {
+// A gimbal with the default configuration and the queue its events go to.
+class SimGimbal : public ::testing::Test {
+ protected:
   GimbalModel gimbal;
   EventQueue events;
+};
+
+TEST_F(SimGimbal, ReachesTheCommandedAngleInTheTimeTheDialSpeedImplies) {
   ASSERT_EQ(gimbal.set_dial_speed(10, 10), Outcome::kOk);
   ASSERT_EQ(gimbal.command_angles(std::nullopt, 45.0), Outcome::kOk);
   // 45 deg at 10 deg/s: 4.5 s. A tenth of a second before, it is one degree short.
@@ -30,9 +35,7 @@ TEST(SimGimbal, ReachesTheCommandedAngleInTheTimeTheDialSpeedImplies) {
   EXPECT_DOUBLE_EQ(gimbal.pose().yaw_rate_deg_s, 0.0);
 }
 
-TEST(SimGimbal, EachAxisUsesItsOwnDialSpeed) {
-  GimbalModel gimbal;
-  EventQueue events;
+TEST_F(SimGimbal, EachAxisUsesItsOwnDialSpeed) {
   ASSERT_EQ(gimbal.set_dial_speed(30, 5), Outcome::kOk);
   ASSERT_EQ(gimbal.command_angles(-60.0, -20.0), Outcome::kOk);
   advance(gimbal, 2.0, events);  // pitch done (2 s), yaw 10 of 20 deg
@@ -41,8 +44,7 @@ TEST(SimGimbal, EachAxisUsesItsOwnDialSpeed) {
   EXPECT_NEAR(gimbal.pose().yaw_rate_deg_s, -5.0, 1e-6);
 }
 
-TEST(SimGimbal, DialSpeedOutsideOneToThirtyIsRefused) {
-  GimbalModel gimbal;
+TEST_F(SimGimbal, DialSpeedOutsideOneToThirtyIsRefused) {
   EXPECT_EQ(gimbal.set_dial_speed(0.5, 10), Outcome::kFailure);
   EXPECT_EQ(gimbal.set_dial_speed(10, 31), Outcome::kFailure);
   EXPECT_EQ(gimbal.set_dial_speed(1, 30), Outcome::kOk);
@@ -50,17 +52,14 @@ TEST(SimGimbal, DialSpeedOutsideOneToThirtyIsRefused) {
   EXPECT_DOUBLE_EQ(gimbal.yaw_dial_speed_deg_s(), 30);
 }
 
-TEST(SimGimbal, AnglesBeyondTheMechanicalLimitsAreRefused) {
-  GimbalModel gimbal;
+TEST_F(SimGimbal, AnglesBeyondTheMechanicalLimitsAreRefused) {
   EXPECT_EQ(gimbal.command_angles(31.0, std::nullopt), Outcome::kFailure);
   EXPECT_EQ(gimbal.command_angles(-91.0, std::nullopt), Outcome::kFailure);
   EXPECT_EQ(gimbal.command_angles(std::nullopt, 180.5), Outcome::kFailure);
   EXPECT_EQ(gimbal.command_angles(30.0, -180.0), Outcome::kOk);
 }
 
-TEST(SimGimbal, DirectionMovesUntilStoppedAndHolds) {
-  GimbalModel gimbal;
-  EventQueue events;
+TEST_F(SimGimbal, DirectionMovesUntilStoppedAndHolds) {
   ASSERT_EQ(gimbal.set_dial_speed(20, 20), Outcome::kOk);
   ASSERT_EQ(gimbal.move(YawMotion::kRight, PitchMotion::kDown), Outcome::kOk);
   advance(gimbal, 2.0, events);
@@ -73,9 +72,7 @@ TEST(SimGimbal, DirectionMovesUntilStoppedAndHolds) {
   EXPECT_DOUBLE_EQ(gimbal.pose().yaw_rate_deg_s, 0.0);
 }
 
-TEST(SimGimbal, DirectionMoveStopsAtTheEndStops) {
-  GimbalModel gimbal;
-  EventQueue events;
+TEST_F(SimGimbal, DirectionMoveStopsAtTheEndStops) {
   ASSERT_EQ(gimbal.set_dial_speed(30, 30), Outcome::kOk);
   ASSERT_EQ(gimbal.move(YawMotion::kLeft, PitchMotion::kUp), Outcome::kOk);
   advance(gimbal, 10.0, events);  // 300 deg of travel asked for
@@ -84,9 +81,7 @@ TEST(SimGimbal, DirectionMoveStopsAtTheEndStops) {
   EXPECT_DOUBLE_EQ(gimbal.pose().pitch_rate_deg_s, 0.0);
 }
 
-TEST(SimGimbal, CentreAndLookDown) {
-  GimbalModel gimbal;
-  EventQueue events;
+TEST_F(SimGimbal, CentreAndLookDown) {
   ASSERT_EQ(gimbal.set_dial_speed(30, 30), Outcome::kOk);
   ASSERT_EQ(gimbal.command_angles(20.0, 100.0), Outcome::kOk);
   advance(gimbal, 4.0, events);
@@ -99,9 +94,7 @@ TEST(SimGimbal, CentreAndLookDown) {
   EXPECT_DOUBLE_EQ(gimbal.pose().joint_pitch_deg, 0.0);
 }
 
-TEST(SimGimbal, PointAtTurnsTowardThePixelByTheLensFieldOfView) {
-  GimbalModel gimbal;
-  EventQueue events;
+TEST_F(SimGimbal, PointAtTurnsTowardThePixelByTheLensFieldOfView) {
   ASSERT_EQ(gimbal.set_dial_speed(30, 30), Outcome::kOk);
   // The right edge of the telephoto image at 1x is half its horizontal field of view away.
   const FieldOfView tele_1x = field_of_view(Lens::kTele, 1.0);
@@ -125,9 +118,7 @@ TEST(SimGimbal, PointAtTurnsTowardThePixelByTheLensFieldOfView) {
   EXPECT_EQ(other.point_at(Lens::kThermal, 1.0, 0, 540), Outcome::kFailure);
 }
 
-TEST(SimGimbal, ServoOffStopsMotionUntilTheNextCommand) {
-  GimbalModel gimbal;
-  EventQueue events;
+TEST_F(SimGimbal, ServoOffStopsMotionUntilTheNextCommand) {
   ASSERT_EQ(gimbal.command_angles(std::nullopt, 90.0), Outcome::kOk);
   advance(gimbal, 1.0, events);
   ASSERT_EQ(gimbal.servo_off(), Outcome::kOk);
@@ -141,14 +132,13 @@ TEST(SimGimbal, ServoOffStopsMotionUntilTheNextCommand) {
   EXPECT_EQ(gimbal.stabilisation_state(), StabilisationState::kActive);
 }
 
-TEST(SimGimbal, StabilisationCanBeSwitchedOff) {
-  GimbalModel gimbal;
+TEST_F(SimGimbal, StabilisationCanBeSwitchedOff) {
   EXPECT_EQ(gimbal.stabilisation_state(), StabilisationState::kActive);
   ASSERT_EQ(gimbal.set_stabilisation(false), Outcome::kOk);
   EXPECT_EQ(gimbal.stabilisation_state(), StabilisationState::kOff);
 }
 
-TEST(SimGimbal, CalibrationReportsProgressOnceASecondAndBlocksMotion) {
+TEST(SimGimbalConfigured, CalibrationReportsProgressOnceASecondAndBlocksMotion) {
   GimbalConfig config;
   config.drift_calibration_s = 5;
   GimbalModel gimbal(config);
@@ -171,9 +161,7 @@ TEST(SimGimbal, CalibrationReportsProgressOnceASecondAndBlocksMotion) {
   EXPECT_EQ(gimbal.centre(), Outcome::kOk);
 }
 
-TEST(SimGimbal, SoftRestartGoesLimpThenReturnsToCentre) {
-  GimbalModel gimbal;
-  EventQueue events;
+TEST_F(SimGimbal, SoftRestartGoesLimpThenReturnsToCentre) {
   ASSERT_EQ(gimbal.set_dial_speed(30, 30), Outcome::kOk);
   ASSERT_EQ(gimbal.command_angles(std::nullopt, 30.0), Outcome::kOk);
   advance(gimbal, 1.0, events);
@@ -185,9 +173,7 @@ TEST(SimGimbal, SoftRestartGoesLimpThenReturnsToCentre) {
   EXPECT_DOUBLE_EQ(gimbal.pose().joint_yaw_deg, 0.0);
 }
 
-TEST(SimGimbal, TrackingHoldsTheBoxAndRefusesManualMotion) {
-  GimbalModel gimbal;
-  EventQueue events;
+TEST_F(SimGimbal, TrackingHoldsTheBoxAndRefusesManualMotion) {
   ASSERT_EQ(gimbal.set_dial_speed(30, 30), Outcome::kOk);
   ASSERT_EQ(gimbal.start_tracking(Lens::kTele, 1.0, 1920, 540), Outcome::kOk);
   EXPECT_TRUE(gimbal.tracking());

@@ -15,6 +15,8 @@ namespace {
 namespace p = protocol;
 using p::ResponseCode;
 using testing::PodHarness;
+using testing::SimPodTest;
+using SimFocus = SimPodTest;
 
 // 0x000307: byte 1 lens, byte 2 resolution, bytes 3-4 zoom x10 and 5-6 focal (low byte first),
 // bytes 7-26 folder, 27-58 name.
@@ -81,8 +83,7 @@ std::vector<uint8_t> focus_bytes(uint8_t mode, uint16_t left, uint16_t top, uint
   return bytes;
 }
 
-TEST(SimFocus, AreaAutoFocusUsesTheCorners) {
-  PodHarness h;
+TEST_F(SimFocus, AreaAutoFocusUsesTheCorners) {
   ASSERT_EQ(code_of(h, h.raw(0x000313, focus_bytes(0x04, 800, 400, 1120, 680))), ResponseCode::kOk);
   ASSERT_TRUE(h.pod.zoom().focus_area().has_value());
   EXPECT_EQ(h.pod.zoom().focus_area()->left, 800);
@@ -92,15 +93,13 @@ TEST(SimFocus, AreaAutoFocusUsesTheCorners) {
   EXPECT_TRUE(h.pod.zoom().focusing());
 }
 
-TEST(SimFocus, AnEmptyOrOutsideAreaIsRefused) {
-  PodHarness h;
+TEST_F(SimFocus, AnEmptyOrOutsideAreaIsRefused) {
   EXPECT_NE(code_of(h, h.raw(0x000313, focus_bytes(0x04, 800, 400, 800, 680))), ResponseCode::kOk);
   EXPECT_NE(code_of(h, h.raw(0x000313, focus_bytes(0x04, 800, 400, 1921, 680))), ResponseCode::kOk);
   EXPECT_FALSE(h.pod.zoom().focus_area().has_value());
 }
 
-TEST(SimFocus, OneTouchAndZoomGoBackToCentreFocus) {
-  PodHarness h;
+TEST_F(SimFocus, OneTouchAndZoomGoBackToCentreFocus) {
   ASSERT_EQ(code_of(h, h.raw(0x000313, focus_bytes(0x04, 10, 10, 200, 200))), ResponseCode::kOk);
   ASSERT_EQ(code_of(h, h.raw(0x000313, focus_bytes(0x05, 0, 0, 0, 0))), ResponseCode::kOk);
   EXPECT_FALSE(h.pod.zoom().focus_area().has_value());

@@ -32,9 +32,14 @@ void expect_at_the_centre(const PixelPoint& at) {
   EXPECT_NEAR(at.y, kCentreY, 3);
 }
 
-TEST(SimThermal, MaximumSitsOnTheHotObjectWhenAimedAtIt) {
+// The default scene and a thermal camera with its default settings.
+class SimThermal : public ::testing::Test {
+ protected:
   const World world;
-  const ThermalModel thermal;
+  ThermalModel thermal;
+};
+
+TEST_F(SimThermal, MaximumSitsOnTheHotObjectWhenAimedAtIt) {
   const ThermalStats stats = measured_at(world, thermal, world.hot_object_centre());
   EXPECT_NEAR(stats.max_degC, world.config().hot.temperature_degC, 0.5);
   expect_at_the_centre(stats.max_at);
@@ -43,9 +48,7 @@ TEST(SimThermal, MaximumSitsOnTheHotObjectWhenAimedAtIt) {
   EXPECT_GE(stats.average_degC, stats.min_degC);
 }
 
-TEST(SimThermal, MaximumMovesAcrossTheImageAsYawChanges) {
-  const World world;
-  const ThermalModel thermal;
+TEST_F(SimThermal, MaximumMovesAcrossTheImageAsYawChanges) {
   const Aim aim = aim_at(world.hot_object_centre());
   const double tan_half = std::tan(deg_to_rad(field_of_view(Lens::kThermal, 1).horizontal_deg / 2));
   int previous_x = 100000;
@@ -69,9 +72,7 @@ TEST(SimThermal, MaximumMovesAcrossTheImageAsYawChanges) {
             world.config().ground_temperature_degC + world.config().ground_texture_degC + 0.1);
 }
 
-TEST(SimThermal, DigitalZoomMagnifiesTheOffsetFromCentre) {
-  const World world;
-  ThermalModel thermal;
+TEST_F(SimThermal, DigitalZoomMagnifiesTheOffsetFromCentre) {
   const Aim aim = aim_at(world.hot_object_centre());
   const ThermalStats wide = thermal.measure(world, aim.yaw_deg - 2, aim.pitch_deg);
   ASSERT_EQ(thermal.set_digital_zoom(2), Outcome::kOk);
@@ -80,25 +81,19 @@ TEST(SimThermal, DigitalZoomMagnifiesTheOffsetFromCentre) {
   EXPECT_EQ(thermal.set_digital_zoom(9), Outcome::kFailure);
 }
 
-TEST(SimThermal, MinimumSitsOnTheColdObject) {
-  const World world;
-  const ThermalModel thermal;
+TEST_F(SimThermal, MinimumSitsOnTheColdObject) {
   const ThermalStats stats = measured_at(world, thermal, world.cold_object_centre());
   EXPECT_NEAR(stats.min_degC, world.config().cold.temperature_degC, 0.5);
   expect_at_the_centre(stats.min_at);
 }
 
-TEST(SimThermal, SkyIsColdestAboveTheHorizon) {
-  const World world;
-  const ThermalModel thermal;
+TEST_F(SimThermal, SkyIsColdestAboveTheHorizon) {
   const ThermalStats stats = thermal.measure(world, 0, 30);
   EXPECT_LT(stats.max_degC, world.config().sky_horizon_degC + 0.1);
   EXPECT_EQ(stats.min_at.y, ThermalFrame::kTop);  // highest elevation: top row
 }
 
-TEST(SimThermal, SpotReadsThePixelItIsSetOn) {
-  const World world;
-  ThermalModel thermal;
+TEST_F(SimThermal, SpotReadsThePixelItIsSetOn) {
   const Aim aim = aim_at(world.hot_object_centre());
   const ThermalStats overview = thermal.measure(world, aim.yaw_deg + 5, aim.pitch_deg);
   ASSERT_EQ(thermal.set_spot(overview.max_at.x, overview.max_at.y), Outcome::kOk);
@@ -109,9 +104,7 @@ TEST(SimThermal, SpotReadsThePixelItIsSetOn) {
   EXPECT_EQ(thermal.set_spot(100, 500), Outcome::kFailure);  // on the black border
 }
 
-TEST(SimThermal, AreaMeasurementLooksOnlyInsideTheRectangle) {
-  const World world;
-  ThermalModel thermal;
+TEST_F(SimThermal, AreaMeasurementLooksOnlyInsideTheRectangle) {
   const Aim aim = aim_at(world.hot_object_centre());
   // A rectangle in the left half of the image: the hot object at the centre is outside it.
   ASSERT_EQ(thermal.set_area(300, 400, 500, 528), Outcome::kOk);
@@ -123,9 +116,7 @@ TEST(SimThermal, AreaMeasurementLooksOnlyInsideTheRectangle) {
   EXPECT_EQ(thermal.set_area(400, 100, 400, 528), Outcome::kFailure);  // sticks out on the left
 }
 
-TEST(SimThermal, AlarmsTripAtTheirThresholds) {
-  const World world;
-  ThermalModel thermal;
+TEST_F(SimThermal, AlarmsTripAtTheirThresholds) {
   const Aim aim = aim_at(world.hot_object_centre());
   const ThermalStats plain = thermal.measure(world, aim.yaw_deg, aim.pitch_deg);
   EXPECT_FALSE(plain.high_alarm || plain.low_alarm || plain.difference_alarm ||
@@ -156,7 +147,7 @@ TEST(SimThermal, AlarmsTripAtTheirThresholds) {
   EXPECT_EQ(thermal.set_alarms(501, std::nullopt, std::nullopt), Outcome::kFailure);
 }
 
-TEST(SimThermal, HighGainSaturatesWhereLowGainMeasures) {
+TEST(SimThermalGain, HighGainSaturatesWhereLowGainMeasures) {
   WorldConfig config;
   config.hot.temperature_degC = 300;
   const World world(config);
@@ -170,7 +161,7 @@ TEST(SimThermal, HighGainSaturatesWhereLowGainMeasures) {
   EXPECT_NEAR(thermal.measure(world, aim.yaw_deg, aim.pitch_deg).max_degC, 300, 1);
 }
 
-TEST(SimThermal, FrameCoordinatesMapTheSensorOntoTheDocumentsActiveArea) {
+TEST(SimThermalFrame, FrameCoordinatesMapTheSensorOntoTheDocumentsActiveArea) {
   EXPECT_EQ(ThermalFrame::from_sensor(0, 0).x, ThermalFrame::kLeft);
   EXPECT_EQ(ThermalFrame::from_sensor(0, 0).y, ThermalFrame::kTop);
   EXPECT_EQ(ThermalFrame::from_sensor(639, 511).x, ThermalFrame::kRight);

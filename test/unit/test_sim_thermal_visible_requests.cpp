@@ -11,12 +11,11 @@ namespace k40t::sim {
 namespace {
 
 namespace p = protocol;
-using testing::request_with;
-using p::ResponseCode;
-using testing::PodHarness;
+using namespace testing;  // PodHarness, SimPodTest, request_with, ResponseCode
+using SimThermalRequests = SimPodTest;
+using SimVisibleRequests = SimPodTest;
 
-TEST(SimThermalRequests, SettingsAreStoredAndReadBack) {
-  PodHarness h;
+TEST_F(SimThermalRequests, SettingsAreStoredAndReadBack) {
   const auto defaults = h.ask(p::ThermalReadSettingsRequest{});
   EXPECT_EQ(defaults.code, ResponseCode::kOk);
   EXPECT_EQ(defaults.palette, p::Palette::kWhiteHot);
@@ -52,8 +51,7 @@ TEST(SimThermalRequests, SettingsAreStoredAndReadBack) {
   EXPECT_DOUBLE_EQ(s.difference_alarm_degC, 25.5);
 }
 
-TEST(SimThermalRequests, SpotAndAreaMustLieOnTheImage) {
-  PodHarness h;
+TEST_F(SimThermalRequests, SpotAndAreaMustLieOnTheImage) {
   p::ThermalSpotRequest spot;
   spot.x_px = 1000;
   spot.y_px = 700;
@@ -80,8 +78,7 @@ TEST(SimThermalRequests, SpotAndAreaMustLieOnTheImage) {
   EXPECT_NEAR(in_area.center_x_px, 1100, 2);
 }
 
-TEST(SimThermalRequests, MeasurementOffStopsTheReport) {
-  PodHarness h;
+TEST_F(SimThermalRequests, MeasurementOffStopsTheReport) {
   const auto active = [&] {
     for (const PeriodicReport& r : periodic_reports()) {
       if (r.id == p::ThermalStatus::kId) return r.active(h.pod);
@@ -95,8 +92,7 @@ TEST(SimThermalRequests, MeasurementOffStopsTheReport) {
   EXPECT_FALSE(h.ask(p::ThermalReadSettingsRequest{}).measurement_on);
 }
 
-TEST(SimThermalRequests, ReportFollowsTheGimbalAndTripsAlarms) {
-  PodHarness h;
+TEST_F(SimThermalRequests, ReportFollowsTheGimbalAndTripsAlarms) {
   const Vec3 hot = h.pod.world().hot_object_centre();
   ASSERT_EQ(h.pod.gimbal().set_dial_speed(30, 30), Outcome::kOk);
   ASSERT_EQ(h.pod.gimbal().command_angles(pitch_of(hot), yaw_of(hot)), Outcome::kOk);
@@ -121,8 +117,7 @@ TEST(SimThermalRequests, ReportFollowsTheGimbalAndTripsAlarms) {
   EXPECT_GT(zoomed.max_x_px, 900);  // 2 deg right of centre, magnified twice
 }
 
-TEST(SimVisibleRequests, SettingsAreStoredAndReadBack) {
-  PodHarness h;
+TEST_F(SimVisibleRequests, SettingsAreStoredAndReadBack) {
   EXPECT_EQ(h.send(request_with(&p::VisibleVideoResolutionRequest::video_resolution,
                                 p::VideoResolution::k4000x3000)),
             ResponseCode::kOk);
@@ -149,8 +144,7 @@ TEST(SimVisibleRequests, SettingsAreStoredAndReadBack) {
   EXPECT_FALSE(s.strong_light_on);
 }
 
-TEST(SimVisibleRequests, ExposureAndZoomShowInTheStatus) {
-  PodHarness h;
+TEST_F(SimVisibleRequests, ExposureAndZoomShowInTheStatus) {
   auto status = h.report<p::VisibleStatus>();
   EXPECT_EQ(status.ev, p::ExposureValue::kAuto);
   EXPECT_EQ(status.shutter_us, 500);  // auto, looking at the horizon: sky above the centre line

@@ -8,14 +8,12 @@
 #include "golden_checks.h"
 #include "k40t_driver/protocol/messages/thermal.h"
 #include "message_checks.h"
+#include "request_with.h"
 
 namespace k40t::protocol {
 namespace {
 
-using testing::expect_decode_error;
-using testing::expect_matches_golden;
-using testing::expect_range_error;
-using testing::golden_message;
+using namespace testing;  // the checks of golden_checks.h, message_checks.h, request_with.h
 
 const char kGolden[] = "thermal_visible.txt";
 
@@ -78,38 +76,18 @@ TEST(ThermalGolden, BareRefusalAckKeepsDefaults) {  // 3.2.2.1 + 3.3: code only
 }
 
 TEST(ThermalGolden, SettingRequests) {  // 3.2.2.2 .. 3.2.2.15
-  ThermalZoomRequest zoom;
-  zoom.zoom_x = 4;
-  expect_matches_golden(zoom, kGolden);
-
-  ThermalPaletteRequest palette;
-  palette.palette = Palette::kCyanRed;
-  expect_matches_golden(palette, kGolden);
-
-  ThermalMeasurementRequest measurement;
-  measurement.measurement_on = false;
-  expect_matches_golden(measurement, kGolden);
-
-  ThermalSharpnessRequest sharpness;
-  sharpness.sharpness = 75;
-  expect_matches_golden(sharpness, kGolden);
-
-  ThermalBrightnessRequest brightness;
-  brightness.brightness = 100;
-  expect_matches_golden(brightness, kGolden);
-
-  ThermalContrastRequest contrast;
-  contrast.contrast = 40;
-  expect_matches_golden(contrast, kGolden);
+  expect_matches_golden(request_with(&ThermalZoomRequest::zoom_x, 4), kGolden);
+  expect_matches_golden(request_with(&ThermalPaletteRequest::palette, Palette::kCyanRed), kGolden);
+  expect_matches_golden(request_with(&ThermalMeasurementRequest::measurement_on, false), kGolden);
+  expect_matches_golden(request_with(&ThermalSharpnessRequest::sharpness, 75), kGolden);
+  expect_matches_golden(request_with(&ThermalBrightnessRequest::brightness, 100), kGolden);
+  expect_matches_golden(request_with(&ThermalContrastRequest::contrast, 40), kGolden);
 
   ThermalDenoiseRequest denoise;
   denoise.denoise_on = true;
   denoise.denoise_level = 80;
   expect_matches_golden(denoise, kGolden);
-
-  ThermalEnhancementRequest enhancement;
-  enhancement.enhancement_level = 10;
-  expect_matches_golden(enhancement, kGolden);
+  expect_matches_golden(request_with(&ThermalEnhancementRequest::enhancement_level, 10), kGolden);
 
   ThermalSpotRequest spot;
   spot.x_px = 960;
@@ -122,10 +100,8 @@ TEST(ThermalGolden, SettingRequests) {  // 3.2.2.2 .. 3.2.2.15
   area.center_x_px = 800;
   area.center_y_px = 500;
   expect_matches_golden(area, kGolden);
-
-  ThermalGainModeRequest gain;
-  gain.gain_mode = ThermalGainMode::kLow;
-  expect_matches_golden(gain, kGolden);
+  expect_matches_golden(request_with(&ThermalGainModeRequest::gain_mode, ThermalGainMode::kLow),
+                        kGolden);
 
   ThermalAlarmsRequest alarms;
   alarms.high_alarm_on = true;
@@ -134,10 +110,7 @@ TEST(ThermalGolden, SettingRequests) {  // 3.2.2.2 .. 3.2.2.15
   alarms.low_alarm_degC = -10.5;
   alarms.difference_alarm_on = false;
   expect_matches_golden(alarms, kGolden);
-
-  ThermalOverlayRequest overlay;
-  overlay.overlay_on = true;
-  expect_matches_golden(overlay, kGolden);
+  expect_matches_golden(request_with(&ThermalOverlayRequest::overlay_on, true), kGolden);
 
   ThermalThresholdAlarmRequest threshold;
   threshold.threshold_alarm_on = true;

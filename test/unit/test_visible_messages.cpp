@@ -9,15 +9,12 @@
 #include "golden_checks.h"
 #include "k40t_driver/protocol/messages/visible.h"
 #include "message_checks.h"
+#include "request_with.h"
 
 namespace k40t::protocol {
 namespace {
 
-using testing::defined_codes;
-using testing::expect_decode_error;
-using testing::expect_matches_golden;
-using testing::expect_range_error;
-using testing::golden_message;
+using namespace testing;  // the checks of golden_checks.h, message_checks.h, request_with.h
 
 const char kGolden[] = "thermal_visible.txt";
 
@@ -64,33 +61,19 @@ TEST(VisibleGolden, ReadSettingsRequestAndAck) {  // 3.2.3.1
 }
 
 TEST(VisibleGolden, SettingRequests) {  // 3.2.3.2 .. 3.2.3.12
-  VisibleVideoResolutionRequest video;
-  video.video_resolution = VideoResolution::k4000x3000;
-  expect_matches_golden(video, kGolden);
-
-  VisiblePhotoResolutionRequest photo;
-  photo.photo_resolution = PhotoResolution::k4000x3000;
-  expect_matches_golden(photo, kGolden);
-
-  VisibleIsoRequest iso;
-  iso.iso = Iso::k6400;
-  expect_matches_golden(iso, kGolden);
-
-  VisibleShutterRequest shutter;
-  shutter.shutter = Shutter::k1_8000;
-  expect_matches_golden(shutter, kGolden);
-
-  VisibleEvRequest ev;
-  ev.ev = ExposureValue::kMinus2;
-  expect_matches_golden(ev, kGolden);
-
-  VisibleWhiteBalanceRequest white_balance;
-  white_balance.white_balance = WhiteBalance::kCloudy;
-  expect_matches_golden(white_balance, kGolden);
-
-  VisibleAntiFlickerRequest anti_flicker;
-  anti_flicker.anti_flicker = AntiFlicker::k60Hz;
-  expect_matches_golden(anti_flicker, kGolden);
+  expect_matches_golden(
+      request_with(&VisibleVideoResolutionRequest::video_resolution, VideoResolution::k4000x3000),
+      kGolden);
+  expect_matches_golden(
+      request_with(&VisiblePhotoResolutionRequest::photo_resolution, PhotoResolution::k4000x3000),
+      kGolden);
+  expect_matches_golden(request_with(&VisibleIsoRequest::iso, Iso::k6400), kGolden);
+  expect_matches_golden(request_with(&VisibleShutterRequest::shutter, Shutter::k1_8000), kGolden);
+  expect_matches_golden(request_with(&VisibleEvRequest::ev, ExposureValue::kMinus2), kGolden);
+  expect_matches_golden(
+      request_with(&VisibleWhiteBalanceRequest::white_balance, WhiteBalance::kCloudy), kGolden);
+  expect_matches_golden(request_with(&VisibleAntiFlickerRequest::anti_flicker, AntiFlicker::k60Hz),
+                        kGolden);
 
   VisibleStrongLightRequest strong_light;
   strong_light.strong_light_on = true;
@@ -101,14 +84,9 @@ TEST(VisibleGolden, SettingRequests) {  // 3.2.3.2 .. 3.2.3.12
   backlight.backlight_on = false;
   backlight.backlight_value = 0;
   expect_matches_golden(backlight, kGolden);
-
-  VisibleAeLockRequest ae_lock;
-  ae_lock.ae_lock_on = true;
-  expect_matches_golden(ae_lock, kGolden);
-
-  VisibleMeteringRequest metering;
-  metering.metering = MeteringMode::kCenterWeighted;
-  expect_matches_golden(metering, kGolden);
+  expect_matches_golden(request_with(&VisibleAeLockRequest::ae_lock_on, true), kGolden);
+  expect_matches_golden(
+      request_with(&VisibleMeteringRequest::metering, MeteringMode::kCenterWeighted), kGolden);
 }
 
 // ---- wire details -------------------------------------------------------------------------
