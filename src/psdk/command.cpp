@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "k40t_driver/psdk/enum_names.h"
+
 namespace k40t::psdk {
 
 const char* to_string(Sender sender) {
@@ -9,26 +11,14 @@ const char* to_string(Sender sender) {
 }
 
 const char* to_string(AckCode code) {
-  switch (code) {
-    case AckCode::kOk:
-      return "ok";
-    case AckCode::kError:
-      return "error";
-    case AckCode::kUnsupported:
-      return "unsupported";
-  }
-  return nullptr;
+  return name_in_order(code, 0, {"ok", "error", "unsupported"});
 }
 
 std::string ack_code_text(uint8_t code) {
-  switch (static_cast<AckCode>(code)) {
-    case AckCode::kOk:
-      return "executed successfully";
-    case AckCode::kError:
-      return "executed unsuccessfully";
-    case AckCode::kUnsupported:
-      return "command not supported";
-  }
+  const char* text =
+      name_in_order(static_cast<AckCode>(code), 0,
+                    {"executed successfully", "executed unsuccessfully", "command not supported"});
+  if (text != nullptr) return text;
   char buffer[48];
   std::snprintf(buffer, sizeof(buffer), "unknown return code 0x%02X", code);
   return buffer;

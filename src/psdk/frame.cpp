@@ -5,57 +5,26 @@
 
 #include "k40t_driver/psdk/aes.h"
 #include "k40t_driver/psdk/crc.h"
+#include "k40t_driver/psdk/enum_names.h"
 
 namespace k40t::psdk {
 
 const char* to_string(CommandSet set) {
-  switch (set) {
-    case CommandSet::kPayloadState:
-      return "payload_state";
-    case CommandSet::kAppFunction:
-      return "app_function";
-    case CommandSet::kDataPush:
-      return "data_push";
-    case CommandSet::kCamera:
-      return "camera";
-    case CommandSet::kGimbal:
-      return "gimbal";
-    case CommandSet::kOsdkFunction:
-      return "osdk_function";
-    case CommandSet::kPositioning:
-      return "positioning";
-  }
-  return nullptr;
+  return name_in_order(set, 1,
+                       {"payload_state", "app_function", "data_push", "camera", "gimbal",
+                        "osdk_function", "positioning"});
 }
 
 const char* to_string(PacketType type) {
-  switch (type) {
-    case PacketType::kCommand:
-      return "command";
-    case PacketType::kAck:
-      return "ack";
-  }
-  return nullptr;
+  return name_in_order(type, 0, {"command", "ack"});
 }
 
 const char* to_string(AckRequest request) {
-  switch (request) {
-    case AckRequest::kNoAck:
-      return "no_ack";
-    case AckRequest::kAfterExecution:
-      return "ack_after_execution";
-  }
-  return nullptr;
+  return name_in_order(request, 0, {"no_ack", "ack_after_execution"});
 }
 
 const char* to_string(Encryption encryption) {
-  switch (encryption) {
-    case Encryption::kNone:
-      return "none";
-    case Encryption::kAes:
-      return "aes";
-  }
-  return nullptr;
+  return name_in_order(encryption, 0, {"none", "aes"});
 }
 
 size_t frame_length_field(const uint8_t* f) {

@@ -95,8 +95,9 @@ TEST(PsdkValidation, FocusZoneAndZoomFactors) {
   EXPECT_MENTIONS(
       encode_error(request_with<SetDigitalZoomFactor>(&SetDigitalZoomFactor::factor_x, 0.5f)),
       "'factor_x' must be 1..");
-  EXPECT_MENTIONS(encode_error(request_with(&OpticalZoomFactorAck::factor_x, 31.0f)),
-                  "'factor_x' must be 1..30");
+  EXPECT_MENTIONS(
+      encode_error(request_with<OpticalZoomFactorAck>(&OpticalZoomFactorAck::factor_x, 31.0f)),
+      "'factor_x' must be 1..30");
 }
 
 TEST(PsdkValidation, TextMustLeaveRoomForItsTerminator) {

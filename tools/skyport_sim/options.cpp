@@ -23,6 +23,12 @@ Status set_number(double& field, const std::string& option, const std::string& v
   return Status::ok();
 }
 
+// A probability 0..1 in one field of the adapter's fault options (o.adapter.*kGroup.*kField).
+template <auto kGroup, auto kField>
+Status set_rate(SkyportSimOptions& o, const std::string& option, const std::string& value) {
+  return set_number(o.adapter.*kGroup.*kField, option, value, 0.0, 1.0);
+}
+
 Status set_text(std::string& field, const std::string& option, const std::string& value) {
   if (value.empty()) return Status::fail(option + ": empty");
   field = value;
@@ -102,13 +108,9 @@ const std::vector<OptionSpec>& option_table() {
          return status;
        }},
       {"--corrupt-rate", "P", "probability per byte sent of a flipped bit",
-       [](SkyportSimOptions& o, const std::string& option, const std::string& v) {
-         return set_number(o.adapter.byte_faults.corrupt_rate, option, v, 0.0, 1.0);
-       }},
+       set_rate<&AdapterOptions::byte_faults, &psdk::sim::ByteFaults::corrupt_rate>},
       {"--garbage-rate", "P", "probability per frame of random bytes before it",
-       [](SkyportSimOptions& o, const std::string& option, const std::string& v) {
-         return set_number(o.adapter.byte_faults.garbage_rate, option, v, 0.0, 1.0);
-       }},
+       set_rate<&AdapterOptions::byte_faults, &psdk::sim::ByteFaults::garbage_rate>},
       {"--garbage-max", "N", "at most N garbage bytes at a time (default 16)",
        [](SkyportSimOptions& o, const std::string& option, const std::string& v) {
          double n = 0;
@@ -117,21 +119,15 @@ const std::vector<OptionSpec>& option_table() {
          return s;
        }},
       {"--drop-ack-rate", "P", "probability that a payload command gets no ACK",
-       [](SkyportSimOptions& o, const std::string& option, const std::string& v) {
-         return set_number(o.adapter.protocol_faults.drop_ack_rate, option, v, 0.0, 1.0);
-       }},
+       set_rate<&AdapterOptions::protocol_faults, &psdk::sim::ProtocolFaults::drop_ack_rate>},
       {"--delay-ack-ms", "MS", "send ACKs this late",
        [](SkyportSimOptions& o, const std::string& option, const std::string& v) {
          return set_number(o.adapter.protocol_faults.delay_ack_ms, option, v, 0.0, 60000.0);
        }},
       {"--delay-ack-rate", "P", "probability that an ACK is delayed (default 1)",
-       [](SkyportSimOptions& o, const std::string& option, const std::string& v) {
-         return set_number(o.adapter.protocol_faults.delay_ack_rate, option, v, 0.0, 1.0);
-       }},
+       set_rate<&AdapterOptions::protocol_faults, &psdk::sim::ProtocolFaults::delay_ack_rate>},
       {"--seq-jump-rate", "P", "probability per command of a jump of 1..100 sequence numbers",
-       [](SkyportSimOptions& o, const std::string& option, const std::string& v) {
-         return set_number(o.adapter.protocol_faults.sequence_jump_rate, option, v, 0.0, 1.0);
-       }},
+       set_rate<&AdapterOptions::protocol_faults, &psdk::sim::ProtocolFaults::sequence_jump_rate>},
       {"--silence", "AT:S", "send nothing for S seconds, AT seconds after the start",
        [](SkyportSimOptions& o, const std::string& option, const std::string& v) {
          return schedule(o, option, v, sim::ScheduledFault::Kind::kSilence, 3600);

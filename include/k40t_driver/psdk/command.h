@@ -7,8 +7,7 @@
 //     static constexpr const char* kSection = "3.5.2";          // the document's section
 //     GimbalMode mode = GimbalMode::kFree;                      // physical units / enums
 //     Status validate() const;         // optional: ranges the document gives beyond the layout's
-//     template <class S, class V>
-//     static void layout(S& s, V&& v) { v("mode", s.mode, wire::u8); }  // see layout.h
+//     K40T_PSDK_LAYOUT(s, v) { v("mode", s.mode, wire::u8); }  // see layout.h
 //   };
 //
 // Command<Set, Id, Sender, Ack> gives kSet, kId, kPacket = kCommand, kSender and `Ack`: the ACK
@@ -18,7 +17,9 @@
 //
 // commands/declare.h writes the repeated forms once: K40T_PSDK_NAMED(name, section) for the
 // kName/kSection pair, K40T_PSDK_SETTING(...) for a Set/Get/ACK triple sharing one value struct,
-// K40T_PSDK_NO_DATA(...) for a command without data, K40T_PSDK_TRANSPARENT(...) for transparent data.
+// K40T_PSDK_GET(...) for a Get/ACK pair, K40T_PSDK_NO_DATA(...) for a command without data,
+// K40T_PSDK_TRANSPARENT(...) for transparent data, K40T_PSDK_FLAGS(...) for a byte of one-bit
+// flags and K40T_PSDK_VARIABLE_LENGTH() for the members listed below.
 //
 // Variable-length commands (hand-shake data, transparent data, widget lists, positioning) have
 // no layout(); they define kMinBodySize, kMaxBodySize, encode(ByteWriter&) const,
@@ -122,8 +123,7 @@ Status check_length(const char* field, size_t size, size_t lo, size_t hi);
 
 // Mixin for commands without data.
 struct NoData {
-  template <class S, class V>
-  static void layout(S&, V&&) {}
+  K40T_PSDK_LAYOUT(s, v) {}
 };
 
 // Mixin for commands whose data is Min..Max opaque bytes (hand-shake, transparent data).

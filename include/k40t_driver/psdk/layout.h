@@ -19,3 +19,13 @@ using codec::LayoutValidator;
 using codec::LayoutWriter;
 
 }  // namespace k40t::psdk
+
+// The signature of a struct's layout() in one line (as the pod messages' K40T_LAYOUT); the body
+// lists the fields:
+//   K40T_PSDK_LAYOUT(s, v) {
+//     v("mode", s.mode, wire::u8);
+//   }
+// `s` is the struct (const when validating, encoding or describing), `v` the visitor.
+#define K40T_PSDK_LAYOUT(s, v)  \
+  template <class S_, class V_> \
+  static void layout([[maybe_unused]] S_& s, [[maybe_unused]] V_&& v)

@@ -2,68 +2,26 @@
 
 #include <cmath>
 
+#include "k40t_driver/psdk/enum_names.h"
+
 namespace k40t::psdk {
 
 const char* to_string(GpsSignal signal) {
-  switch (signal) {
-    case GpsSignal::kNone:
-      return "none";
-    case GpsSignal::kVeryWeak:
-      return "very_weak";
-    case GpsSignal::kMedium:
-      return "medium";
-    case GpsSignal::kVeryStrong:
-      return "very_strong";
-  }
-  return nullptr;
+  return name_in_order(signal, 0, {"none", "very_weak", "medium", "very_strong"});
 }
 
 const char* to_string(LandingState state) {
-  switch (state) {
-    case LandingState::kUnknown:
-      return "unknown";
-    case LandingState::kLanded:
-      return "landed";
-    case LandingState::kInTheSky:
-      return "in_the_sky";
-  }
-  return nullptr;
+  return name_in_order(state, 0, {"unknown", "landed", "in_the_sky"});
 }
 
 const char* to_string(DroneType type) {
-  switch (type) {
-    case DroneType::kUnknown:
-      return "unknown";
-    case DroneType::kM200:
-      return "M200";
-    case DroneType::kM210:
-      return "M210";
-    case DroneType::kM210Rtk:
-      return "M210 RTK";
-    case DroneType::kM600:
-      return "M600";
-    case DroneType::kM600Pro:
-      return "M600 PRO";
-    case DroneType::kM200V2:
-      return "M200 V2";
-    case DroneType::kM210V2:
-      return "M210 V2";
-    case DroneType::kM210RtkV2:
-      return "M210 RTK V2";
-  }
-  return nullptr;
+  return name_in_order(type, 0,
+                       {"unknown", "M200", "M210", "M210 RTK", "M600", "M600 PRO", "M200 V2",
+                        "M210 V2", "M210 RTK V2"});
 }
 
 const char* to_string(OtherPayloadType type) {
-  switch (type) {
-    case OtherPayloadType::kUnknown:
-      return "unknown";
-    case OtherPayloadType::kZenmuseX5s:
-      return "ZENMUSE X5S";
-    case OtherPayloadType::kZenmuseZ30:
-      return "ZENMUSE Z30";
-  }
-  return nullptr;
+  return name_in_order(type, 0, {"unknown", "ZENMUSE X5S", "ZENMUSE Z30"});
 }
 
 Status DateTime::validate() const {

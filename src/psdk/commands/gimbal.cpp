@@ -1,63 +1,29 @@
 #include "k40t_driver/psdk/commands/gimbal.h"
 
+#include "k40t_driver/psdk/enum_names.h"
+
 namespace k40t::psdk {
 
 const char* to_string(GimbalStateMode mode) {
-  switch (mode) {
-    case GimbalStateMode::kFree:
-      return "free";
-    case GimbalStateMode::kFollowing:
-      return "following";
-    case GimbalStateMode::kFpv:
-      return "fpv";
-  }
-  return nullptr;
+  return name_in_order(mode, 0, {"free", "following", "fpv"});
 }
 
 const char* to_string(GimbalMode mode) {
-  switch (mode) {
-    case GimbalMode::kFree:
-      return "free";
-    case GimbalMode::kFpv:
-      return "fpv";
-    case GimbalMode::kFollowing:
-      return "following";
-  }
-  return nullptr;
+  return name_in_order(mode, 0, {"free", "fpv", "following"});
 }
 
 GimbalStateMode to_state_mode(GimbalMode mode) {
-  switch (mode) {
-    case GimbalMode::kFpv:
-      return GimbalStateMode::kFpv;
-    case GimbalMode::kFollowing:
-      return GimbalStateMode::kFollowing;
-    case GimbalMode::kFree:
-      break;
-  }
+  if (mode == GimbalMode::kFpv) return GimbalStateMode::kFpv;
+  if (mode == GimbalMode::kFollowing) return GimbalStateMode::kFollowing;
   return GimbalStateMode::kFree;
 }
 
 const char* to_string(GimbalControlAction action) {
-  switch (action) {
-    case GimbalControlAction::kStop:
-      return "stop";
-    case GimbalControlAction::kControl:
-      return "control";
-  }
-  return nullptr;
+  return name_in_order(action, 0, {"stop", "control"});
 }
 
 const char* to_string(CalibrationStatus status) {
-  switch (status) {
-    case CalibrationStatus::kComplete:
-      return "complete";
-    case CalibrationStatus::kInProgress:
-      return "in_progress";
-    case CalibrationStatus::kFailed:
-      return "failed";
-  }
-  return nullptr;
+  return name_in_order(status, 0, {"complete", "in_progress", "failed"});
 }
 
 Status ControlGimbalSpeed::validate() const {

@@ -25,6 +25,15 @@ constexpr std::array<SdBit, 9> kSdBits{{{&SdCardState::inserted, 0, 0},
 int bit_of(const SdBit& b, PsdkLayout layout) {
   return layout == PsdkLayout::kDocument ? b.document : b.headers;
 }
+
+// A shoot photo mode copied between the two interval widths (the caller checks that it fits).
+template <class From, class To>
+void copy_shoot_photo_mode(const BasicShootPhotoMode<From>& from, BasicShootPhotoMode<To>& to) {
+  to.type = from.type;
+  to.burst_count = from.burst_count;
+  to.interval_count = from.interval_count;
+  to.interval_s = static_cast<To>(from.interval_s);
+}
 }  // namespace
 
 const char* to_string(PsdkLayout layout) {
@@ -82,10 +91,7 @@ Result<ShootPhotoModeWide> decode_shoot_photo_mode(const uint8_t* data, size_t s
   const Result<SetShootPhotoMode> narrow = decode_data<SetShootPhotoMode>(data, size);
   if (!narrow) return Result<ShootPhotoModeWide>::fail(narrow.error());
   ShootPhotoModeWide mode;
-  mode.type = narrow->type;
-  mode.burst_count = narrow->burst_count;
-  mode.interval_count = narrow->interval_count;
-  mode.interval_s = narrow->interval_s;
+  copy_shoot_photo_mode(*narrow, mode);
   return mode;
 }
 
@@ -99,10 +105,7 @@ Result<Data> encode_shoot_photo_mode_ack(const ShootPhotoModeWide& mode, PsdkLay
     return Result<Data>::fail("interval " + std::to_string(mode.interval_s) +
                               " s does not fit the document's uint8");
   ShootPhotoModeAck ack;
-  ack.type = mode.type;
-  ack.burst_count = mode.burst_count;
-  ack.interval_count = mode.interval_count;
-  ack.interval_s = static_cast<uint8_t>(mode.interval_s);
+  copy_shoot_photo_mode(mode, ack);
   return encode_data(ack);
 }
 

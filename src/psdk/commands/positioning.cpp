@@ -1,21 +1,15 @@
 #include "k40t_driver/psdk/commands/positioning.h"
 
+#include "k40t_driver/psdk/enum_names.h"
 #include "k40t_driver/psdk/indexed_sink.h"
 
 namespace k40t::psdk {
 
 const char* to_string(PositionSolution solution) {
-  switch (solution) {
-    case PositionSolution::kNotAvailable:
-      return "not_available";
-    case PositionSolution::kSinglePoint:
-      return "single_point";
-    case PositionSolution::kFloat:
-      return "float";
-    case PositionSolution::kFixed:
-      return "fixed";
-  }
-  return nullptr;
+  return name_in(solution, {{PositionSolution::kNotAvailable, "not_available"},
+                            {PositionSolution::kSinglePoint, "single_point"},
+                            {PositionSolution::kFloat, "float"},
+                            {PositionSolution::kFixed, "fixed"}});
 }
 
 namespace {

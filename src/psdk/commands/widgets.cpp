@@ -1,23 +1,13 @@
 #include "k40t_driver/psdk/commands/widgets.h"
 
+#include "k40t_driver/psdk/enum_names.h"
 #include "k40t_driver/psdk/indexed_sink.h"
 
 namespace k40t::psdk {
 
 const char* to_string(WidgetType type) {
-  switch (type) {
-    case WidgetType::kButton:
-      return "button";
-    case WidgetType::kSwitch:
-      return "switch";
-    case WidgetType::kRangeBar:
-      return "range_bar";
-    case WidgetType::kChooseList:
-      return "choose_list";
-    case WidgetType::kIntegerInputBox:
-      return "integer_input_box";
-  }
-  return nullptr;
+  return name_in_order(type, 1,
+                       {"button", "switch", "range_bar", "choose_list", "integer_input_box"});
 }
 
 // --- 3.2.5 ACK ----------------------------------------------------------------------------------

@@ -15,9 +15,27 @@ std::vector<Field> version_fields() {
           {"major", 4, Kind::kU8}};
 }
 
-std::vector<AckEntry> build() {
+// One-bit flags in the byte at `offset`, bit 0 first, then the fields `after` them.
+std::vector<Field> flags(uint8_t offset, std::initializer_list<const char*> names,
+                         std::vector<Field> after = {}) {
+  std::vector<Field> out;
+  uint8_t bit = 0;
+  for (const char* name : names) out.push_back({name, offset, Kind::kBit, bit++});
+  out.insert(out.end(), after.begin(), after.end());
+  return out;
+}
+
+uint32_t le(const Data& d, size_t at, size_t n) {
+  uint32_t v = 0;
+  for (size_t i = 0; i < n; ++i) v |= static_cast<uint32_t>(d.bytes[at + i]) << (8 * i);
+  return v;
+}
+
+}  // namespace
+
+const std::vector<AckEntry>& acks() {
   using K = Kind;
-  return {
+  static const std::vector<AckEntry> all = {
       {0x01, 0x02, "get_psdk_version", "3.1.2", 5, version_fields()},
       {0x01, 0x03, "link_handshake", "3.1.3", 2, {}},  // 2:(N+1): the command's bytes, N >= 1
       {0x01,
@@ -35,16 +53,8 @@ std::vector<AckEntry> build() {
       {0x04, 0x01, "set_camera_work_mode", "3.4.1", 1, {}},
       {0x04, 0x02, "get_camera_work_mode", "3.4.2", 2, {{"mode", 1, K::kU8}}},  // 0 photo, 1 video
       {0x04, 0x03, "shoot_photo", "3.4.3", 1, {}},
-      {0x04,
-       0x04,
-       "get_shoot_photo_state",
-       "3.4.4",
-       4,
-       {{"single", 1, K::kBit, 0},
-        {"interval", 1, K::kBit, 1},
-        {"burst", 1, K::kBit, 2},
-        {"storing", 1, K::kBit, 3},
-        {"countdown_s", 2, K::kU16}}},
+      {0x04, 0x04, "get_shoot_photo_state", "3.4.4", 4,
+       flags(1, {"single", "interval", "burst", "storing"}, {{"countdown_s", 2, K::kU16}})},
       {0x04, 0x05, "set_shoot_photo_mode", "3.4.5", 1, {}},
       {0x04, 0x07, "record_video", "3.4.7", 1, {}},
       {0x04,
@@ -77,16 +87,8 @@ std::vector<AckEntry> build() {
       {0x04, 0x39, "get_optical_zoom_factor", "3.4.24", 5, {{"factor", 1, K::kF32}}},
       {0x04, 0x40, "start_continuous_zoom", "3.4.25", 1, {}},
       {0x04, 0x41, "stop_continuous_zoom", "3.4.26", 1, {}},
-      {0x04,
-       0xFF,
-       "get_camera_capability",
-       "3.4.33",
-       2,
-       {{"camera_commands", 1, K::kBit, 0},
-        {"optical_zoom", 1, K::kBit, 1},
-        {"digital_zoom", 1, K::kBit, 2},
-        {"focus", 1, K::kBit, 3},
-        {"metering", 1, K::kBit, 4}}},
+      {0x04, 0xFF, "get_camera_capability", "3.4.33", 2,
+       flags(1, {"camera_commands", "optical_zoom", "digital_zoom", "focus", "metering"})},
       {0x05, 0x02, "set_gimbal_mode", "3.5.2", 1, {}},
       {0x05, 0x03, "gimbal_return_head", "3.5.3", 1, {}},
       {0x05, 0x04, "control_gimbal_speed", "3.5.4", 1, {}},
@@ -108,18 +110,6 @@ std::vector<AckEntry> build() {
         {"yaw_deg_s", 9, K::kF32, 0, 0.1}}},
       {0x05, 0xFF, "get_gimbal_capability", "3.5.10", 2, {{"supported", 1, K::kU8}}},
   };
-}
-
-uint32_t le(const Data& d, size_t at, size_t n) {
-  uint32_t v = 0;
-  for (size_t i = 0; i < n; ++i) v |= static_cast<uint32_t>(d.bytes[at + i]) << (8 * i);
-  return v;
-}
-
-}  // namespace
-
-const std::vector<AckEntry>& acks() {
-  static const std::vector<AckEntry> all = build();
   return all;
 }
 

@@ -38,21 +38,18 @@ struct FloatingWindowMessage : Command<CommandSet::kAppFunction, 0x03, Sender::k
 };
 
 // 3.2.9 ACK.
-struct TextInputBoxAck : Reply<CommandSet::kAppFunction, 0x09, Sender::kPayload> {
-  K40T_PSDK_NAMED("get_text_input_box_ack", "3.2.9");
+struct TextInputBoxValue {
   bool display = false;
   std::string name;         // at most 31 bytes + NUL
   std::string description;  // at most 31 bytes + NUL
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("display", s.display, wire::u8);
     v("name", s.name, wire::Text{kTextInputNameSize});
     v("description", s.description, wire::Text{kTextInputNameSize});
   }
 };
 
-// 3.2.9: parameters of DJI Pilot's text input box.
-K40T_PSDK_NO_DATA(GetTextInputBox, kAppFunction, 0x09, TextInputBoxAck, "get_text_input_box",
-                  "3.2.9");
+// 3.2.9: parameters of DJI Pilot's text input box. GetTextInputBox, TextInputBoxAck.
+K40T_PSDK_GET(TextInputBox, text_input_box, TextInputBoxValue, kAppFunction, 0x09, "3.2.9");
 
 }  // namespace k40t::psdk

@@ -33,42 +33,24 @@ K40T_PSDK_SETTING(CameraWorkMode, camera_work_mode, CameraWorkModeValue, kCamera
 struct ShootPhoto : Command<CommandSet::kCamera, 0x03, Sender::kAdapter, PlainAck> {
   K40T_PSDK_NAMED("shoot_photo", "3.4.3");
   ShootPhotoAction action = ShootPhotoAction::kStart;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("action", s.action, wire::u8);
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("action", s.action, wire::u8); }
 };
 
 // 3.4.4 byte 2.
-struct ShootPhotoState {
-  bool shooting_single = false;
-  bool shooting_interval = false;
-  bool shooting_burst = false;
-  bool storing = false;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("shooting_single", s.shooting_single, wire::bit(0));
-    v("shooting_interval", s.shooting_interval, wire::bit(1));
-    v("shooting_burst", s.shooting_burst, wire::bit(2));
-    v("storing", s.storing, wire::bit(3));
-  }
-};
+K40T_PSDK_FLAGS(ShootPhotoState, shooting_single, shooting_interval, shooting_burst, storing);
 
 // 3.4.4 ACK.
-struct ShootPhotoStateAck : Reply<CommandSet::kCamera, 0x04, Sender::kPayload> {
-  K40T_PSDK_NAMED("get_shoot_photo_state_ack", "3.4.4");
+struct ShootPhotoStateValue {
   ShootPhotoState state;
   uint16_t interval_countdown_s = 0;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("state", s.state, wire::packed8);
     v("interval_countdown_s", s.interval_countdown_s, wire::u16);
   }
 };
 
-// 3.4.4.
-K40T_PSDK_NO_DATA(GetShootPhotoState, kCamera, 0x04, ShootPhotoStateAck, "get_shoot_photo_state",
-                  "3.4.4");
+// 3.4.4: GetShootPhotoState, ShootPhotoStateAck.
+K40T_PSDK_GET(ShootPhotoState, shoot_photo_state, ShootPhotoStateValue, kCamera, 0x04, "3.4.4");
 
 // 3.4.5 / 3.4.6: burst count applies to burst shooting, interval count and interval to interval
 // shooting (count 1..254, or 255 = until stopped; interval 1..255 s; 0 is reserved for both).
@@ -87,8 +69,7 @@ struct BasicShootPhotoMode {
         check_int("interval_count", interval_count, 1, 255),
         check_int("interval_s", interval_s, 1, std::numeric_limits<Interval>::max(), "s"));
   }
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("type", s.type, wire::u8);
     v("burst_count", s.burst_count, wire::u8);
     v("interval_count", s.interval_count, wire::u8);
@@ -105,62 +86,34 @@ K40T_PSDK_SETTING(ShootPhotoMode, shoot_photo_mode, ShootPhotoMode, kCamera, 0x0
 struct RecordVideo : Command<CommandSet::kCamera, 0x07, Sender::kAdapter, PlainAck> {
   K40T_PSDK_NAMED("record_video", "3.4.7");
   RecordAction action = RecordAction::kStart;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("action", s.action, wire::u8);
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("action", s.action, wire::u8); }
 };
 
 // 3.4.8 ACK.
-struct RecordStateAck : Reply<CommandSet::kCamera, 0x08, Sender::kPayload> {
-  K40T_PSDK_NAMED("get_record_state_ack", "3.4.8");
+struct RecordStateValue {
   bool recording = false;
   uint16_t duration_s = 0;  // of the current recording
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("recording", s.recording, wire::u8);
     v("duration_s", s.duration_s, wire::u16);
   }
 };
 
-// 3.4.8.
-K40T_PSDK_NO_DATA(GetRecordState, kCamera, 0x08, RecordStateAck, "get_record_state", "3.4.8");
+// 3.4.8: GetRecordState, RecordStateAck.
+K40T_PSDK_GET(RecordState, record_state, RecordStateValue, kCamera, 0x08, "3.4.8");
 
 // 3.4.9 bytes 2:3.
-struct SdCardState {
-  bool inserted = false;
-  bool initializing = false;
-  bool read_only = false;
-  bool formatted = false;
-  bool formatting = false;
-  bool full = false;
-  bool verified = false;
-  bool invalid_format = false;
-  bool has_error = false;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("inserted", s.inserted, wire::bit(0));
-    v("initializing", s.initializing, wire::bit(1));
-    v("read_only", s.read_only, wire::bit(2));
-    v("formatted", s.formatted, wire::bit(3));
-    v("formatting", s.formatting, wire::bit(4));
-    v("full", s.full, wire::bit(5));
-    v("verified", s.verified, wire::bit(6));
-    v("invalid_format", s.invalid_format, wire::bit(7));
-    v("has_error", s.has_error, wire::bit(8));
-  }
-};
+K40T_PSDK_FLAGS(SdCardState, inserted, initializing, read_only, formatted, formatting, full,
+                verified, invalid_format, has_error);
 
 // 3.4.9 ACK.
-struct SdCardInfoAck : Reply<CommandSet::kCamera, 0x09, Sender::kPayload> {
-  K40T_PSDK_NAMED("get_sd_card_info_ack", "3.4.9");
+struct SdCardInfoValue {
   SdCardState state;
   uint32_t capacity_mb = 0;
   uint32_t remaining_mb = 0;
   uint32_t remaining_shots = 0;
   uint32_t remaining_record_time_s = 0;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("state", s.state, wire::packed16);
     v("capacity_mb", s.capacity_mb, wire::u32);
     v("remaining_mb", s.remaining_mb, wire::u32);
@@ -169,50 +122,28 @@ struct SdCardInfoAck : Reply<CommandSet::kCamera, 0x09, Sender::kPayload> {
   }
 };
 
-// 3.4.9.
-K40T_PSDK_NO_DATA(GetSdCardInfo, kCamera, 0x09, SdCardInfoAck, "get_sd_card_info", "3.4.9");
+// 3.4.9: GetSdCardInfo, SdCardInfoAck.
+K40T_PSDK_GET(SdCardInfo, sd_card_info, SdCardInfoValue, kCamera, 0x09, "3.4.9");
 
 // 3.4.10 ACK: one reserved byte after the code.
 struct FormatSdCardAck : Reply<CommandSet::kCamera, 0x0A, Sender::kPayload> {
   K40T_PSDK_NAMED("format_sd_card_ack", "3.4.10");
-  template <class S, class V>
-  static void layout(S&, V&& v) {
-    v("reserved", wire::gap, wire::Reserved{1});
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("reserved", wire::gap, wire::Reserved{1}); }
 };
 
 // 3.4.10.
 K40T_PSDK_NO_DATA(FormatSdCard, kCamera, 0x0A, FormatSdCardAck, "format_sd_card", "3.4.10");
 
 // 3.4.33 byte 2.
-struct CameraCapability {
-  bool camera_commands = false;
-  bool optical_zoom = false;
-  bool digital_zoom = false;
-  bool focus = false;
-  bool metering = false;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("camera_commands", s.camera_commands, wire::bit(0));
-    v("optical_zoom", s.optical_zoom, wire::bit(1));
-    v("digital_zoom", s.digital_zoom, wire::bit(2));
-    v("focus", s.focus, wire::bit(3));
-    v("metering", s.metering, wire::bit(4));
-  }
-};
+K40T_PSDK_FLAGS(CameraCapability, camera_commands, optical_zoom, digital_zoom, focus, metering);
 
 // 3.4.33 ACK.
-struct CameraCapabilityAck : Reply<CommandSet::kCamera, 0xFF, Sender::kPayload> {
-  K40T_PSDK_NAMED("get_camera_capability_ack", "3.4.33");
+struct CameraCapabilityValue {
   CameraCapability supported;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("supported", s.supported, wire::packed8);
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("supported", s.supported, wire::packed8); }
 };
 
-// 3.4.33.
-K40T_PSDK_NO_DATA(GetCameraCapability, kCamera, 0xFF, CameraCapabilityAck, "get_camera_capability",
-                  "3.4.33");
+// 3.4.33: GetCameraCapability, CameraCapabilityAck.
+K40T_PSDK_GET(CameraCapability, camera_capability, CameraCapabilityValue, kCamera, 0xFF, "3.4.33");
 
 }  // namespace k40t::psdk

@@ -38,8 +38,7 @@ K40T_PSDK_SETTING(MeteringMode, metering_mode, MeteringModeValue, kCamera, 0x20,
 struct SpotZone {
   uint8_t column = 0;  // 0..11
   uint8_t row = 0;     // 0..7
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("column", s.column, wire::bits(0, 4));
     v("row", s.row, wire::bits(4, 4));
   }
@@ -50,10 +49,7 @@ struct SpotZoneValue {
   Status validate() const {
     return first_failure(check_int("column", zone.column, 0, 11), check_int("row", zone.row, 0, 7));
   }
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("zone", s.zone, wire::packed8);
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("zone", s.zone, wire::packed8); }
 };
 
 // 3.4.13 / 3.4.14: SetSpotMeteringZone, SpotMeteringZoneAck, GetSpotMeteringZone.
@@ -72,8 +68,7 @@ struct FocusZoneValue {
   Status validate() const {
     return first_failure(check_real("x", x, 0.0, 1.0), check_real("y", y, 0.0, 1.0));
   }
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("x", s.x, wire::f32);
     v("y", s.y, wire::f32);
   }
@@ -86,10 +81,7 @@ K40T_PSDK_SETTING(FocusZone, focus_zone, FocusZoneValue, kCamera, 0x32, "3.4.17"
 struct DigitalZoomFactorValue {
   float factor_x = 1.0f;
   Status validate() const { return check_real("factor_x", factor_x, 1.0, 1e6); }
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("factor_x", s.factor_x, wire::f32);
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("factor_x", s.factor_x, wire::f32); }
 };
 
 // 3.4.19 / 3.4.20: SetDigitalZoomFactor, DigitalZoomFactorAck, GetDigitalZoomFactor.
@@ -97,32 +89,26 @@ K40T_PSDK_SETTING(DigitalZoomFactor, digital_zoom_factor, DigitalZoomFactorValue
                   "3.4.19", 0x35, "3.4.20");
 
 // 3.4.21 ACK: focal lengths in 0.1 mm on the wire.
-struct OpticalZoomSpecAck : Reply<CommandSet::kCamera, 0x36, Sender::kPayload> {
-  K40T_PSDK_NAMED("get_optical_zoom_spec_ack", "3.4.21");
+struct OpticalZoomSpecValue {
   double max_focal_length_mm = 0;
   double min_focal_length_mm = 0;
   double focal_length_step_mm = 0;
   Status validate() const;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("max_focal_length_mm", s.max_focal_length_mm, wire::scaled<uint16_t>(10));
     v("min_focal_length_mm", s.min_focal_length_mm, wire::scaled<uint16_t>(10));
     v("focal_length_step_mm", s.focal_length_step_mm, wire::scaled<uint16_t>(10));
   }
 };
 
-// 3.4.21.
-K40T_PSDK_NO_DATA(GetOpticalZoomSpec, kCamera, 0x36, OpticalZoomSpecAck, "get_optical_zoom_spec",
-                  "3.4.21");
+// 3.4.21: GetOpticalZoomSpec, OpticalZoomSpecAck.
+K40T_PSDK_GET(OpticalZoomSpec, optical_zoom_spec, OpticalZoomSpecValue, kCamera, 0x36, "3.4.21");
 
 // 3.4.22 / 3.4.23: the document says "1:2 Float" in 0.1 mm; two bytes cannot hold a float, and
 // 3.4.21 gives focal lengths as uint16 0.1 mm, so this is read as uint16 0.1 mm (docs/psdk.md).
 struct FocalLengthValue {
   double focal_length_mm = 0;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("focal_length_mm", s.focal_length_mm, wire::scaled<uint16_t>(10));
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("focal_length_mm", s.focal_length_mm, wire::scaled<uint16_t>(10)); }
 };
 
 // 3.4.22 / 3.4.23: SetOpticalZoomFocalLength, OpticalZoomFocalLengthAck, GetOpticalZoomFocalLength.
@@ -130,27 +116,22 @@ K40T_PSDK_SETTING(OpticalZoomFocalLength, optical_zoom_focal_length, FocalLength
                   0x37, "3.4.22", 0x38, "3.4.23");
 
 // 3.4.24 ACK.
-struct OpticalZoomFactorAck : Reply<CommandSet::kCamera, 0x39, Sender::kPayload> {
-  K40T_PSDK_NAMED("get_optical_zoom_factor_ack", "3.4.24");
+struct OpticalZoomFactorValue {
   float factor_x = 1.0f;
   Status validate() const { return check_real("factor_x", factor_x, 1.0, kMaxOpticalZoomFactor); }
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("factor_x", s.factor_x, wire::f32);
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("factor_x", s.factor_x, wire::f32); }
 };
 
-// 3.4.24.
-K40T_PSDK_NO_DATA(GetOpticalZoomFactor, kCamera, 0x39, OpticalZoomFactorAck,
-                  "get_optical_zoom_factor", "3.4.24");
+// 3.4.24: GetOpticalZoomFactor, OpticalZoomFactorAck.
+K40T_PSDK_GET(OpticalZoomFactor, optical_zoom_factor, OpticalZoomFactorValue, kCamera, 0x39,
+              "3.4.24");
 
 // 3.4.25: zoom until the end of travel or 3.4.26.
 struct StartContinuousZoom : Command<CommandSet::kCamera, 0x40, Sender::kAdapter, PlainAck> {
   K40T_PSDK_NAMED("start_continuous_zoom", "3.4.25");
   ZoomSpeed speed = ZoomSpeed::kNormal;
   ZoomDirection direction = ZoomDirection::kIn;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("speed", s.speed, wire::u8);
     v("direction", s.direction, wire::u8);
   }
@@ -160,22 +141,11 @@ struct StartContinuousZoom : Command<CommandSet::kCamera, 0x40, Sender::kAdapter
 K40T_PSDK_NO_DATA(StopContinuousZoom, kCamera, 0x41, PlainAck, "stop_continuous_zoom", "3.4.26");
 
 // 3.4.27 / 3.4.28.
-struct FocusAssistant {
-  bool for_auto_focus = false;
-  bool for_manual_focus = false;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("for_auto_focus", s.for_auto_focus, wire::bit(0));
-    v("for_manual_focus", s.for_manual_focus, wire::bit(1));
-  }
-};
+K40T_PSDK_FLAGS(FocusAssistant, for_auto_focus, for_manual_focus);
 
 struct FocusAssistantValue {
   FocusAssistant assistant;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("assistant", s.assistant, wire::packed8);
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("assistant", s.assistant, wire::packed8); }
 };
 
 // 3.4.27 / 3.4.28: SetFocusAssistant, FocusAssistantAck, GetFocusAssistant.
@@ -183,44 +153,32 @@ K40T_PSDK_SETTING(FocusAssistant, focus_assistant, FocusAssistantValue, kCamera,
                   0x43, "3.4.28");
 
 // 3.4.29 ACK.
-struct FocusRingUpperBoundAck : Reply<CommandSet::kCamera, 0x44, Sender::kPayload> {
-  K40T_PSDK_NAMED("get_focus_ring_upper_bound_ack", "3.4.29");
+struct FocusRingUpperBoundValue {
   uint16_t upper_bound = 0;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("upper_bound", s.upper_bound, wire::u16);
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("upper_bound", s.upper_bound, wire::u16); }
 };
 
-// 3.4.29.
-K40T_PSDK_NO_DATA(GetFocusRingUpperBound, kCamera, 0x44, FocusRingUpperBoundAck,
-                  "get_focus_ring_upper_bound", "3.4.29");
+// 3.4.29: GetFocusRingUpperBound, FocusRingUpperBoundAck.
+K40T_PSDK_GET(FocusRingUpperBound, focus_ring_upper_bound, FocusRingUpperBoundValue, kCamera, 0x44,
+              "3.4.29");
 
 // 3.4.30 / 3.4.31: 0 = infinity .. upper bound = closest focus.
 struct FocusRingValue {
   uint16_t value = 0;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("value", s.value, wire::u16);
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("value", s.value, wire::u16); }
 };
 
 // 3.4.30 / 3.4.31: SetFocusRing, FocusRingAck, GetFocusRing.
 K40T_PSDK_SETTING(FocusRing, focus_ring, FocusRingValue, kCamera, 0x45, "3.4.30", 0x46, "3.4.31");
 
 // 3.4.32 ACK.
-struct DigitalZoomSpecAck : Reply<CommandSet::kCamera, 0x47, Sender::kPayload> {
-  K40T_PSDK_NAMED("get_digital_zoom_spec_ack", "3.4.32");
+struct DigitalZoomSpecValue {
   float max_factor_x = 1.0f;
   Status validate() const { return check_real("max_factor_x", max_factor_x, 1.0, 1e6); }
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("max_factor_x", s.max_factor_x, wire::f32);
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("max_factor_x", s.max_factor_x, wire::f32); }
 };
 
-// 3.4.32.
-K40T_PSDK_NO_DATA(GetDigitalZoomSpec, kCamera, 0x47, DigitalZoomSpecAck, "get_digital_zoom_spec",
-                  "3.4.32");
+// 3.4.32: GetDigitalZoomSpec, DigitalZoomSpecAck.
+K40T_PSDK_GET(DigitalZoomSpec, digital_zoom_spec, DigitalZoomSpecValue, kCamera, 0x47, "3.4.32");
 
 }  // namespace k40t::psdk

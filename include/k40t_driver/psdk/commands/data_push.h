@@ -15,8 +15,7 @@ struct DateTime {
   uint8_t minute = 0;
   uint8_t second = 0;
   Status validate() const;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("year", s.year, wire::u16);
     v("month", s.month, wire::u8);
     v("day", s.day, wire::u8);
@@ -27,41 +26,15 @@ struct DateTime {
 };
 
 // 3.3.1 byte 4.
-struct LinkConnectionState {
-  bool remote_controller_connected = false;
-  bool image_downlink_connected = false;
-  bool data_downlink_connected = false;
-  bool app_connected = false;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("remote_controller_connected", s.remote_controller_connected, wire::bit(0));
-    v("image_downlink_connected", s.image_downlink_connected, wire::bit(1));
-    v("data_downlink_connected", s.data_downlink_connected, wire::bit(2));
-    v("app_connected", s.app_connected, wire::bit(3));
-  }
-};
+K40T_PSDK_FLAGS(LinkConnectionState, remote_controller_connected, image_downlink_connected,
+                data_downlink_connected, app_connected);
 
 // 3.3.1 byte 17: 1 = real-time bandwidth within the limit.
-struct MsdkBandwidthFlags {
-  bool msdk_uplink_within_limit = false;
-  bool msdk_downlink_within_limit = false;
-  bool network_within_limit = false;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("msdk_uplink_within_limit", s.msdk_uplink_within_limit, wire::bit(0));
-    v("msdk_downlink_within_limit", s.msdk_downlink_within_limit, wire::bit(1));
-    v("network_within_limit", s.network_within_limit, wire::bit(2));
-  }
-};
+K40T_PSDK_FLAGS(MsdkBandwidthFlags, msdk_uplink_within_limit, msdk_downlink_within_limit,
+                network_within_limit);
 
 // 3.3.1 byte 38.
-struct OsdkBandwidthFlags {
-  bool osdk_uplink_within_limit = false;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("osdk_uplink_within_limit", s.osdk_uplink_within_limit, wire::bit(0));
-  }
-};
+K40T_PSDK_FLAGS(OsdkBandwidthFlags, osdk_uplink_within_limit);
 
 // 3.3.1 (link bandwidth). MSDK uplink is mobile -> payload; OSDK uplink is payload -> onboard.
 struct LinkBandwidthPush : Command<CommandSet::kDataPush, 0x01, Sender::kAdapter, NoAck> {
@@ -80,8 +53,7 @@ struct LinkBandwidthPush : Command<CommandSet::kDataPush, 0x01, Sender::kAdapter
   uint32_t osdk_uplink_max_bytes_s = 0;
   OsdkBandwidthFlags osdk_flags;
   uint32_t osdk_uplink_bytes_s = 0;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("image_link_normal", s.image_link_normal, wire::u8);
     v("max_image_link_bandwidth", s.max_image_link_bandwidth, wire::u8);
     v("reserved", wire::gap, wire::Reserved{1});
@@ -107,8 +79,7 @@ struct AttitudePush : Command<CommandSet::kDataPush, 0x02, Sender::kAdapter, NoA
   float q1 = 0.0f;
   float q2 = 0.0f;
   float q3 = 0.0f;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("q0", s.q0, wire::f32);
     v("q1", s.q1, wire::f32);
     v("q2", s.q2, wire::f32);
@@ -120,10 +91,7 @@ struct AttitudePush : Command<CommandSet::kDataPush, 0x02, Sender::kAdapter, NoA
 struct BatteryInfoAck : Reply<CommandSet::kDataPush, 0x03, Sender::kPayload> {
   K40T_PSDK_NAMED("battery_info_push_ack", "3.3.3");
   bool power_off_ready = false;  // preparation for power-off complete
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("power_off_ready", s.power_off_ready, wire::u8);
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("power_off_ready", s.power_off_ready, wire::u8); }
 };
 
 // 3.3.3.
@@ -132,8 +100,7 @@ struct BatteryInfoPush : Command<CommandSet::kDataPush, 0x03, Sender::kAdapter, 
   uint8_t percentage = 0;
   bool power_off_soon = false;
   Status validate() const { return check_int("percentage", percentage, 0, 100, "%"); }
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("percentage", s.percentage, wire::u8);
     v("power_off_soon", s.power_off_soon, wire::u8);
   }
@@ -151,8 +118,7 @@ struct GpsPush : Command<CommandSet::kDataPush, 0x04, Sender::kAdapter, NoAck> {
   uint8_t satellites = 0;
   GpsSignal signal = GpsSignal::kNone;
   Status validate() const;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("longitude_rad", s.longitude_rad, wire::f64);
     v("latitude_rad", s.latitude_rad, wire::f64);
     v("relative_height_m", s.relative_height_m, wire::scaled<int16_t>(10));
@@ -182,8 +148,7 @@ struct UavFunctionState {
   bool compass_abnormal = false;
   bool motors_rotating = false;
   LandingState landing = LandingState::kUnknown;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("compass_abnormal", s.compass_abnormal, wire::bit(0));
     v("motors_rotating", s.motors_rotating, wire::bit(1));
     v("landing", s.landing, wire::bits(2, 2));
@@ -196,8 +161,7 @@ struct UavStatePush : Command<CommandSet::kDataPush, 0x05, Sender::kAdapter, NoA
   UavFunctionState state;
   double flight_time_s = 0;  // since the motors last started; 0.1 s on the wire
   DroneType drone_type = DroneType::kUnknown;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("state", s.state, wire::packed8);
     v("flight_time_s", s.flight_time_s, wire::scaled<uint16_t>(10));
     v("drone_type", s.drone_type, wire::u8);
@@ -209,20 +173,14 @@ struct AppDateTimePush : Command<CommandSet::kDataPush, 0x06, Sender::kAdapter, 
   K40T_PSDK_NAMED("app_date_time_push", "3.3.6");
   DateTime time;
   Status validate() const { return time.validate(); }
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    DateTime::layout(s.time, v);
-  }
+  K40T_PSDK_LAYOUT(s, v) { DateTime::layout(s.time, v); }
 };
 
 // 3.3.7. The document gives no unit; metres (like the RTK height) is this project's reading.
 struct BarometricAltitudePush : Command<CommandSet::kDataPush, 0x07, Sender::kAdapter, NoAck> {
   K40T_PSDK_NAMED("barometric_altitude_push", "3.3.7");
   float altitude_m = 0;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("altitude_m", s.altitude_m, wire::f32);
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("altitude_m", s.altitude_m, wire::f32); }
 };
 
 // 3.3.8: the GPS receiver's own solution.
@@ -247,8 +205,7 @@ struct RawGpsPush : Command<CommandSet::kDataPush, 0x08, Sender::kAdapter, NoAck
   uint16_t total_satellites = 0;
   uint16_t counter = 0;  // increments per push, wraps at 65535
   Status validate() const;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("date_yyyymmdd", s.date_yyyymmdd, wire::u32);
     v("time_hhmmss", s.time_hhmmss, wire::u32);
     v("longitude_deg", s.longitude_deg, wire::scaled<int32_t>(1e7));
@@ -283,8 +240,7 @@ struct RawRtkPush : Command<CommandSet::kDataPush, 0x09, Sender::kAdapter, NoAck
   uint8_t position_type = 0;     // solution type; the document's value table is a copy of DOP's
   uint8_t orientation_type = 0;  // likewise
   Status validate() const;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("longitude_deg", s.longitude_deg, wire::f64);
     v("latitude_deg", s.latitude_deg, wire::f64);
     v("height_m", s.height_m, wire::f32);
@@ -306,8 +262,7 @@ struct UtcTimePush : Command<CommandSet::kDataPush, 0x0A, Sender::kAdapter, NoAc
   Status validate() const {
     return first_failure(time.validate(), check_int("microsecond", microsecond, 0, 999999, "us"));
   }
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     DateTime::layout(s.time, v);
     v("microsecond", s.microsecond, wire::u32);
   }
@@ -320,10 +275,7 @@ const char* to_string(OtherPayloadType type);
 struct OtherPayloadTypePush : Command<CommandSet::kDataPush, 0x0B, Sender::kAdapter, NoAck> {
   K40T_PSDK_NAMED("other_payload_type_push", "3.3.11");
   OtherPayloadType type = OtherPayloadType::kUnknown;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("type", s.type, wire::u8);
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("type", s.type, wire::u8); }
 };
 
 // 3.3.12: the main gimbal payload's focal length. The table says byte "1" for a uint16; read
@@ -331,10 +283,7 @@ struct OtherPayloadTypePush : Command<CommandSet::kDataPush, 0x0B, Sender::kAdap
 struct OtherPayloadFocalLengthPush : Command<CommandSet::kDataPush, 0x0C, Sender::kAdapter, NoAck> {
   K40T_PSDK_NAMED("other_payload_focal_length_push", "3.3.12");
   double focal_length_mm = 0;  // 0.1 mm on the wire
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("focal_length_mm", s.focal_length_mm, wire::scaled<uint16_t>(10));
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("focal_length_mm", s.focal_length_mm, wire::scaled<uint16_t>(10)); }
 };
 
 }  // namespace k40t::psdk

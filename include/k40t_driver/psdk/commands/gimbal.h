@@ -25,19 +25,7 @@ const char* to_string(CalibrationStatus status);
 constexpr double kMaxGimbalRateDegS = 180.0;  // 3.5.4: -1800..1800 x 0.1 deg/s
 
 // 3.5.1 byte 3.
-struct GimbalStateFlags {
-  bool upward_mounted = false;
-  bool yaw_at_limit = false;
-  bool roll_at_limit = false;
-  bool pitch_at_limit = false;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("upward_mounted", s.upward_mounted, wire::bit(0));
-    v("yaw_at_limit", s.yaw_at_limit, wire::bit(1));
-    v("roll_at_limit", s.roll_at_limit, wire::bit(2));
-    v("pitch_at_limit", s.pitch_at_limit, wire::bit(3));
-  }
-};
+K40T_PSDK_FLAGS(GimbalStateFlags, upward_mounted, yaw_at_limit, roll_at_limit, pitch_at_limit);
 
 // Three angles in 0.1 degree on the wire, as int16 (the document does not say signed for 3.5.1
 // and says Uint16 for 3.5.6, but angles below zero exist; docs/psdk.md).
@@ -45,8 +33,7 @@ struct GimbalAngles {
   double pitch_deg = 0;
   double roll_deg = 0;
   double yaw_deg = 0;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("pitch_deg", s.pitch_deg, wire::scaled<int16_t>(10));
     v("roll_deg", s.roll_deg, wire::scaled<int16_t>(10));
     v("yaw_deg", s.yaw_deg, wire::scaled<int16_t>(10));
@@ -54,21 +41,19 @@ struct GimbalAngles {
 };
 
 // 3.5.1 ACK.
-struct GimbalStateAck : Reply<CommandSet::kGimbal, 0x01, Sender::kPayload> {
-  K40T_PSDK_NAMED("get_gimbal_state_ack", "3.5.1");
+struct GimbalStateValue {
   GimbalStateMode mode = GimbalStateMode::kFree;
   GimbalStateFlags flags;
   GimbalAngles angles;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("mode", s.mode, wire::u8);
     v("flags", s.flags, wire::packed8);
     GimbalAngles::layout(s.angles, v);
   }
 };
 
-// 3.5.1.
-K40T_PSDK_NO_DATA(GetGimbalState, kGimbal, 0x01, GimbalStateAck, "get_gimbal_state", "3.5.1");
+// 3.5.1: GetGimbalState, GimbalStateAck.
+K40T_PSDK_GET(GimbalState, gimbal_state, GimbalStateValue, kGimbal, 0x01, "3.5.1");
 
 // 3.5.2.
 struct SetGimbalMode : Command<CommandSet::kGimbal, 0x02, Sender::kAdapter, PlainAck>,
@@ -87,8 +72,7 @@ struct ControlGimbalSpeed : Command<CommandSet::kGimbal, 0x04, Sender::kAdapter,
   double yaw_rate_deg_s = 0;
   GimbalControlAction action = GimbalControlAction::kControl;
   Status validate() const;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("pitch_rate_deg_s", s.pitch_rate_deg_s, wire::scaled<int16_t>(10));
     v("roll_rate_deg_s", s.roll_rate_deg_s, wire::scaled<int16_t>(10));
     v("yaw_rate_deg_s", s.yaw_rate_deg_s, wire::scaled<int16_t>(10));
@@ -102,8 +86,7 @@ struct ControlGimbalAngle : Command<CommandSet::kGimbal, 0x05, Sender::kAdapter,
   float pitch_deg = 0;
   float roll_deg = 0;
   float yaw_deg = 0;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("pitch_deg", s.pitch_deg, wire::f32);
     v("roll_deg", s.roll_deg, wire::f32);
     v("yaw_deg", s.yaw_deg, wire::f32);
@@ -114,62 +97,50 @@ struct ControlGimbalAngle : Command<CommandSet::kGimbal, 0x05, Sender::kAdapter,
 struct ControlGimbalJointAngle : Command<CommandSet::kGimbal, 0x06, Sender::kAdapter, PlainAck> {
   K40T_PSDK_NAMED("control_gimbal_joint_angle", "3.5.6");
   GimbalAngles angles;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    GimbalAngles::layout(s.angles, v);
-  }
+  K40T_PSDK_LAYOUT(s, v) { GimbalAngles::layout(s.angles, v); }
 };
 
 // 3.5.7.
 K40T_PSDK_NO_DATA(CalibrateGimbal, kGimbal, 0x07, PlainAck, "calibrate_gimbal", "3.5.7");
 
 // 3.5.8 ACK.
-struct CalibrationProgressAck : Reply<CommandSet::kGimbal, 0x08, Sender::kPayload> {
-  K40T_PSDK_NAMED("get_calibration_progress_ack", "3.5.8");
+struct CalibrationProgressValue {
   uint8_t progress_percent = 0;
   CalibrationStatus status = CalibrationStatus::kComplete;
   Status validate() const { return check_int("progress_percent", progress_percent, 0, 100, "%"); }
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("progress_percent", s.progress_percent, wire::u8);
     v("status", s.status, wire::u8);
   }
 };
 
-// 3.5.8.
-K40T_PSDK_NO_DATA(GetCalibrationProgress, kGimbal, 0x08, CalibrationProgressAck,
-                  "get_calibration_progress", "3.5.8");
+// 3.5.8: GetCalibrationProgress, CalibrationProgressAck.
+K40T_PSDK_GET(CalibrationProgress, calibration_progress, CalibrationProgressValue, kGimbal, 0x08,
+              "3.5.8");
 
 // 3.5.9 ACK: body-frame rotation speeds, floats in 0.1 deg/s on the wire.
-struct GimbalAdditionalStatusAck : Reply<CommandSet::kGimbal, 0x09, Sender::kPayload> {
-  K40T_PSDK_NAMED("get_gimbal_additional_status_ack", "3.5.9");
+struct GimbalAdditionalStatusValue {
   double pitch_rate_deg_s = 0;
   double roll_rate_deg_s = 0;
   double yaw_rate_deg_s = 0;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("pitch_rate_deg_s", s.pitch_rate_deg_s, wire::f32_scaled(10));
     v("roll_rate_deg_s", s.roll_rate_deg_s, wire::f32_scaled(10));
     v("yaw_rate_deg_s", s.yaw_rate_deg_s, wire::f32_scaled(10));
   }
 };
 
-// 3.5.9.
-K40T_PSDK_NO_DATA(GetGimbalAdditionalStatus, kGimbal, 0x09, GimbalAdditionalStatusAck,
-                  "get_gimbal_additional_status", "3.5.9");
+// 3.5.9: GetGimbalAdditionalStatus, GimbalAdditionalStatusAck.
+K40T_PSDK_GET(GimbalAdditionalStatus, gimbal_additional_status, GimbalAdditionalStatusValue,
+              kGimbal, 0x09, "3.5.9");
 
 // 3.5.10 ACK.
-struct GimbalCapabilityAck : Reply<CommandSet::kGimbal, 0xFF, Sender::kPayload> {
-  K40T_PSDK_NAMED("get_gimbal_capability_ack", "3.5.10");
+struct GimbalCapabilityValue {
   bool supported = false;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("supported", s.supported, wire::u8);
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("supported", s.supported, wire::u8); }
 };
 
-// 3.5.10.
-K40T_PSDK_NO_DATA(GetGimbalCapability, kGimbal, 0xFF, GimbalCapabilityAck, "get_gimbal_capability",
-                  "3.5.10");
+// 3.5.10: GetGimbalCapability, GimbalCapabilityAck.
+K40T_PSDK_GET(GimbalCapability, gimbal_capability, GimbalCapabilityValue, kGimbal, 0xFF, "3.5.10");
 
 }  // namespace k40t::psdk

@@ -26,8 +26,7 @@ const char* to_string(PositionSolution solution);
 struct PositionEvent {
   uint16_t event_index = 0;        // 0..8191
   uint8_t target_point_index = 0;  // 0..7
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("event_index", s.event_index, wire::bits(0, 13));
     v("target_point_index", s.target_point_index, wire::bits(13, 3));
   }
@@ -37,8 +36,7 @@ struct PositionRequestPoint {
   PositionEvent event;
   uint32_t time_offset_us = 0;  // after the base time, 0..2000000
   Status validate() const;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("event", s.event, wire::packed16);
     v("time_offset_us", s.time_offset_us, wire::u32);
   }
@@ -61,8 +59,7 @@ struct TargetPosition {
   float latitude_std_dev = 0;
   float height_std_dev = 0;
   Status validate() const;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("event", s.event, wire::packed16);
     v("time_offset_us", s.time_offset_us, wire::u32);
     v("solution", s.solution, wire::u8);
@@ -91,10 +88,7 @@ struct PositionList {
   DateTime base_time;
   std::array<Point, kMaxTargetPoints> points{};
 
-  Status validate() const;  // count 1..5, the base time and each point
-  void encode(ByteWriter& w) const;
-  Status decode(ByteReader& r);
-  void describe(FieldSink& sink) const;
+  K40T_PSDK_VARIABLE_LENGTH();  // validate(): count 1..5, the base time and each point
 };
 
 // 3.7.1 ACK: one position per requested point. At 56 bytes a point, DATA (256 bytes at most)

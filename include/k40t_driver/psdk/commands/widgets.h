@@ -28,21 +28,12 @@ template <size_t Max>
 struct CountUpTo {
   uint8_t count = 0;
   Status validate() const { return check_int("count", count, 0, static_cast<int64_t>(Max)); }
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("count", s.count, wire::u8);
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("count", s.count, wire::u8); }
 };
 
-// 3.2.4 ACK.
-struct WidgetListLengthAck : Reply<CommandSet::kAppFunction, 0x04, Sender::kPayload>,
-                             CountUpTo<kMaxWidgets> {
-  K40T_PSDK_NAMED("get_widget_list_length_ack", "3.2.4");
-};
-
-// 3.2.4.
-K40T_PSDK_NO_DATA(GetWidgetListLength, kAppFunction, 0x04, WidgetListLengthAck,
-                  "get_widget_list_length", "3.2.4");
+// 3.2.4: GetWidgetListLength, WidgetListLengthAck.
+K40T_PSDK_GET(WidgetListLength, widget_list_length, CountUpTo<kMaxWidgets>, kAppFunction, 0x04,
+              "3.2.4");
 
 // 3.2.5 ACK: one widget's description. Choose lists add their item names, integer input boxes
 // the text shown after the number; the other types end after the name (35 bytes in all).
@@ -58,10 +49,7 @@ struct WidgetListDataAck : Reply<CommandSet::kAppFunction, 0x05, Sender::kPayloa
   std::array<std::string, kMaxChooseItems> choose_items{};  // each at most 15 bytes + NUL
   std::string input_box_suffix;                             // integer input box: at most 31 + NUL
 
-  Status validate() const;
-  void encode(ByteWriter& w) const;
-  Status decode(ByteReader& r);
-  void describe(FieldSink& sink) const;
+  K40T_PSDK_VARIABLE_LENGTH();
 };
 
 // 3.2.5: the n-th widget of the list, from 0.
@@ -70,28 +58,18 @@ struct GetWidgetListData
   K40T_PSDK_NAMED("get_widget_list_data", "3.2.5");
   uint8_t index = 0;
   Status validate() const { return check_int("index", index, 0, kMaxWidgets - 1); }
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("index", s.index, wire::u8);
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("index", s.index, wire::u8); }
 };
 
-// 3.2.6 ACK: widget values are read in groups of at most 15.
-struct WidgetGroupCountAck : Reply<CommandSet::kAppFunction, 0x06, Sender::kPayload>,
-                             CountUpTo<kMaxWidgetGroups> {
-  K40T_PSDK_NAMED("get_widget_group_count_ack", "3.2.6");
-};
-
-// 3.2.6.
-K40T_PSDK_NO_DATA(GetWidgetGroupCount, kAppFunction, 0x06, WidgetGroupCountAck,
-                  "get_widget_group_count", "3.2.6");
+// 3.2.6: GetWidgetGroupCount, WidgetGroupCountAck: widget values are read in groups of at most 15.
+K40T_PSDK_GET(WidgetGroupCount, widget_group_count, CountUpTo<kMaxWidgetGroups>, kAppFunction, 0x06,
+              "3.2.6");
 
 struct WidgetValue {
   WidgetType type = WidgetType::kButton;
   uint8_t index = 0;
   int32_t value = 0;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_PSDK_LAYOUT(s, v) {
     v("type", s.type, wire::u8);
     v("index", s.index, wire::u8);
     v("value", s.value, wire::i32);
@@ -107,10 +85,7 @@ struct WidgetGroupDataAck : Reply<CommandSet::kAppFunction, 0x07, Sender::kPaylo
   uint8_t count = 0;
   std::array<WidgetValue, kMaxWidgetsPerGroup> widgets{};
 
-  Status validate() const;
-  void encode(ByteWriter& w) const;
-  Status decode(ByteReader& r);
-  void describe(FieldSink& sink) const;
+  K40T_PSDK_VARIABLE_LENGTH();
 };
 
 // 3.2.7: the values of group n, from 0.
@@ -119,20 +94,14 @@ struct GetWidgetGroupData
   K40T_PSDK_NAMED("get_widget_group_data", "3.2.7");
   uint8_t group = 0;
   Status validate() const { return check_int("group", group, 0, kMaxWidgetGroups - 1); }
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("group", s.group, wire::u8);
-  }
+  K40T_PSDK_LAYOUT(s, v) { v("group", s.group, wire::u8); }
 };
 
 // 3.2.8: DJI Pilot changed a widget.
 struct SetWidgetValue : Command<CommandSet::kAppFunction, 0x08, Sender::kAdapter, PlainAck> {
   K40T_PSDK_NAMED("set_widget_value", "3.2.8");
   WidgetValue widget;
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    WidgetValue::layout(s.widget, v);
-  }
+  K40T_PSDK_LAYOUT(s, v) { WidgetValue::layout(s.widget, v); }
 };
 
 }  // namespace k40t::psdk
