@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "k40t_driver/psdk/enum_names.h"
+#include "k40t_driver/codec/enum_names.h"
 
 namespace k40t::psdk {
 
@@ -11,13 +11,13 @@ const char* to_string(Sender sender) {
 }
 
 const char* to_string(AckCode code) {
-  return name_in_order(code, 0, {"ok", "error", "unsupported"});
+  return consecutive_name(code, 0, {"ok", "error", "unsupported"});
 }
 
 std::string ack_code_text(uint8_t code) {
-  const char* text =
-      name_in_order(static_cast<AckCode>(code), 0,
-                    {"executed successfully", "executed unsuccessfully", "command not supported"});
+  const char* text = consecutive_name(
+      static_cast<AckCode>(code), 0,
+      {"executed successfully", "executed unsuccessfully", "command not supported"});
   if (text != nullptr) return text;
   char buffer[48];
   std::snprintf(buffer, sizeof(buffer), "unknown return code 0x%02X", code);

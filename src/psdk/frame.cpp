@@ -3,28 +3,28 @@
 #include <cstring>
 #include <string>
 
+#include "k40t_driver/codec/enum_names.h"
 #include "k40t_driver/psdk/aes.h"
 #include "k40t_driver/psdk/crc.h"
-#include "k40t_driver/psdk/enum_names.h"
 
 namespace k40t::psdk {
 
 const char* to_string(CommandSet set) {
-  return name_in_order(set, 1,
-                       {"payload_state", "app_function", "data_push", "camera", "gimbal",
-                        "osdk_function", "positioning"});
+  return consecutive_name(set, 1,
+                          {"payload_state", "app_function", "data_push", "camera", "gimbal",
+                           "osdk_function", "positioning"});
 }
 
 const char* to_string(PacketType type) {
-  return name_in_order(type, 0, {"command", "ack"});
+  return consecutive_name(type, 0, {"command", "ack"});
 }
 
 const char* to_string(AckRequest request) {
-  return name_in_order(request, 0, {"no_ack", "ack_after_execution"});
+  return consecutive_name(request, 0, {"no_ack", "ack_after_execution"});
 }
 
 const char* to_string(Encryption encryption) {
-  return name_in_order(encryption, 0, {"none", "aes"});
+  return consecutive_name(encryption, 0, {"none", "aes"});
 }
 
 size_t frame_length_field(const uint8_t* f) {

@@ -1,4 +1,4 @@
-// The PSDK enums' names come from tables (psdk/enum_names.h): each code the document defines has
+// The PSDK enums' names come from tables (codec/enum_names.h): each code the document defines has
 // its name, and a code next to the listed ones (below the first, past the last, in a gap) has
 // none, which is what check_enum() reports as out of range.
 #include <gtest/gtest.h>

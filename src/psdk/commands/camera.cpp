@@ -1,44 +1,45 @@
 #include "k40t_driver/psdk/commands/camera_capture.h"
 #include "k40t_driver/psdk/commands/camera_lens.h"
 
-#include "k40t_driver/psdk/enum_names.h"
+#include "k40t_driver/codec/enum_names.h"
 
 namespace k40t::psdk {
 
 const char* to_string(CameraWorkMode mode) {
-  return name_in_order(mode, 0, {"shoot_photo", "record_video"});
+  return consecutive_name(mode, 0, {"shoot_photo", "record_video"});
 }
 
 const char* to_string(ShootPhotoAction action) {
-  return name_in_order(action, 0, {"stop", "start"});
+  return consecutive_name(action, 0, {"stop", "start"});
 }
 
 const char* to_string(ShootPhotoType type) {
-  return name_in(type, {{ShootPhotoType::kSingle, "single"},
-                        {ShootPhotoType::kBurst, "burst"},
-                        {ShootPhotoType::kInterval, "interval"}});
+  return name_in({{ShootPhotoType::kSingle, "single"},
+                  {ShootPhotoType::kBurst, "burst"},
+                  {ShootPhotoType::kInterval, "interval"}},
+                 type, nullptr);
 }
 
 const char* to_string(RecordAction action) {
-  return name_in_order(action, 0, {"stop", "start"});
+  return consecutive_name(action, 0, {"stop", "start"});
 }
 
 const char* to_string(MeteringMode mode) {
-  return name_in_order(mode, 0, {"center", "average", "spot"});
+  return consecutive_name(mode, 0, {"center", "average", "spot"});
 }
 
 const char* to_string(FocusMode mode) {
-  return name_in_order(mode, 0, {"manual", "auto"});
+  return consecutive_name(mode, 0, {"manual", "auto"});
 }
 
 const char* to_string(ZoomSpeed speed) {
-  return name_in_order(
+  return consecutive_name(
       speed, 72,
       {"slowest", "slow", "moderately_slow", "normal", "moderately_fast", "fast", "fastest"});
 }
 
 const char* to_string(ZoomDirection direction) {
-  return name_in_order(direction, 0, {"out", "in"});
+  return consecutive_name(direction, 0, {"out", "in"});
 }
 
 Status OpticalZoomSpecValue::validate() const {

@@ -2,26 +2,26 @@
 
 #include <cmath>
 
-#include "k40t_driver/psdk/enum_names.h"
+#include "k40t_driver/codec/enum_names.h"
 
 namespace k40t::psdk {
 
 const char* to_string(GpsSignal signal) {
-  return name_in_order(signal, 0, {"none", "very_weak", "medium", "very_strong"});
+  return consecutive_name(signal, 0, {"none", "very_weak", "medium", "very_strong"});
 }
 
 const char* to_string(LandingState state) {
-  return name_in_order(state, 0, {"unknown", "landed", "in_the_sky"});
+  return consecutive_name(state, 0, {"unknown", "landed", "in_the_sky"});
 }
 
 const char* to_string(DroneType type) {
-  return name_in_order(type, 0,
-                       {"unknown", "M200", "M210", "M210 RTK", "M600", "M600 PRO", "M200 V2",
-                        "M210 V2", "M210 RTK V2"});
+  return consecutive_name(type, 0,
+                          {"unknown", "M200", "M210", "M210 RTK", "M600", "M600 PRO", "M200 V2",
+                           "M210 V2", "M210 RTK V2"});
 }
 
 const char* to_string(OtherPayloadType type) {
-  return name_in_order(type, 0, {"unknown", "ZENMUSE X5S", "ZENMUSE Z30"});
+  return consecutive_name(type, 0, {"unknown", "ZENMUSE X5S", "ZENMUSE Z30"});
 }
 
 Status DateTime::validate() const {

@@ -1,15 +1,15 @@
 #include "k40t_driver/psdk/commands/gimbal.h"
 
-#include "k40t_driver/psdk/enum_names.h"
+#include "k40t_driver/codec/enum_names.h"
 
 namespace k40t::psdk {
 
 const char* to_string(GimbalStateMode mode) {
-  return name_in_order(mode, 0, {"free", "following", "fpv"});
+  return consecutive_name(mode, 0, {"free", "following", "fpv"});
 }
 
 const char* to_string(GimbalMode mode) {
-  return name_in_order(mode, 0, {"free", "fpv", "following"});
+  return consecutive_name(mode, 0, {"free", "fpv", "following"});
 }
 
 GimbalStateMode to_state_mode(GimbalMode mode) {
@@ -19,11 +19,11 @@ GimbalStateMode to_state_mode(GimbalMode mode) {
 }
 
 const char* to_string(GimbalControlAction action) {
-  return name_in_order(action, 0, {"stop", "control"});
+  return consecutive_name(action, 0, {"stop", "control"});
 }
 
 const char* to_string(CalibrationStatus status) {
-  return name_in_order(status, 0, {"complete", "in_progress", "failed"});
+  return consecutive_name(status, 0, {"complete", "in_progress", "failed"});
 }
 
 Status ControlGimbalSpeed::validate() const {

@@ -1,15 +1,16 @@
 #include "k40t_driver/psdk/commands/positioning.h"
 
-#include "k40t_driver/psdk/enum_names.h"
+#include "k40t_driver/codec/enum_names.h"
 #include "k40t_driver/psdk/indexed_sink.h"
 
 namespace k40t::psdk {
 
 const char* to_string(PositionSolution solution) {
-  return name_in(solution, {{PositionSolution::kNotAvailable, "not_available"},
-                            {PositionSolution::kSinglePoint, "single_point"},
-                            {PositionSolution::kFloat, "float"},
-                            {PositionSolution::kFixed, "fixed"}});
+  return name_in({{PositionSolution::kNotAvailable, "not_available"},
+                  {PositionSolution::kSinglePoint, "single_point"},
+                  {PositionSolution::kFloat, "float"},
+                  {PositionSolution::kFixed, "fixed"}},
+                 solution, nullptr);
 }
 
 namespace {

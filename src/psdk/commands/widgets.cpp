@@ -1,13 +1,13 @@
 #include "k40t_driver/psdk/commands/widgets.h"
 
-#include "k40t_driver/psdk/enum_names.h"
+#include "k40t_driver/codec/enum_names.h"
 #include "k40t_driver/psdk/indexed_sink.h"
 
 namespace k40t::psdk {
 
 const char* to_string(WidgetType type) {
-  return name_in_order(type, 1,
-                       {"button", "switch", "range_bar", "choose_list", "integer_input_box"});
+  return consecutive_name(type, 1,
+                          {"button", "switch", "range_bar", "choose_list", "integer_input_box"});
 }
 
 // --- 3.2.5 ACK ----------------------------------------------------------------------------------
