@@ -35,7 +35,7 @@ inline CameraUpgradeStatus sample() {
 }
 template <>
 inline CaptureModeRequest sample() {
-  return {CaptureMode::kVideo};
+  return {{}, CaptureMode::kVideo};
 }
 template <>
 inline PhotoSettingsRequest sample() {
@@ -65,7 +65,7 @@ inline ZoomRatioRequest sample() {
 }
 template <>
 inline ContinuousZoomRequest sample() {
-  return {ZoomCommand::kStepOut};
+  return {{}, ZoomCommand::kStepOut};
 }
 template <>
 inline PreciseReshootRequest sample() {
@@ -73,15 +73,15 @@ inline PreciseReshootRequest sample() {
 }
 template <>
 inline StreamBitrateRequest sample() {
-  return {StreamBitrate::k1_5Mbps};
+  return {{}, StreamBitrate::k1_5Mbps};
 }
 template <>
 inline StreamResolutionRequest sample() {
-  return {StreamResolution::k1080p30};
+  return {{}, StreamResolution::k1080p30};
 }
 template <>
 inline StreamEncodingRequest sample() {
-  return {VideoEncoding::kH265};
+  return {{}, VideoEncoding::kH265};
 }
 template <>
 inline TfCardUpgradeRequest sample() {
@@ -117,7 +117,7 @@ inline FocusRequest sample() {
 }
 template <>
 inline OsdWatermarkRequest sample() {
-  return {true};
+  return {{}, true};
 }
 template <>
 inline ShutdownRequest sample() {
@@ -133,7 +133,7 @@ inline CameraVersionAck sample() {
 }
 template <>
 inline ImageModeRequest sample() {
-  return {ImageMode::kSplit};
+  return {{}, ImageMode::kSplit};
 }
 template <>
 inline AiRecognitionRequest sample() {
@@ -145,15 +145,15 @@ inline BoxTrackingRequest sample() {
 }
 template <>
 inline PhotoStatus sample() {
-  return {PhotoLensMode::kInfrared, PhotoState::kSdFormatError, 65535};
+  return {{PhotoLensMode::kInfrared, PhotoState::kSdFormatError}, 65535};
 }
 template <>
 inline RecordStatus sample() {
-  return {RecordLensMode::kVisible, RecordState::kSdFormatError, 3600};
+  return {{RecordLensMode::kVisible, RecordState::kSdFormatError}, 3600};
 }
 template <>
 inline ZoomStatus sample() {
-  return {ZoomProgress::kZooming};
+  return {{}, ZoomProgress::kZooming};
 }
 template <>
 inline PreciseReshootStatus sample() {
@@ -161,11 +161,11 @@ inline PreciseReshootStatus sample() {
 }
 template <>
 inline TfCardUpgradeStatus sample() {
-  return {TfUpgradeState::kFailed};
+  return {{}, TfUpgradeState::kFailed};
 }
 template <>
 inline SdFormatStatus sample() {
-  return {SdFormatState::kUnavailable};
+  return {{}, SdFormatState::kUnavailable};
 }
 template <>
 inline CameraGpsRequest sample() {

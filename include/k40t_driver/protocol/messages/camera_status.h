@@ -8,132 +8,105 @@
 // receive.
 #pragma once
 
+#include <type_traits>
+
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_layout.h"
 #include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/camera_enums.h"
 
 namespace k40t::protocol {
 
-// 0x020302, section 3.2.4.3, after 0x000302 (not for single shots): lens mode, photo state 0..11,
-// uint16 number of burst photos, 3 reserved.
-struct PhotoStatus {
-  K40T_POD_MESSAGE(0x020302, "photo_status", "3.2.4.3");
+// 0x020302 and 0x020303: lens mode, state, a uint16 count, 3 reserved. The frame declares its
+// count and names it: kCount = &Frame::count, kCountName.
+template <class Derived, class Lens, class State>
+struct CountedStatus {
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 7;
   static constexpr size_t kMinSize = 4;
 
-  PhotoLensMode lens = PhotoLensMode::kDefault;
-  PhotoState state = PhotoState::kDone;
-  uint16_t burst_count = 0;
+  Lens lens = Lens::kDefault;
+  State state{};  // code 0: done (photo), stopped (record)
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("lens", self.lens);
-    v("state", self.state);
-    v("burst_count", self.burst_count);
+  K40T_LAYOUT(s, v) {
+    using Self = std::conditional_t<std::is_const_v<S_>, const Derived, Derived>;
+    v("lens", s.lens, wire::u8);
+    v("state", s.state, wire::u8);
+    v(Derived::kCountName, static_cast<Self&>(s).*Derived::kCount, wire::u16);
+    v("reserved", wire::gap, wire::reserved(3));
   }
+};
+
+// 0x020302, section 3.2.4.3, after 0x000302 (not for single shots): lens mode, photo state 0..11,
+// uint16 number of burst photos, 3 reserved.
+struct PhotoStatus : CountedStatus<PhotoStatus, PhotoLensMode, PhotoState> {
+  K40T_POD_MESSAGE(0x020302, "photo_status", "3.2.4.3");
+  uint16_t burst_count = 0;
+  static constexpr auto kCount = &PhotoStatus::burst_count;
+  static constexpr const char* kCountName = "burst_count";
 };
 
 // 0x020303, section 3.2.4.4, 1 Hz while recording: lens mode, record state 0..8, uint16
 // recording time, 3 reserved. The document gives the time no unit; at a 1 Hz rate it is read as
 // seconds.
-struct RecordStatus {
+struct RecordStatus : CountedStatus<RecordStatus, RecordLensMode, RecordState> {
   K40T_POD_MESSAGE(0x020303, "record_status", "3.2.4.4");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 7;
-  static constexpr size_t kMinSize = 4;
-
-  RecordLensMode lens = RecordLensMode::kDefault;
-  RecordState state = RecordState::kStopped;
   uint16_t recording_time_s = 0;
+  static constexpr auto kCount = &RecordStatus::recording_time_s;
+  static constexpr const char* kCountName = "recording_time_s";
+};
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("lens", self.lens);
-    v("state", self.state);
-    v("recording_time_s", self.recording_time_s);
+// A frame that is one code and `Reserved` reserved bytes: 0x020304, 0x02030C, 0x02030D. The frame
+// declares its code and names it: kCode = &Frame::code, kCodeName.
+template <class Derived, size_t Reserved>
+struct CodeStatus {
+  static constexpr Direction kDirection = Direction::kPodToHost;
+  static constexpr size_t kSize = 1 + Reserved;
+  static constexpr size_t kMinSize = 1;
+
+  K40T_LAYOUT(s, v) {
+    using Self = std::conditional_t<std::is_const_v<S_>, const Derived, Derived>;
+    v(Derived::kCodeName, static_cast<Self&>(s).*Derived::kCode, wire::u8);
+    v("reserved", wire::gap, wire::reserved(Reserved));
   }
 };
 
 // 0x020304, section 3.2.4.5, after 0x000304: zooming (1) or done (0), 1 reserved.
-struct ZoomStatus {
+struct ZoomStatus : CodeStatus<ZoomStatus, 1> {
   K40T_POD_MESSAGE(0x020304, "zoom_status", "3.2.4.5");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 2;
-  static constexpr size_t kMinSize = 1;
-
   ZoomProgress progress = ZoomProgress::kDone;
-
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("progress", self.progress);
-  }
+  static constexpr auto kCode = &ZoomStatus::progress;
+  static constexpr const char* kCodeName = "progress";
 };
 
 // 0x020307, section 3.2.4.7, after 0x000307: lens mode, state 0..12, 5 reserved.
 struct PreciseReshootStatus {
-  K40T_POD_MESSAGE(0x020307, "precise_reshoot_status", "3.2.4.7");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 7;
-  static constexpr size_t kMinSize = 2;
-
+  K40T_POD_REPORT(0x020307, "precise_reshoot_status", "3.2.4.7", 7, 2);
   PhotoLensMode lens = PhotoLensMode::kDefault;
   ReshootState state = ReshootState::kDone;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("lens", self.lens);
-    v("state", self.state);
+  K40T_LAYOUT(s, v) {
+    v("lens", s.lens, wire::u8);
+    v("state", s.state, wire::u8);
+    v("reserved", wire::gap, wire::reserved(5));
   }
 };
 
 // 0x02030C, section 3.2.4.11, after 0x00030C: TF-card upgrade state, 1 reserved.
-struct TfCardUpgradeStatus {
+struct TfCardUpgradeStatus : CodeStatus<TfCardUpgradeStatus, 1> {
   K40T_POD_MESSAGE(0x02030C, "tf_card_upgrade_status", "3.2.4.11");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 2;
-  static constexpr size_t kMinSize = 1;
-
   TfUpgradeState state = TfUpgradeState::kUpgrading;
-
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("state", self.state);
-  }
+  static constexpr auto kCode = &TfCardUpgradeStatus::state;
+  static constexpr const char* kCodeName = "state";
 };
 
 // 0x02030D, section 3.2.4.12, 5 Hz after 0x00030D: SD format state 0..3, 2 reserved. The pod
 // also reports "failed" when a format is asked for during recording or shooting.
-struct SdFormatStatus {
+struct SdFormatStatus : CodeStatus<SdFormatStatus, 2> {
   K40T_POD_MESSAGE(0x02030D, "sd_format_status", "3.2.4.12");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 3;
-  static constexpr size_t kMinSize = 1;
-
   SdFormatState state = SdFormatState::kFormatting;
-
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("state", self.state);
-  }
+  static constexpr auto kCode = &SdFormatStatus::state;
+  static constexpr const char* kCodeName = "state";
 };
 
 // Every message struct of this part of the camera family: the catalogue, the catalogue tests and
