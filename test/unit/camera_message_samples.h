@@ -39,7 +39,7 @@ inline CaptureModeRequest sample() {
 }
 template <>
 inline PhotoSettingsRequest sample() {
-  return {PhotoMode::kTimeLapse, 60, 5};
+  return {{PhotoMode::kTimeLapse, 60, 5}};
 }
 template <>
 inline TakePhotoRequest sample() {
@@ -69,7 +69,7 @@ inline ContinuousZoomRequest sample() {
 }
 template <>
 inline PreciseReshootRequest sample() {
-  return {PhotoLensMode::kInfrared, ReshootResolution::k5664x4248, 1.1, 65535, "f", "n"};
+  return {{"f", "n"}, PhotoLensMode::kInfrared, ReshootResolution::k5664x4248, 1.1, 65535};
 }
 template <>
 inline StreamBitrateRequest sample() {
@@ -145,11 +145,19 @@ inline BoxTrackingRequest sample() {
 }
 template <>
 inline PhotoStatus sample() {
-  return {{PhotoLensMode::kInfrared, PhotoState::kSdFormatError}, 65535};
+  PhotoStatus m;
+  m.lens = PhotoLensMode::kInfrared;
+  m.state = PhotoState::kSdFormatError;
+  m.burst_count = 65535;
+  return m;
 }
 template <>
 inline RecordStatus sample() {
-  return {{RecordLensMode::kVisible, RecordState::kSdFormatError}, 3600};
+  RecordStatus m;
+  m.lens = RecordLensMode::kVisible;
+  m.state = RecordState::kSdFormatError;
+  m.recording_time_s = 3600;
+  return m;
 }
 template <>
 inline ZoomStatus sample() {
@@ -157,7 +165,7 @@ inline ZoomStatus sample() {
 }
 template <>
 inline PreciseReshootStatus sample() {
-  return {PhotoLensMode::kInfraredAndVisible, ReshootState::kReshooting};
+  return {{PhotoLensMode::kInfraredAndVisible, ReshootState::kReshooting}};
 }
 template <>
 inline TfCardUpgradeStatus sample() {

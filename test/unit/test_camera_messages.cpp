@@ -207,7 +207,9 @@ TEST(CameraMessages, TargetGpsAckDataIsLowByteFirstWhateverTheAckByteOrder) {
 }
 
 TEST(CameraMessages, StatusFramesAreLowByteFirstWhateverTheAckByteOrder) {
-  const RecordStatus status{{RecordLensMode::kDefault, RecordState::kRecording}, 0x0102};
+  RecordStatus status;
+  status.state = RecordState::kRecording;
+  status.recording_time_s = 0x0102;
   for (const CodecOptions& o : {CodecOptions{}, little_acks()}) {
     Result<Payload> p = encode_payload(status, o);
     ASSERT_TRUE(p);

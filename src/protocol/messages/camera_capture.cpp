@@ -4,8 +4,8 @@
 
 namespace k40t::protocol {
 
-// ---- 0x000301 ------------------------------------------------------------------------------
-Status PhotoSettingsRequest::extra_checks() const {
+// ---- 0x000301 and 0x000003 -----------------------------------------------------------------
+Status PhotoSettings::extra_checks() const {
   return camera_codec::check_photo_settings(time_lapse_interval_s, burst_count);
 }
 

@@ -28,11 +28,35 @@ constexpr double kMaxZoomRatio = 160.0;
 // The zoom ratio of 0x000304 and 0x000307: uint16 x10 on the wire.
 constexpr auto kZoomRatioWire = wire::scaled<uint16_t>(10).range(kMinZoomRatio, kMaxZoomRatio, "x");
 
-// The folder and file name that 0x000302, 0x000303 and 0x000307 end with.
+// The folder (20 bytes) and file name (32 bytes) that 0x000302, 0x000303 and 0x000307 end with;
+// empty texts mean the root folder and the pod's default naming.
+struct SaveAs {
+  std::string folder;
+  std::string name;
+
+  template <class S, class V>
+  static void body(S& s, V&& v) {
+    v("folder", s.folder, wire::Text{kCameraFolderBytes, false});
+    v("name", s.name, wire::Text{kCameraFileNameBytes, false});
+  }
+};
+
+// The photo settings 0x000301 sets and 0x000003 reports: photo mode, time-lapse interval
+// (5/7/30/60 s) and burst count (3/5). The pod reports all three whatever the mode, so all three
+// are always validated.
+struct PhotoSettings {
+  PhotoMode photo_mode = PhotoMode::kSingle;
+  uint8_t time_lapse_interval_s = 5;
+  uint8_t burst_count = 3;
+
+  Status extra_checks() const;  // interval and burst count: the document's few values
+};
+// Their lines in a layout.
 template <class S, class V>
-void folder_and_name(S& s, V&& v) {
-  v("folder", s.folder, wire::Text{kCameraFolderBytes, false});
-  v("name", s.name, wire::Text{kCameraFileNameBytes, false});
+void photo_settings(S& s, V&& v) {
+  v("photo_mode", s.photo_mode, wire::u8);
+  v("time_lapse_interval_s", s.time_lapse_interval_s, wire::u8);
+  v("burst_count", s.burst_count, wire::u8);
 }
 
 // 0x000300, section 3.2.4.1: photo or video mode. In photo mode the pod ignores record requests
@@ -45,28 +69,18 @@ struct CaptureModeRequest : ByteSettingRequest<CaptureModeRequest, SettingPrefix
   static constexpr const char* kValueName = "mode";
 };
 
-// 0x000301, section 3.2.4.2: photo mode, time-lapse interval (5/7/30/60 s) and burst count (3/5).
-// The pod reports all three in 0x000003 whatever the mode, so all three are always validated.
-struct PhotoSettingsRequest {
+// 0x000301, section 3.2.4.2: the photo settings, 1 reserved.
+struct PhotoSettingsRequest : PhotoSettings {
   K40T_POD_REQUEST(0x000301, "photo_settings", "3.2.4.2", 4, 3);
-  PhotoMode photo_mode = PhotoMode::kSingle;
-  uint8_t time_lapse_interval_s = 5;
-  uint8_t burst_count = 3;
-
   K40T_LAYOUT(s, v) {
-    v("photo_mode", s.photo_mode, wire::u8);
-    v("time_lapse_interval_s", s.time_lapse_interval_s, wire::u8);
-    v("burst_count", s.burst_count, wire::u8);
+    photo_settings(s, v);
     v("reserved", wire::gap, wire::reserved(1));
   }
-  Status extra_checks() const;  // interval and burst count: the document's few values
 };
 
-// What 0x000302 and 0x000303 share (54 bytes): which cameras, start/stop, then the folder (20
-// bytes) and file name (32 bytes) to save into; empty texts mean the root folder and the pod's
-// default naming.
+// What 0x000302 and 0x000303 share (54 bytes): which cameras, start/stop, then where to save.
 template <class Lens, class Action>
-struct FileCaptureRequest {
+struct FileCaptureRequest : SaveAs {
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 2 + kCameraFolderBytes + kCameraFileNameBytes;  // 54
   static constexpr size_t kMinSize = kSize;
@@ -74,13 +88,11 @@ struct FileCaptureRequest {
 
   Lens lens = Lens::kDefault;
   Action action = Action::kStart;
-  std::string folder;
-  std::string name;
 
   K40T_LAYOUT(s, v) {
     v("lens", s.lens, wire::u8);
     v("action", s.action, wire::u8);
-    folder_and_name(s, v);
+    body(s, v);
   }
 };
 
@@ -120,21 +132,19 @@ struct ContinuousZoomRequest : ByteSettingRequest<ContinuousZoomRequest, Setting
 // 0x000307, section 3.2.4.7: take a photo at a given visible resolution, zoom and focus position
 // (the values a previous shot reported in 0x000005), into folder/name. Status frame 0x020307.
 // The focus position has no unit in the document: it is passed through as the raw uint16.
-struct PreciseReshootRequest {
+struct PreciseReshootRequest : SaveAs {
   K40T_POD_REQUEST(0x000307, "precise_reshoot", "3.2.4.7", 58, 58);
   PhotoLensMode lens = PhotoLensMode::kDefault;
   ReshootResolution resolution = ReshootResolution::k4000x3000;
   double zoom_x = 1.0;  // uint16 x10 on the wire
   uint16_t focal_length_raw = 0;
-  std::string folder;
-  std::string name;
 
   K40T_LAYOUT(s, v) {
     v("lens", s.lens, wire::u8);
     v("resolution", s.resolution, wire::u8);
     v("zoom_x", s.zoom_x, kZoomRatioWire);
     v("focal_length_raw", s.focal_length_raw, wire::u16);
-    folder_and_name(s, v);
+    body(s, v);
   }
 };
 

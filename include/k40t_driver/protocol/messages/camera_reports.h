@@ -6,6 +6,7 @@
 #include "k40t_driver/protocol/message.h"
 #include "k40t_driver/protocol/message_layout.h"
 #include "k40t_driver/protocol/message_list.h"
+#include "k40t_driver/protocol/messages/camera_capture.h"
 #include "k40t_driver/protocol/messages/camera_enums.h"
 
 namespace k40t::protocol {
@@ -17,7 +18,8 @@ constexpr double kSdCapacityUnitMb = 10.0;
 constexpr double kSdCapacityMaxMb = 65535 * kSdCapacityUnitMb;
 
 // 0x000003, section 3.2.1.1, 1 Hz: the camera's modes, stream settings and SD card.
-struct CameraSystemStatus {
+// The photo settings (photo_mode, time_lapse_interval_s, burst_count) are PhotoSettings'.
+struct CameraSystemStatus : PhotoSettings {
   K40T_POD_REPORT(0x000003, "camera_system_status", "3.2.1.1", 16, 15);
   CaptureMode capture_mode = CaptureMode::kPhoto;
   // docs/protocol/decisions.md#a6: the "encoding format" byte is the resolution.
@@ -25,9 +27,6 @@ struct CameraSystemStatus {
   VideoEncoding encoding = VideoEncoding::kH264;
   ImageMode image_mode = ImageMode::kVisible;  // "stream mode": what the stream shows
   StreamBitrate bitrate = StreamBitrate::k4Mbps;
-  PhotoMode photo_mode = PhotoMode::kSingle;
-  uint8_t time_lapse_interval_s = 5;  // 5/7/30/60
-  uint8_t burst_count = 3;            // 3/5
   SdCardState sd_state = SdCardState::kNormal;
   double sd_total_mb = 0;  // uint16 counts of kSdCapacityUnitMb on the wire
   double sd_free_mb = 0;
@@ -41,16 +40,13 @@ struct CameraSystemStatus {
     v("encoding", s.encoding, wire::u8);
     v("image_mode", s.image_mode, wire::u8);
     v("bitrate", s.bitrate, wire::u8);
-    v("photo_mode", s.photo_mode, wire::u8);
-    v("time_lapse_interval_s", s.time_lapse_interval_s, wire::u8);
-    v("burst_count", s.burst_count, wire::u8);
+    photo_settings(s, v);
     v("sd_state", s.sd_state, wire::u8);
     v("sd_total_mb", s.sd_total_mb, capacity);
     v("sd_free_mb", s.sd_free_mb, capacity);
     v("sd_used_mb", s.sd_used_mb, capacity);
     v("reserved", wire::gap, wire::reserved(1));
   }
-  Status extra_checks() const;  // interval and burst count: the document's few values
 };
 
 // 0x000008, section 3.2.1.4, 1 Hz: camera upgrade or repair state and progress 0..100 %.

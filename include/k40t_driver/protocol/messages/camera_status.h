@@ -17,21 +17,31 @@
 
 namespace k40t::protocol {
 
+// What the photo, record and re-shoot frames (0x020302, 0x020303, 0x020307) start with: the lens
+// mode and the state of the operation.
+template <class Lens, class State>
+struct LensAndState {
+  Lens lens = Lens::kDefault;
+  State state{};  // code 0: done (photo, re-shoot), stopped (record)
+
+  template <class S, class V>
+  static void body(S& s, V&& v) {
+    v("lens", s.lens, wire::u8);
+    v("state", s.state, wire::u8);
+  }
+};
+
 // 0x020302 and 0x020303: lens mode, state, a uint16 count, 3 reserved. The frame declares its
 // count and names it: kCount = &Frame::count, kCountName.
 template <class Derived, class Lens, class State>
-struct CountedStatus {
+struct CountedStatus : LensAndState<Lens, State> {
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 7;
   static constexpr size_t kMinSize = 4;
 
-  Lens lens = Lens::kDefault;
-  State state{};  // code 0: done (photo), stopped (record)
-
   K40T_LAYOUT(s, v) {
     using Self = std::conditional_t<std::is_const_v<S_>, const Derived, Derived>;
-    v("lens", s.lens, wire::u8);
-    v("state", s.state, wire::u8);
+    LensAndState<Lens, State>::body(s, v);
     v(Derived::kCountName, static_cast<Self&>(s).*Derived::kCount, wire::u16);
     v("reserved", wire::gap, wire::reserved(3));
   }
@@ -80,14 +90,10 @@ struct ZoomStatus : CodeStatus<ZoomStatus, 1> {
 };
 
 // 0x020307, section 3.2.4.7, after 0x000307: lens mode, state 0..12, 5 reserved.
-struct PreciseReshootStatus {
+struct PreciseReshootStatus : LensAndState<PhotoLensMode, ReshootState> {
   K40T_POD_REPORT(0x020307, "precise_reshoot_status", "3.2.4.7", 7, 2);
-  PhotoLensMode lens = PhotoLensMode::kDefault;
-  ReshootState state = ReshootState::kDone;
-
   K40T_LAYOUT(s, v) {
-    v("lens", s.lens, wire::u8);
-    v("state", s.state, wire::u8);
+    body(s, v);
     v("reserved", wire::gap, wire::reserved(5));
   }
 };
