@@ -14,6 +14,7 @@
 #include "k40t_driver/protocol/message_layout.h"
 #include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/camera_enums.h"
+#include "k40t_driver/protocol/messages/setting_request.h"
 
 namespace k40t::protocol {
 
@@ -67,7 +68,7 @@ struct RecordStatus : CountedStatus<RecordStatus, RecordLensMode, RecordState> {
 };
 
 // A frame that is one code and `Reserved` reserved bytes: 0x020304, 0x02030C, 0x02030D. The frame
-// declares its code and names it: kCode = &Frame::code, kCodeName.
+// declares its code with K40T_VALUE_FIELD (setting_request.h).
 template <class Derived, size_t Reserved>
 struct CodeStatus {
   static constexpr Direction kDirection = Direction::kPodToHost;
@@ -76,7 +77,7 @@ struct CodeStatus {
 
   K40T_LAYOUT(s, v) {
     using Self = std::conditional_t<std::is_const_v<S_>, const Derived, Derived>;
-    v(Derived::kCodeName, static_cast<Self&>(s).*Derived::kCode, wire::u8);
+    v(Derived::kValueName, static_cast<Self&>(s).*Derived::kValue, wire::u8);
     v("reserved", wire::gap, wire::reserved(Reserved));
   }
 };
@@ -84,9 +85,7 @@ struct CodeStatus {
 // 0x020304, section 3.2.4.5, after 0x000304: zooming (1) or done (0), 1 reserved.
 struct ZoomStatus : CodeStatus<ZoomStatus, 1> {
   K40T_POD_MESSAGE(0x020304, "zoom_status", "3.2.4.5");
-  ZoomProgress progress = ZoomProgress::kDone;
-  static constexpr auto kCode = &ZoomStatus::progress;
-  static constexpr const char* kCodeName = "progress";
+  K40T_VALUE_FIELD(ZoomStatus, ZoomProgress, progress, ZoomProgress::kDone);
 };
 
 // 0x020307, section 3.2.4.7, after 0x000307: lens mode, state 0..12, 5 reserved.
@@ -101,18 +100,14 @@ struct PreciseReshootStatus : LensAndState<PhotoLensMode, ReshootState> {
 // 0x02030C, section 3.2.4.11, after 0x00030C: TF-card upgrade state, 1 reserved.
 struct TfCardUpgradeStatus : CodeStatus<TfCardUpgradeStatus, 1> {
   K40T_POD_MESSAGE(0x02030C, "tf_card_upgrade_status", "3.2.4.11");
-  TfUpgradeState state = TfUpgradeState::kUpgrading;
-  static constexpr auto kCode = &TfCardUpgradeStatus::state;
-  static constexpr const char* kCodeName = "state";
+  K40T_VALUE_FIELD(TfCardUpgradeStatus, TfUpgradeState, state, TfUpgradeState::kUpgrading);
 };
 
 // 0x02030D, section 3.2.4.12, 5 Hz after 0x00030D: SD format state 0..3, 2 reserved. The pod
 // also reports "failed" when a format is asked for during recording or shooting.
 struct SdFormatStatus : CodeStatus<SdFormatStatus, 2> {
   K40T_POD_MESSAGE(0x02030D, "sd_format_status", "3.2.4.12");
-  SdFormatState state = SdFormatState::kFormatting;
-  static constexpr auto kCode = &SdFormatStatus::state;
-  static constexpr const char* kCodeName = "state";
+  K40T_VALUE_FIELD(SdFormatStatus, SdFormatState, state, SdFormatState::kFormatting);
 };
 
 // Every message struct of this part of the camera family: the catalogue, the catalogue tests and
