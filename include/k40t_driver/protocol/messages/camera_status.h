@@ -33,7 +33,7 @@ struct LensAndState {
 };
 
 // 0x020302 and 0x020303: lens mode, state, a uint16 count, 3 reserved. The frame declares its
-// count and names it: kCount = &Frame::count, kCountName.
+// count with K40T_VALUE_FIELD (setting_request.h).
 template <class Derived, class Lens, class State>
 struct CountedStatus : LensAndState<Lens, State> {
   static constexpr Direction kDirection = Direction::kPodToHost;
@@ -43,7 +43,7 @@ struct CountedStatus : LensAndState<Lens, State> {
   K40T_LAYOUT(s, v) {
     using Self = std::conditional_t<std::is_const_v<S_>, const Derived, Derived>;
     LensAndState<Lens, State>::body(s, v);
-    v(Derived::kCountName, static_cast<Self&>(s).*Derived::kCount, wire::u16);
+    v(Derived::kValueName, static_cast<Self&>(s).*Derived::kValue, wire::u16);
     v("reserved", wire::gap, wire::reserved(3));
   }
 };
@@ -52,9 +52,7 @@ struct CountedStatus : LensAndState<Lens, State> {
 // uint16 number of burst photos, 3 reserved.
 struct PhotoStatus : CountedStatus<PhotoStatus, PhotoLensMode, PhotoState> {
   K40T_POD_MESSAGE(0x020302, "photo_status", "3.2.4.3");
-  uint16_t burst_count = 0;
-  static constexpr auto kCount = &PhotoStatus::burst_count;
-  static constexpr const char* kCountName = "burst_count";
+  K40T_VALUE_FIELD(PhotoStatus, uint16_t, burst_count, 0);
 };
 
 // 0x020303, section 3.2.4.4, 1 Hz while recording: lens mode, record state 0..8, uint16
@@ -62,9 +60,7 @@ struct PhotoStatus : CountedStatus<PhotoStatus, PhotoLensMode, PhotoState> {
 // seconds.
 struct RecordStatus : CountedStatus<RecordStatus, RecordLensMode, RecordState> {
   K40T_POD_MESSAGE(0x020303, "record_status", "3.2.4.4");
-  uint16_t recording_time_s = 0;
-  static constexpr auto kCount = &RecordStatus::recording_time_s;
-  static constexpr const char* kCountName = "recording_time_s";
+  K40T_VALUE_FIELD(RecordStatus, uint16_t, recording_time_s, 0);
 };
 
 // A frame that is one code and `Reserved` reserved bytes: 0x020304, 0x02030C, 0x02030D. The frame
