@@ -5,6 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/messages/camera.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/protocol/messages/laser.h"
 #include "k40t_driver/protocol/messages/sbus.h"
@@ -78,6 +79,22 @@ p::GimbalAttitude gimbal_attitude() {
   return m;
 }
 
+p::CameraSystemStatus camera_system_status() {
+  p::CameraSystemStatus m;
+  m.capture_mode = p::CaptureMode::kVideo;
+  m.time_lapse_interval_s = 30;
+  m.sd_total_mb = 64000;
+  m.sd_free_mb = 12340;
+  m.sd_used_mb = 51660;
+  return m;
+}
+p::TakePhotoRequest take_photo() {
+  p::TakePhotoRequest m;
+  m.folder = "survey_0412";
+  m.name = "ridge_north";
+  return m;
+}
+
 #define K40T_CODEC_BENCH(Name, make)              \
   void BM_Encode##Name(benchmark::State& state) { \
     encode_loop(state, make());                   \
@@ -94,6 +111,8 @@ K40T_CODEC_BENCH(ThermalStatus, thermal_status);
 K40T_CODEC_BENCH(ThermalSettingsAck, thermal_settings);
 K40T_CODEC_BENCH(VisibleSettingsAck, visible_settings);
 K40T_CODEC_BENCH(GimbalAttitude, gimbal_attitude);
+K40T_CODEC_BENCH(CameraSystemStatus, camera_system_status);
+K40T_CODEC_BENCH(TakePhotoRequest, take_photo);
 
 }  // namespace
 

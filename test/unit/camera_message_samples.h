@@ -35,11 +35,11 @@ inline CameraUpgradeStatus sample() {
 }
 template <>
 inline CaptureModeRequest sample() {
-  return {CaptureMode::kVideo};
+  return {{}, CaptureMode::kVideo};
 }
 template <>
 inline PhotoSettingsRequest sample() {
-  return {PhotoMode::kTimeLapse, 60, 5};
+  return {{PhotoMode::kTimeLapse, 60, 5}};
 }
 template <>
 inline TakePhotoRequest sample() {
@@ -65,23 +65,23 @@ inline ZoomRatioRequest sample() {
 }
 template <>
 inline ContinuousZoomRequest sample() {
-  return {ZoomCommand::kStepOut};
+  return {{}, ZoomCommand::kStepOut};
 }
 template <>
 inline PreciseReshootRequest sample() {
-  return {PhotoLensMode::kInfrared, ReshootResolution::k5664x4248, 1.1, 65535, "f", "n"};
+  return {{"f", "n"}, PhotoLensMode::kInfrared, ReshootResolution::k5664x4248, 1.1, 65535};
 }
 template <>
 inline StreamBitrateRequest sample() {
-  return {StreamBitrate::k1_5Mbps};
+  return {{}, StreamBitrate::k1_5Mbps};
 }
 template <>
 inline StreamResolutionRequest sample() {
-  return {StreamResolution::k1080p30};
+  return {{}, StreamResolution::k1080p30};
 }
 template <>
 inline StreamEncodingRequest sample() {
-  return {VideoEncoding::kH265};
+  return {{}, VideoEncoding::kH265};
 }
 template <>
 inline TfCardUpgradeRequest sample() {
@@ -117,7 +117,7 @@ inline FocusRequest sample() {
 }
 template <>
 inline OsdWatermarkRequest sample() {
-  return {true};
+  return {{}, true};
 }
 template <>
 inline ShutdownRequest sample() {
@@ -133,7 +133,7 @@ inline CameraVersionAck sample() {
 }
 template <>
 inline ImageModeRequest sample() {
-  return {ImageMode::kSplit};
+  return {{}, ImageMode::kSplit};
 }
 template <>
 inline AiRecognitionRequest sample() {
@@ -145,27 +145,35 @@ inline BoxTrackingRequest sample() {
 }
 template <>
 inline PhotoStatus sample() {
-  return {PhotoLensMode::kInfrared, PhotoState::kSdFormatError, 65535};
+  PhotoStatus m;
+  m.lens = PhotoLensMode::kInfrared;
+  m.state = PhotoState::kSdFormatError;
+  m.burst_count = 65535;
+  return m;
 }
 template <>
 inline RecordStatus sample() {
-  return {RecordLensMode::kVisible, RecordState::kSdFormatError, 3600};
+  RecordStatus m;
+  m.lens = RecordLensMode::kVisible;
+  m.state = RecordState::kSdFormatError;
+  m.recording_time_s = 3600;
+  return m;
 }
 template <>
 inline ZoomStatus sample() {
-  return {ZoomProgress::kZooming};
+  return {{}, ZoomProgress::kZooming};
 }
 template <>
 inline PreciseReshootStatus sample() {
-  return {PhotoLensMode::kInfraredAndVisible, ReshootState::kReshooting};
+  return {{PhotoLensMode::kInfraredAndVisible, ReshootState::kReshooting}};
 }
 template <>
 inline TfCardUpgradeStatus sample() {
-  return {TfUpgradeState::kFailed};
+  return {{}, TfUpgradeState::kFailed};
 }
 template <>
 inline SdFormatStatus sample() {
-  return {SdFormatState::kUnavailable};
+  return {{}, SdFormatState::kUnavailable};
 }
 template <>
 inline CameraGpsRequest sample() {

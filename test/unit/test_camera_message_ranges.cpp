@@ -192,7 +192,8 @@ TEST(CameraMessages, RangeErrorsSayTheAllowedValues) {
   box.width_px = 201;
   EXPECT_NE(encode_payload(box).error().find("x_px + width_px <= 1920"), std::string::npos);
 
-  StreamResolutionRequest resolution{StreamResolution::k720p30};
+  StreamResolutionRequest resolution;
+  resolution.resolution = StreamResolution::k720p30;
   EXPECT_NE(encode_payload(resolution).error().find("not supported"), std::string::npos);
 }
 

@@ -132,7 +132,7 @@ TEST(CameraMessages, FixedCommandBytesMustBeTheDocumentedCode) {
   const uint8_t zero[2] = {0x00, 0x00};
   Result<FormatSdRequest> format = decode_payload<FormatSdRequest>(zero, 2);
   ASSERT_FALSE(format);
-  EXPECT_EQ(format.error(), "format_sd: byte 1 must be 0x01 (the command code), got 0x00");
+  EXPECT_EQ(format.error(), "format_sd: byte 1 must be the command code 1, got 0");
   const uint8_t start_not_zero[3] = {0x01, 0x7D, 0x00};
   EXPECT_NE(decode_payload<ZoomRatioRequest>(start_not_zero, 3).error().find("start setting"),
             std::string::npos);
@@ -207,7 +207,9 @@ TEST(CameraMessages, TargetGpsAckDataIsLowByteFirstWhateverTheAckByteOrder) {
 }
 
 TEST(CameraMessages, StatusFramesAreLowByteFirstWhateverTheAckByteOrder) {
-  const RecordStatus status{RecordLensMode::kDefault, RecordState::kRecording, 0x0102};
+  RecordStatus status;
+  status.state = RecordState::kRecording;
+  status.recording_time_s = 0x0102;
   for (const CodecOptions& o : {CodecOptions{}, little_acks()}) {
     Result<Payload> p = encode_payload(status, o);
     ASSERT_TRUE(p);

@@ -29,7 +29,8 @@
 //      of `wire::bits(shift, width)`, carried as `wire::packed8` (or, when the bits are members
 //      of the message itself, `wire::bit_group(wire::in_bits(...), ...)`); a value with an "off"
 //      code `wire::or_off(...)`; a struct carried inline in another message `wire::nested` (it
-//      lists the shared fields in a static body(s, v)).
+//      lists the shared fields in a static body(s, v)); fixed-width text `wire::Text{width,
+//      terminated}`; a format of the family's own `wire::custom<C>` (wire.h).
 //   5. Optional trailing bytes: kMinSize < kSize. On decode, fields that start at or after
 //      kMinSize keep their defaults when the payload ends before them (a refusal ACK that is
 //      the code alone, a reserved byte left off). A rule about the decoded size that depends on a
@@ -80,6 +81,10 @@ class BasicLayoutWriter {
     detail::write_int<Int>(w_, raw, detail::order_of(kOrder, t.value.order));
   }
   void operator()(const char*, const std::string& v, wire::Text t) const { w_.text(v, t.width); }
+  template <class T, class C>
+  void operator()(const char*, const T& v, wire::Custom<C>) const {
+    C::write(w_, v);
+  }
   void operator()(const char*, const wire::Gap&, wire::Reserved r) const { w_.zeros(r.size); }
   void operator()(const char*, const wire::Gap&, wire::Fixed f) const { w_.u8(f.value); }
   void operator()(const char*, bool v, wire::Flag f) const { w_.u8(v ? f.on : f.off); }
@@ -139,6 +144,11 @@ class BasicLayoutReader {
   void operator()(const char*, std::string& v, wire::Text t) const {
     if (absent(v)) return;
     v = r_.text(t.width);
+  }
+  template <class T, class C>
+  void operator()(const char*, T& v, wire::Custom<C>) const {
+    if (absent(v)) return;
+    v = C::read(r_);
   }
   void operator()(const char*, const wire::Gap&, wire::Reserved r) const {
     // Reserved bytes past kMinSize may be left off, wholly or in part.
@@ -215,6 +225,10 @@ class LayoutSizer {
     size_ += sizeof(Int);
   }
   void operator()(const char*, const std::string&, wire::Text t) const { size_ += t.width; }
+  template <class T, class C>
+  void operator()(const char*, const T&, wire::Custom<C>) const {
+    size_ += C::kSize;
+  }
   void operator()(const char*, const wire::Gap&, wire::Reserved r) const { size_ += r.size; }
   void operator()(const char*, const wire::Gap&, wire::Fixed) const { size_ += 1; }
   void operator()(const char*, const bool&, wire::Flag) const { size_ += 1; }
@@ -273,6 +287,10 @@ class LayoutValidator {
   // PSDK document's "with \0 as the ending character" rules out.
   void operator()(const char* name, const std::string& v, wire::Text t) const {
     keep(protocol::check_text(name, v, t.terminated ? t.width - 1 : t.width));
+  }
+  template <class T, class C>
+  void operator()(const char* name, const T& v, wire::Custom<C>) const {
+    keep(C::check(name, v));
   }
   template <class Tag>
   void operator()(const char*, const wire::Gap&, Tag) const {}

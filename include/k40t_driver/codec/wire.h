@@ -103,6 +103,14 @@ struct Text {
   size_t width;
   bool terminated = true;
 };
+// A format only one message family has (the camera's IPv4 addresses: dotted text in the struct,
+// four bytes on the wire), given by a struct C of the family's own:
+//   static constexpr size_t kSize;                          // bytes on the wire
+//   template <class Out> static void write(Out&, const T&);  // Out has u8()
+//   template <class In> static T read(In&);                  // In has u8()
+//   static Status check(const char* field, const T&);        // validation, naming the field
+template <class C>
+struct Custom {};
 // Raw bytes; the field is std::array<uint8_t, N>.
 template <size_t N>
 struct Bytes {};
@@ -190,11 +198,14 @@ inline constexpr Raw<uint16_t> u16{};
 inline constexpr Raw<uint32_t> u32{};
 inline constexpr Raw<int16_t> i16{};
 inline constexpr Raw<int32_t> i32{};
+inline constexpr Raw<int64_t> i64{};
 inline constexpr Real<float> f32{};
 inline constexpr Real<double> f64{};
 inline constexpr Packed<uint8_t> packed8{};
 inline constexpr Packed<uint16_t> packed16{};
 inline constexpr Nested nested{};
+template <class C>
+inline constexpr Custom<C> custom{};
 template <class Int>
 constexpr Scaled<Int> scaled(double scale) {
   return {scale};

@@ -1,28 +1,15 @@
 #include "camera_codec.h"
 
-#include <arpa/inet.h>
-
-#include <cstdio>
+#include <string>
 
 namespace k40t::protocol::camera_codec {
 
-Status expect_byte(ByteReader& r, uint8_t expected, const char* meaning) {
-  const uint8_t got = r.u8();
-  if (!r.ok() || got == expected) return Status::ok();  // a short payload is reported by the caller
-  char buffer[120];
-  std::snprintf(buffer, sizeof(buffer), "byte %zu must be 0x%02X (%s), got 0x%02X", r.position(),
-                expected, meaning, got);
-  return Status::fail(buffer);
-}
-
-Status get_flag(ByteReader& r, const char* field, bool& out) {
-  const uint8_t got = r.u8();
-  if (got > 1) {
-    return Status::fail(std::string("field '") + field + "' must be 0 or 1, got " +
-                        std::to_string(got));
-  }
-  out = got == 1;
-  return Status::ok();
+Status code_alone_or_whole(size_t payload_size, size_t whole_size) {
+  constexpr size_t kCodeSize = 2;
+  if (payload_size <= kCodeSize || payload_size >= whole_size) return Status::ok();
+  return Status::fail("the data after the response code need " +
+                      std::to_string(whole_size - kCodeSize) + " bytes, got " +
+                      std::to_string(payload_size - kCodeSize));
 }
 
 Status check_one_of(const char* field, int64_t value, std::initializer_list<int64_t> allowed,
@@ -47,45 +34,6 @@ Status check_time_of_day(int64_t hour, int64_t minute, int64_t second, int64_t m
   return first_failure(check_int("hour", hour, 0, 23), check_int("minute", minute, 0, 59),
                        check_int("second", second, 0, 59),
                        check_int("millisecond", millisecond, 0, 999));
-}
-
-namespace {
-bool parse_ipv4(const std::string& text, Ipv4Octets& out) {
-  in_addr address{};
-  if (inet_pton(AF_INET, text.c_str(), &address) != 1) return false;
-  const uint32_t value = ntohl(address.s_addr);  // first octet in the most significant byte
-  for (size_t i = 0; i < out.size(); ++i) out[i] = static_cast<uint8_t>(value >> (24 - 8 * i));
-  return true;
-}
-}  // namespace
-
-Status check_ipv4(const char* field, const std::string& text) {
-  Ipv4Octets octets{};
-  if (text.find('\0') == std::string::npos && parse_ipv4(text, octets)) return Status::ok();
-  return Status::fail(std::string("field '") + field +
-                      "' must be an IPv4 address like 192.168.144.64, got '" + text + "'");
-}
-
-Ipv4Octets ipv4_octets(const std::string& text) {
-  Ipv4Octets octets{};
-  if (!parse_ipv4(text, octets)) octets = {};
-  return octets;
-}
-
-std::string ipv4_text(const Ipv4Octets& o) {
-  return std::to_string(o[0]) + "." + std::to_string(o[1]) + "." + std::to_string(o[2]) + "." +
-         std::to_string(o[3]);
-}
-
-uint32_t ipv4_value(const std::string& text) {
-  const Ipv4Octets o = ipv4_octets(text);
-  return static_cast<uint32_t>(o[0]) << 24 | static_cast<uint32_t>(o[1]) << 16 |
-         static_cast<uint32_t>(o[2]) << 8 | o[3];
-}
-
-std::string ipv4_text(uint32_t value) {
-  return ipv4_text(Ipv4Octets{static_cast<uint8_t>(value >> 24), static_cast<uint8_t>(value >> 16),
-                              static_cast<uint8_t>(value >> 8), static_cast<uint8_t>(value)});
 }
 
 }  // namespace k40t::protocol::camera_codec

@@ -1,10 +1,8 @@
 // Small wire helpers shared by the camera family's .cpp files (not part of the public API).
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <initializer_list>
-#include <string>
 
 #include "k40t_driver/protocol/message.h"
 
@@ -24,18 +22,9 @@ E get_code(ByteReader& r) {
   static_assert(std::is_enum_v<E> && sizeof(E) == 1, "one-byte enum expected");
   return static_cast<E>(r.u8());
 }
-template <class E>
-Status read_code(ByteReader& r, E& out) {
-  out = get_code<E>(r);
-  return Status::ok();
-}
-
-// A request byte whose only documented value is `expected` (e.g. 0x01 "format the SD card"). The
-// struct has no field for it, so another value cannot be represented: a decode error naming it.
-Status expect_byte(ByteReader& r, uint8_t expected, const char* meaning);
-
-// A 0/1 byte of a host request into a bool; other values cannot be represented and fail.
-Status get_flag(ByteReader& r, const char* field, bool& out);
+// A data ACK (0x010312, 0x010317) is the response code alone, a refusal, or the code and all its
+// data: a payload between the two was cut short.
+Status code_alone_or_whole(size_t payload_size, size_t whole_size);
 
 // check_range for integer fields of any width (the int64_t/double overloads of message.h are
 // ambiguous for a uint16_t checked against int literals).
@@ -53,15 +42,5 @@ Status check_photo_settings(uint8_t time_lapse_interval_s, uint8_t burst_count);
 
 // Time of day of 0x000310 and its ACK: hour 0-23, minute 0-59, second 0-59, millisecond 0-999.
 Status check_time_of_day(int64_t hour, int64_t minute, int64_t second, int64_t millisecond);
-
-// IPv4 addresses are dotted-quad strings in the structs ("192.168.144.64"); on the wire the
-// first octet comes first (section 3.2.4.16's example: mask 255 255 255 0).
-using Ipv4Octets = std::array<uint8_t, 4>;
-Status check_ipv4(const char* field, const std::string& text);
-Ipv4Octets ipv4_octets(const std::string& text);  // 0.0.0.0 for text check_ipv4 refuses
-std::string ipv4_text(const Ipv4Octets& octets);
-// As a 32-bit value whose most significant byte is the first octet, for ACK byte order (A2).
-uint32_t ipv4_value(const std::string& text);
-std::string ipv4_text(uint32_t value);
 
 }  // namespace k40t::protocol::camera_codec

@@ -8,9 +8,11 @@
 #include <string>
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_layout.h"
 #include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/camera_enums.h"
+#include "k40t_driver/protocol/messages/setting_request.h"
 
 namespace k40t::protocol {
 
@@ -23,55 +25,60 @@ constexpr size_t kCameraFileNameBytes = 32;
 constexpr double kMinZoomRatio = 1.0;
 constexpr double kMaxZoomRatio = 160.0;
 
-// 0x000300, section 3.2.4.1: photo or video mode. In photo mode the pod ignores record requests
-// and vice versa.
-struct CaptureModeRequest {
-  K40T_POD_MESSAGE(0x000300, "capture_mode", "3.2.4.1");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 2;
-  static constexpr size_t kMinSize = 1;
-  using Ack = PlainAck;
+// The zoom ratio of 0x000304 and 0x000307: uint16 x10 on the wire.
+constexpr auto kZoomRatioWire = wire::scaled<uint16_t>(10).range(kMinZoomRatio, kMaxZoomRatio, "x");
 
-  CaptureMode mode = CaptureMode::kPhoto;
+// The folder (20 bytes) and file name (32 bytes) that 0x000302, 0x000303 and 0x000307 end with;
+// empty texts mean the root folder and the pod's default naming.
+struct SaveAs {
+  std::string folder;
+  std::string name;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("mode", self.mode);
+  template <class S, class V>
+  static void body(S& s, V&& v) {
+    v("folder", s.folder, wire::Text{kCameraFolderBytes, false});
+    v("name", s.name, wire::Text{kCameraFileNameBytes, false});
   }
 };
 
-// 0x000301, section 3.2.4.2: photo mode, time-lapse interval (5/7/30/60 s) and burst count (3/5).
-// The pod reports all three in 0x000003 whatever the mode, so all three are always validated.
-struct PhotoSettingsRequest {
-  K40T_POD_MESSAGE(0x000301, "photo_settings", "3.2.4.2");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 4;
-  static constexpr size_t kMinSize = 3;
-  using Ack = PlainAck;
-
+// The photo settings 0x000301 sets and 0x000003 reports: photo mode, time-lapse interval
+// (5/7/30/60 s) and burst count (3/5). The pod reports all three whatever the mode, so all three
+// are always validated.
+struct PhotoSettings {
   PhotoMode photo_mode = PhotoMode::kSingle;
   uint8_t time_lapse_interval_s = 5;
   uint8_t burst_count = 3;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("photo_mode", self.photo_mode);
-    v("time_lapse_interval_s", self.time_lapse_interval_s);
-    v("burst_count", self.burst_count);
+  Status extra_checks() const;  // interval and burst count: the document's few values
+};
+// Their lines in a layout.
+template <class S, class V>
+void photo_settings(S& s, V&& v) {
+  v("photo_mode", s.photo_mode, wire::u8);
+  v("time_lapse_interval_s", s.time_lapse_interval_s, wire::u8);
+  v("burst_count", s.burst_count, wire::u8);
+}
+
+// 0x000300, section 3.2.4.1: photo or video mode. In photo mode the pod ignores record requests
+// and vice versa.
+struct CaptureModeRequest : ByteSettingRequest<CaptureModeRequest, SettingPrefix::kNone, 1> {
+  K40T_POD_MESSAGE(0x000300, "capture_mode", "3.2.4.1");
+
+  K40T_VALUE_FIELD(CaptureModeRequest, CaptureMode, mode, CaptureMode::kPhoto);
+};
+
+// 0x000301, section 3.2.4.2: the photo settings, 1 reserved.
+struct PhotoSettingsRequest : PhotoSettings {
+  K40T_POD_REQUEST(0x000301, "photo_settings", "3.2.4.2", 4, 3);
+  K40T_LAYOUT(s, v) {
+    photo_settings(s, v);
+    v("reserved", wire::gap, wire::reserved(1));
   }
 };
 
-// What 0x000302 and 0x000303 share (54 bytes): which cameras, start/stop, then the folder (20
-// bytes) and file name (32 bytes) to save into; empty texts mean the root folder and the pod's
-// default naming.
+// What 0x000302 and 0x000303 share (54 bytes): which cameras, start/stop, then where to save.
 template <class Lens, class Action>
-struct FileCaptureRequest {
+struct FileCaptureRequest : SaveAs {
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 2 + kCameraFolderBytes + kCameraFileNameBytes;  // 54
   static constexpr size_t kMinSize = kSize;
@@ -79,18 +86,11 @@ struct FileCaptureRequest {
 
   Lens lens = Lens::kDefault;
   Action action = Action::kStart;
-  std::string folder;
-  std::string name;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("lens", self.lens);
-    v("action", self.action);
-    v("folder", self.folder);
-    v("name", self.name);
+  K40T_LAYOUT(s, v) {
+    v("lens", s.lens, wire::u8);
+    v("action", s.action, wire::u8);
+    body(s, v);
   }
 };
 
@@ -109,70 +109,38 @@ struct RecordRequest : FileCaptureRequest<RecordLensMode, RecordAction> {
 // 0x000304, section 3.2.4.5: byte 1 = 0x00 "start setting", uint16 zoom ratio x10 (1.0..160.0x).
 // Status frame 0x020304 tells when the zoom has arrived.
 struct ZoomRatioRequest {
-  K40T_POD_MESSAGE(0x000304, "zoom_ratio", "3.2.4.5");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 3;
-  static constexpr size_t kMinSize = 3;
-  using Ack = PlainAck;
-
+  K40T_POD_REQUEST(0x000304, "zoom_ratio", "3.2.4.5", 3, 3);
   double zoom_x = 1.0;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("zoom_x", self.zoom_x);
+  K40T_LAYOUT(s, v) {
+    v("start", wire::gap, wire::fixed(kStartSettingByte, "start setting"));
+    v("zoom_x", s.zoom_x, kZoomRatioWire);
   }
 };
 
 // 0x000306, section 3.2.4.6: continuous zoom in/out, stop, or one step in/out.
-struct ContinuousZoomRequest {
+struct ContinuousZoomRequest : ByteSettingRequest<ContinuousZoomRequest, SettingPrefix::kNone, 1> {
   K40T_POD_MESSAGE(0x000306, "continuous_zoom", "3.2.4.6");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 2;
-  static constexpr size_t kMinSize = 1;
-  using Ack = PlainAck;
 
-  ZoomCommand command = ZoomCommand::kStop;
-
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("command", self.command);
-  }
+  K40T_VALUE_FIELD(ContinuousZoomRequest, ZoomCommand, command, ZoomCommand::kStop);
 };
 
 // 0x000307, section 3.2.4.7: take a photo at a given visible resolution, zoom and focus position
 // (the values a previous shot reported in 0x000005), into folder/name. Status frame 0x020307.
 // The focus position has no unit in the document: it is passed through as the raw uint16.
-struct PreciseReshootRequest {
-  K40T_POD_MESSAGE(0x000307, "precise_reshoot", "3.2.4.7");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 6 + kCameraFolderBytes + kCameraFileNameBytes;  // 58
-  static constexpr size_t kMinSize = kSize;
-  using Ack = PlainAck;
-
+struct PreciseReshootRequest : SaveAs {
+  K40T_POD_REQUEST(0x000307, "precise_reshoot", "3.2.4.7", 58, 58);
   PhotoLensMode lens = PhotoLensMode::kDefault;
   ReshootResolution resolution = ReshootResolution::k4000x3000;
   double zoom_x = 1.0;  // uint16 x10 on the wire
   uint16_t focal_length_raw = 0;
-  std::string folder;
-  std::string name;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("lens", self.lens);
-    v("resolution", self.resolution);
-    v("zoom_x", self.zoom_x);
-    v("focal_length_raw", self.focal_length_raw);
-    v("folder", self.folder);
-    v("name", self.name);
+  K40T_LAYOUT(s, v) {
+    v("lens", s.lens, wire::u8);
+    v("resolution", s.resolution, wire::u8);
+    v("zoom_x", s.zoom_x, kZoomRatioWire);
+    v("focal_length_raw", s.focal_length_raw, wire::u16);
+    body(s, v);
   }
 };
 

@@ -9,9 +9,11 @@
 #include <array>
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_layout.h"
 #include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/camera_enums.h"
+#include "k40t_driver/protocol/messages/setting_request.h"
 
 namespace k40t::protocol {
 
@@ -20,128 +22,72 @@ namespace k40t::protocol {
 constexpr int kStreamWidthPx = 1920;
 constexpr int kStreamHeightPx = 1080;
 
+// The document's bounds of a pixel column and row in the stream.
+constexpr auto kStreamColumn = wire::u16.range(0, kStreamWidthPx, "px");
+constexpr auto kStreamRow = wire::u16.range(0, kStreamHeightPx, "px");
+
 // 0x000308, section 3.2.4.8: output stream bitrate, 1 (1 Mbit/s) .. 6 (12 Mbit/s).
-struct StreamBitrateRequest {
+struct StreamBitrateRequest : ByteSettingRequest<StreamBitrateRequest, SettingPrefix::kNone, 1> {
   K40T_POD_MESSAGE(0x000308, "stream_bitrate", "3.2.4.8");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 2;
-  static constexpr size_t kMinSize = 1;
-  using Ack = PlainAck;
 
-  StreamBitrate bitrate = StreamBitrate::k4Mbps;
-
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("bitrate", self.bitrate);
-  }
+  K40T_VALUE_FIELD(StreamBitrateRequest, StreamBitrate, bitrate, StreamBitrate::k4Mbps);
 };
 
 // 0x00030A, section 3.2.4.9: output resolution, 1 = 1080P30. The document lists 2 = 720P30 as
 // "not supported", so validation refuses it (the code is still decoded and named).
-struct StreamResolutionRequest {
+struct StreamResolutionRequest
+    : ByteSettingRequest<StreamResolutionRequest, SettingPrefix::kNone, 1> {
   K40T_POD_MESSAGE(0x00030A, "stream_resolution", "3.2.4.9");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 2;
-  static constexpr size_t kMinSize = 1;
-  using Ack = PlainAck;
 
-  StreamResolution resolution = StreamResolution::k1080p30;
+  K40T_VALUE_FIELD(StreamResolutionRequest, StreamResolution, resolution,
+                   StreamResolution::k1080p30);
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("resolution", self.resolution);
-  }
+  Status validate() const;  // 720P30 has a code but cannot be set
 };
 
 // 0x00030B, section 3.2.4.10: output encoding H264 (0) or H265 (1).
-struct StreamEncodingRequest {
+struct StreamEncodingRequest : ByteSettingRequest<StreamEncodingRequest, SettingPrefix::kNone, 1> {
   K40T_POD_MESSAGE(0x00030B, "stream_encoding", "3.2.4.10");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 2;
-  static constexpr size_t kMinSize = 1;
-  using Ack = PlainAck;
 
-  VideoEncoding encoding = VideoEncoding::kH264;
-
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("encoding", self.encoding);
-  }
+  K40T_VALUE_FIELD(StreamEncodingRequest, VideoEncoding, encoding, VideoEncoding::kH264);
 };
 
 // 0x000313, section 3.2.4.18: focus command; the uint16 area corners (top-left, bottom-right)
 // are used by area auto focus (4) only and must then span a non-empty box.
 struct FocusRequest {
-  K40T_POD_MESSAGE(0x000313, "focus", "3.2.4.18");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 10;
-  static constexpr size_t kMinSize = 9;
-  using Ack = PlainAck;
-
+  K40T_POD_REQUEST(0x000313, "focus", "3.2.4.18", 10, 9);
   FocusCommand command = FocusCommand::kAuto;
   uint16_t area_left_px = 0;
   uint16_t area_top_px = 0;
   uint16_t area_right_px = 0;
   uint16_t area_bottom_px = 0;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("command", self.command);
-    v("area_left_px", self.area_left_px);
-    v("area_top_px", self.area_top_px);
-    v("area_right_px", self.area_right_px);
-    v("area_bottom_px", self.area_bottom_px);
+  // Outside area focus the corners are ignored by the pod but must still fit the stream.
+  K40T_LAYOUT(s, v) {
+    v("command", s.command, wire::u8);
+    v("area_left_px", s.area_left_px, kStreamColumn);
+    v("area_top_px", s.area_top_px, kStreamRow);
+    v("area_right_px", s.area_right_px, kStreamColumn);
+    v("area_bottom_px", s.area_bottom_px, kStreamRow);
+    v("reserved", wire::gap, wire::reserved(1));
   }
+  Status extra_checks() const;  // area focus: right of left, below top
 };
 
 // 0x000314, section 3.2.4.19: OSD watermark off (0) / on (1), then two reserved bytes.
-struct OsdWatermarkRequest {
+struct OsdWatermarkRequest : ByteSettingRequest<OsdWatermarkRequest, SettingPrefix::kNone, 2> {
   K40T_POD_MESSAGE(0x000314, "osd_watermark", "3.2.4.19");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 3;
-  static constexpr size_t kMinSize = 1;
-  using Ack = PlainAck;
+  static constexpr uint8_t kOnCode = 1;
+  static constexpr uint8_t kOffCode = 0;
 
-  bool enabled = false;
-
-  Status validate() const { return Status::ok(); }
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("enabled", self.enabled);
-  }
+  K40T_VALUE_FIELD(OsdWatermarkRequest, bool, enabled, false);
 };
 
 // 0x000318, section 3.2.4.22: what the stream shows: 0 infrared, 5/6 visible, 7 split screen.
-struct ImageModeRequest {
+struct ImageModeRequest : ByteSettingRequest<ImageModeRequest, SettingPrefix::kNone, 1> {
   K40T_POD_MESSAGE(0x000318, "image_mode", "3.2.4.22");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 2;
-  static constexpr size_t kMinSize = 1;
-  using Ack = PlainAck;
 
-  ImageMode mode = ImageMode::kVisible;
-
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("mode", self.mode);
-  }
+  K40T_VALUE_FIELD(ImageModeRequest, ImageMode, mode, ImageMode::kVisible);
 };
 
 // 0x000319, section 3.2.4.23: AI recognition on (1) / off (2), the model to load (0 = default
@@ -149,27 +95,18 @@ struct ImageModeRequest {
 // say how unused slots are marked; they are sent as the caller set them (default 0).
 struct AiRecognitionRequest {
   static constexpr size_t kClassSlots = 10;
-  K40T_POD_MESSAGE(0x000319, "ai_recognition", "3.2.4.23");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 2 + kClassSlots;  // 12
-  static constexpr size_t kMinSize = kSize;
-  using Ack = PlainAck;
-
+  K40T_POD_REQUEST(0x000319, "ai_recognition", "3.2.4.23", 2 + kClassSlots, 2 + kClassSlots);
   FeatureSwitch recognition = FeatureSwitch::kOn;
   uint8_t model = 0;
   std::array<uint8_t, kClassSlots> classes{};
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
+  K40T_LAYOUT(s, v) {
     static constexpr const char* kClassNames[kClassSlots] = {
         "class_1", "class_2", "class_3", "class_4", "class_5",
         "class_6", "class_7", "class_8", "class_9", "class_10"};
-    v("recognition", self.recognition);
-    v("model", self.model);
-    for (size_t i = 0; i < kClassSlots; ++i) v(kClassNames[i], self.classes[i]);
+    v("recognition", s.recognition, wire::u8);
+    v("model", s.model, wire::u8);
+    for (size_t i = 0; i < kClassSlots; ++i) v(kClassNames[i], s.classes[i], wire::u8);
   }
 };
 
@@ -178,29 +115,22 @@ struct AiRecognitionRequest {
 // The pod needs AI recognition on; the document's table header says "Byte1-2" for the switch but
 // its details and the 10-byte total make it one byte.
 struct BoxTrackingRequest {
-  K40T_POD_MESSAGE(0x000324, "box_tracking", "3.2.4.25");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 10;
-  static constexpr size_t kMinSize = 9;
-  using Ack = PlainAck;
-
+  K40T_POD_REQUEST(0x000324, "box_tracking", "3.2.4.25", 10, 9);
   FeatureSwitch tracking = FeatureSwitch::kOn;
   uint16_t x_px = 0;
   uint16_t y_px = 0;
   uint16_t width_px = 0;
   uint16_t height_px = 0;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("tracking", self.tracking);
-    v("x_px", self.x_px);
-    v("y_px", self.y_px);
-    v("width_px", self.width_px);
-    v("height_px", self.height_px);
+  K40T_LAYOUT(s, v) {
+    v("tracking", s.tracking, wire::u8);
+    v("x_px", s.x_px, kStreamColumn);
+    v("y_px", s.y_px, kStreamRow);
+    v("width_px", s.width_px, wire::u16);  // the box stays inside: extra_checks()
+    v("height_px", s.height_px, wire::u16);
+    v("reserved", wire::gap, wire::reserved(1));
   }
+  Status extra_checks() const;  // x_px + width_px <= 1920, y_px + height_px <= 1080
 };
 
 // Every message struct of this part of the camera family: the catalogue, the catalogue tests and

@@ -4,7 +4,9 @@
 #pragma once
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_layout.h"
 #include "k40t_driver/protocol/message_list.h"
+#include "k40t_driver/protocol/messages/camera_capture.h"
 #include "k40t_driver/protocol/messages/camera_enums.h"
 
 namespace k40t::protocol {
@@ -16,63 +18,47 @@ constexpr double kSdCapacityUnitMb = 10.0;
 constexpr double kSdCapacityMaxMb = 65535 * kSdCapacityUnitMb;
 
 // 0x000003, section 3.2.1.1, 1 Hz: the camera's modes, stream settings and SD card.
-struct CameraSystemStatus {
-  K40T_POD_MESSAGE(0x000003, "camera_system_status", "3.2.1.1");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 16;
-  static constexpr size_t kMinSize = 15;
-
+// The photo settings (photo_mode, time_lapse_interval_s, burst_count) are PhotoSettings'.
+struct CameraSystemStatus : PhotoSettings {
+  K40T_POD_REPORT(0x000003, "camera_system_status", "3.2.1.1", 16, 15);
   CaptureMode capture_mode = CaptureMode::kPhoto;
   // docs/protocol/decisions.md#a6: the "encoding format" byte is the resolution.
   ReportedStreamResolution stream_resolution = ReportedStreamResolution::k1080p30;
   VideoEncoding encoding = VideoEncoding::kH264;
   ImageMode image_mode = ImageMode::kVisible;  // "stream mode": what the stream shows
   StreamBitrate bitrate = StreamBitrate::k4Mbps;
-  PhotoMode photo_mode = PhotoMode::kSingle;
-  uint8_t time_lapse_interval_s = 5;  // 5/7/30/60
-  uint8_t burst_count = 3;            // 3/5
   SdCardState sd_state = SdCardState::kNormal;
   double sd_total_mb = 0;  // uint16 counts of kSdCapacityUnitMb on the wire
   double sd_free_mb = 0;
   double sd_used_mb = 0;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("capture_mode", self.capture_mode);
-    v("stream_resolution", self.stream_resolution);
-    v("encoding", self.encoding);
-    v("image_mode", self.image_mode);
-    v("bitrate", self.bitrate);
-    v("photo_mode", self.photo_mode);
-    v("time_lapse_interval_s", self.time_lapse_interval_s);
-    v("burst_count", self.burst_count);
-    v("sd_state", self.sd_state);
-    v("sd_total_mb", self.sd_total_mb);
-    v("sd_free_mb", self.sd_free_mb);
-    v("sd_used_mb", self.sd_used_mb);
+  K40T_LAYOUT(s, v) {
+    constexpr auto capacity =
+        wire::scaled<uint16_t>(1.0 / kSdCapacityUnitMb).range(0.0, kSdCapacityMaxMb, "MB");
+    v("capture_mode", s.capture_mode, wire::u8);
+    v("stream_resolution", s.stream_resolution, wire::u8);
+    v("encoding", s.encoding, wire::u8);
+    v("image_mode", s.image_mode, wire::u8);
+    v("bitrate", s.bitrate, wire::u8);
+    photo_settings(s, v);
+    v("sd_state", s.sd_state, wire::u8);
+    v("sd_total_mb", s.sd_total_mb, capacity);
+    v("sd_free_mb", s.sd_free_mb, capacity);
+    v("sd_used_mb", s.sd_used_mb, capacity);
+    v("reserved", wire::gap, wire::reserved(1));
   }
 };
 
 // 0x000008, section 3.2.1.4, 1 Hz: camera upgrade or repair state and progress 0..100 %.
 struct CameraUpgradeStatus {
-  K40T_POD_MESSAGE(0x000008, "camera_upgrade_status", "3.2.1.4");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 3;
-  static constexpr size_t kMinSize = 2;
-
+  K40T_POD_REPORT(0x000008, "camera_upgrade_status", "3.2.1.4", 3, 2);
   CameraUpgradeState state = CameraUpgradeState::kSucceeded;
   uint8_t progress_percent = 0;  // 0 start, 100 complete
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("state", self.state);
-    v("progress_percent", self.progress_percent);
+  K40T_LAYOUT(s, v) {
+    v("state", s.state, wire::u8);
+    v("progress_percent", s.progress_percent, wire::u8.range(0, 100, "%"));
+    v("reserved", wire::gap, wire::reserved(1));
   }
 };
 

@@ -8,136 +8,61 @@
 #include <string>
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_layout.h"
 #include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/camera_enums.h"
+#include "k40t_driver/protocol/messages/ipv4_field.h"
+#include "k40t_driver/protocol/messages/simple_requests.h"
 
 namespace k40t::protocol {
 
-// What six requests share: byte 1 is a fixed command code 0x01 ("start TF-card upgrade", "format
-// SD card", ...), byte 2 reserved; nothing to set. Decoding another byte 1 fails: the struct has
-// no field that could report it.
-struct FixedCommandRequest {
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 2;
-  static constexpr size_t kMinSize = 1;
-  static constexpr uint8_t kCommandByte = 0x01;
-  using Ack = PlainAck;
+// Address, netmask and gateway: what 0x000311 and the ACK 0x010312 end with.
+template <class S, class V>
+void ip_settings(S& s, V&& v) {
+  constexpr auto ipv4 = wire::custom<Ipv4Field>;
+  v("address", s.address, ipv4);
+  v("netmask", s.netmask, ipv4);
+  v("gateway", s.gateway, ipv4);
+}
 
-  Status validate() const { return Status::ok(); }
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self&, V&&) {}
-};
+// Six requests are CommandRequest<0x01> (messages/simple_requests.h): byte 1 is the fixed command
+// code 0x01 ("start TF-card upgrade", "format SD card", ...), byte 2 reserved; nothing to set.
+// Decoding another byte 1 fails: the struct has no field that could report it.
 
 // 0x00030C, section 3.2.4.11: upgrade the visible camera from its TF card (byte 1 = 1; 0 is
 // "invalid"). Progress in status frame 0x02030C.
-struct TfCardUpgradeRequest : FixedCommandRequest {
+struct TfCardUpgradeRequest : CommandRequest<0x01> {
   K40T_POD_MESSAGE(0x00030C, "tf_card_upgrade", "3.2.4.11");
 };
 
 // 0x00030D, section 3.2.4.12: format the SD card. Progress in status frame 0x02030D at 5 Hz.
-struct FormatSdRequest : FixedCommandRequest {
+struct FormatSdRequest : CommandRequest<0x01> {
   K40T_POD_MESSAGE(0x00030D, "format_sd", "3.2.4.12");
-};
-
-// 0x00030F, section 3.2.4.14: restore factory settings; the camera restarts one second later.
-struct FactoryResetRequest : FixedCommandRequest {
-  K40T_POD_MESSAGE(0x00030F, "factory_reset", "3.2.4.14");
-};
-
-// 0x000316, section 3.2.4.20: the camera is about to be powered off.
-struct ShutdownRequest : FixedCommandRequest {
-  K40T_POD_MESSAGE(0x000316, "shutdown", "3.2.4.20");
-};
-
-// ACK 0x010312: response code, then address, netmask and gateway (docs/protocol/decisions.md#a2:
-// with the default big ack_byte_order the first octet comes first, as in the document's example).
-struct GetIpAck {
-  K40T_POD_MESSAGE(0x010312, "get_ip_ack", "3.2.4.17");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 14;
-  static constexpr size_t kMinSize = 2;  // a refusal may carry the code only
-
-  ResponseCode code = ResponseCode::kOk;
-  std::string address = "0.0.0.0";
-  std::string netmask = "0.0.0.0";
-  std::string gateway = "0.0.0.0";
-
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("code", self.code);
-    v("address", self.address);
-    v("netmask", self.netmask);
-    v("gateway", self.gateway);
-  }
-};
-
-// 0x000312, section 3.2.4.17: query the camera's IP settings (byte 1 = 1).
-struct GetIpRequest : FixedCommandRequest {
-  K40T_POD_MESSAGE(0x000312, "get_ip", "3.2.4.17");
-  using Ack = GetIpAck;
-};
-
-// ACK 0x010317: response code, major, minor, patch version bytes.
-struct CameraVersionAck {
-  K40T_POD_MESSAGE(0x010317, "camera_version_ack", "3.2.4.21");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 5;
-  static constexpr size_t kMinSize = 2;  // a refusal may carry the code only
-
-  ResponseCode code = ResponseCode::kOk;
-  uint8_t major = 0;
-  uint8_t minor = 0;
-  uint8_t patch = 0;
-
-  std::string version_text() const;  // "major.minor.patch"
-
-  Status validate() const { return Status::ok(); }
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("code", self.code);
-    v("major", self.major);
-    v("minor", self.minor);
-    v("patch", self.patch);
-  }
-};
-
-// 0x000317, section 3.2.4.21: ask for the camera's version (byte 1 = 1).
-struct CameraVersionRequest : FixedCommandRequest {
-  K40T_POD_MESSAGE(0x000317, "camera_version", "3.2.4.21");
-  using Ack = CameraVersionAck;
 };
 
 // 0x00030E, section 3.2.4.13, docs/protocol/decisions.md#a8: int64 milliseconds since 1970-01-01
 // 00:00:00 UTC, int32 tz_minuteswest and int32 tz_dsttime as in struct timezone, all low byte
 // first. Sent every 10 s right after a pulse on the RTC_IO pin when that pin is wired.
 struct TimeSyncRequest {
-  K40T_POD_MESSAGE(0x00030E, "time_sync", "3.2.4.13");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 16;
-  static constexpr size_t kMinSize = 16;
-  using Ack = PlainAck;
-
+  K40T_POD_REQUEST(0x00030E, "time_sync", "3.2.4.13", 16, 16);
   int64_t unix_time_ms = 0;
   int32_t tz_minutes_west = 0;  // minutes west of Greenwich: UTC+8 is -480
   int32_t tz_dst_type = 0;      // type of DST correction (0 = none)
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("unix_time_ms", self.unix_time_ms);
-    v("tz_minutes_west", self.tz_minutes_west);
-    v("tz_dst_type", self.tz_dst_type);
+  // Time zones run from UTC-12 (720 minutes west) to UTC+14 (840 minutes east).
+  K40T_LAYOUT(s, v) {
+    v("unix_time_ms", s.unix_time_ms, wire::i64);
+    v("tz_minutes_west", s.tz_minutes_west, wire::i32.range(-840, 720, "min"));
+    v("tz_dst_type", s.tz_dst_type, wire::i32);
   }
+  // unix_time_ms >= 0 (an int64 range is beyond what a layout's double limits hold exactly).
+  Status extra_checks() const;
+};
+
+// 0x00030F, section 3.2.4.14: restore factory settings; the camera restarts one second later.
+struct FactoryResetRequest : CommandRequest<0x01> {
+  K40T_POD_MESSAGE(0x00030F, "factory_reset", "3.2.4.14");
 };
 
 // 0x000311, section 3.2.4.16: static (0) or DHCP (1), then address, netmask and gateway, first
@@ -145,27 +70,70 @@ struct TimeSyncRequest {
 // "0x00: NULL": 0.0.0.0 leaves them unset. A static address must not be 0.0.0.0 and a netmask
 // must be contiguous ones.
 struct SetIpRequest {
-  K40T_POD_MESSAGE(0x000311, "set_ip", "3.2.4.16");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 13;
-  static constexpr size_t kMinSize = 13;
-  using Ack = PlainAck;
-
+  K40T_POD_REQUEST(0x000311, "set_ip", "3.2.4.16", 13, 13);
   IpMode mode = IpMode::kStatic;
   std::string address = "192.168.144.64";  // the pod's factory address (section 2.3.1)
   std::string netmask = "255.255.255.0";
   std::string gateway = "0.0.0.0";
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("mode", self.mode);
-    v("address", self.address);
-    v("netmask", self.netmask);
-    v("gateway", self.gateway);
+  K40T_LAYOUT(s, v) {
+    v("mode", s.mode, wire::u8);
+    ip_settings(s, v);
   }
+  Status extra_checks() const;  // the netmask's ones are contiguous; a static address is set
+};
+
+// ACK 0x010312: response code, then address, netmask and gateway (docs/protocol/decisions.md#a2:
+// the code in the ACK byte order; the octets are bytes of their own, first octet first, as in the
+// document's example). A refusal may carry the code only.
+struct GetIpAck {
+  K40T_POD_REPORT(0x010312, "get_ip_ack", "3.2.4.17", 14, 2);
+  static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
+  ResponseCode code = ResponseCode::kOk;
+  std::string address = "0.0.0.0";
+  std::string netmask = "0.0.0.0";
+  std::string gateway = "0.0.0.0";
+
+  K40T_LAYOUT(s, v) {
+    v("code", s.code, wire::response_code);
+    ip_settings(s, v);
+  }
+  Status finish_decode(size_t payload_size) const;  // the code alone, or all of it
+};
+
+// 0x000312, section 3.2.4.17: query the camera's IP settings (byte 1 = 1).
+struct GetIpRequest : CommandRequest<0x01, GetIpAck> {
+  K40T_POD_MESSAGE(0x000312, "get_ip", "3.2.4.17");
+};
+
+// 0x000316, section 3.2.4.20: the camera is about to be powered off.
+struct ShutdownRequest : CommandRequest<0x01> {
+  K40T_POD_MESSAGE(0x000316, "shutdown", "3.2.4.20");
+};
+
+// ACK 0x010317: response code, major, minor, patch version bytes. A refusal may carry the code
+// only.
+struct CameraVersionAck {
+  K40T_POD_REPORT(0x010317, "camera_version_ack", "3.2.4.21", 5, 2);
+  static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
+  ResponseCode code = ResponseCode::kOk;
+  uint8_t major = 0;
+  uint8_t minor = 0;
+  uint8_t patch = 0;
+
+  std::string version_text() const;  // "major.minor.patch"
+  K40T_LAYOUT(s, v) {
+    v("code", s.code, wire::response_code);
+    v("major", s.major, wire::u8);
+    v("minor", s.minor, wire::u8);
+    v("patch", s.patch, wire::u8);
+  }
+  Status finish_decode(size_t payload_size) const;  // the code alone, or all of it
+};
+
+// 0x000317, section 3.2.4.21: ask for the camera's version (byte 1 = 1).
+struct CameraVersionRequest : CommandRequest<0x01, CameraVersionAck> {
+  K40T_POD_MESSAGE(0x000317, "camera_version", "3.2.4.21");
 };
 
 // Every message struct of this part of the camera family: the catalogue, the catalogue tests and

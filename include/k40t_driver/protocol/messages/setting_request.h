@@ -88,3 +88,13 @@ struct ByteSettingRequest {
 };
 
 }  // namespace k40t::protocol
+
+// The value field of a struct that ByteSettingRequest (or another base reading kValue and
+// kValueName) encodes, with those two constants, in one line:
+//   K40T_VALUE_FIELD(CaptureModeRequest, CaptureMode, mode, CaptureMode::kPhoto);
+// declares `CaptureMode mode = CaptureMode::kPhoto;`, kValue = &CaptureModeRequest::mode and
+// kValueName = "mode".
+#define K40T_VALUE_FIELD(Self, Type, name, initial) \
+  Type name = initial;                              \
+  static constexpr auto kValue = &Self::name;       \
+  static constexpr const char* kValueName = #name
