@@ -172,8 +172,9 @@ std::string run_photos(const Args&, ControlTarget& target) {
       out << "; " << photo.path;
       if (photo.width_px > 0) out << " " << photo.width_px << "x" << photo.height_px;
       if (photo.gps) {
-        out << " lat " << photo.gps->latitude_deg << " lon " << photo.gps->longitude_deg << " alt "
-            << photo.gps->altitude_m;
+        const GeoPoint& at = photo.gps->position;
+        out << " lat " << at.latitude_deg << " lon " << at.longitude_deg << " alt "
+            << at.altitude_m;
       } else {
         out << " no gps";
       }
@@ -208,7 +209,7 @@ std::string run_truth(const Args&, ControlTarget& target) {
     out << " unix " << pod.unix_time_s();
     put_point(out, "pod", pod.pod_position(), truth);
     out << " pod_ne " << pod.pod_position().x << " " << pod.pod_position().y;
-    out << " velocity_ne " << v.x << " " << v.y << " heading " << pod.vehicle_attitude().yaw_deg;
+    out << " velocity_ne " << v.x << " " << v.y << " heading " << pod.vehicle_attitude_deg().yaw;
     out << " boresight " << pod.boresight_yaw_deg() << " " << pod.boresight_pitch_deg();
     put_point(out, "hot", pod.hot_object_position(), truth);
     put_point(out, "laser", pod.laser_spot(), truth);

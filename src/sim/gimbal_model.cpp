@@ -218,12 +218,10 @@ void GimbalModel::step(double dt_s, EventQueue& events) {
     }
   }
   const bool driven = servo_on_;
-  pose_.yaw_rate_deg_s = driven ? yaw_.advance(dt_s) : 0.0;
-  pose_.pitch_rate_deg_s = driven ? pitch_.advance(dt_s) : 0.0;
-  pose_.roll_rate_deg_s = 0;
-  pose_.joint_yaw_deg = yaw_.angle;
-  pose_.joint_pitch_deg = pitch_.angle;
-  pose_.joint_roll_deg = 0;
+  pose_.rate_deg_s.yaw = driven ? yaw_.advance(dt_s) : 0.0;
+  pose_.rate_deg_s.pitch = driven ? pitch_.advance(dt_s) : 0.0;
+  pose_.rate_deg_s.roll = 0;
+  pose_.joint_deg = {yaw_.angle, pitch_.angle, 0};
 }
 
 }  // namespace k40t::sim

@@ -81,7 +81,7 @@ p::TargetGpsAck target_position(RequestContext& ctx, const p::TargetGpsRequest& 
                                                req.throttle_percent});
   const GeoPoint host{req.latitude_deg, req.longitude_deg, req.relative_height_m, req.altitude_m};
   const auto target =
-      ctx.pod.locate_target(host, VehicleAttitude{req.yaw_deg, req.roll_deg, req.pitch_deg});
+      ctx.pod.locate_target(host, YawPitchRoll{req.yaw_deg, req.pitch_deg, req.roll_deg});
   p::TargetGpsAck ack;
   ack.utc_time_ms = req.utc_time_ms;
   if (!target) {  // no laser return: nothing to locate

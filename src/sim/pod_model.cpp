@@ -37,10 +37,10 @@ PodModel::PodModel(const PodConfig& config)
 }
 
 double PodModel::boresight_yaw_deg() const {
-  return vehicle_.yaw_deg + gimbal_.pose().joint_yaw_deg;
+  return vehicle_deg_.yaw + gimbal_.pose().joint_deg.yaw;
 }
 double PodModel::boresight_pitch_deg() const {
-  return gimbal_.pose().joint_pitch_deg;
+  return gimbal_.pose().joint_deg.pitch;
 }
 
 ThermalStats PodModel::thermal_stats() const {
@@ -69,8 +69,8 @@ Exposure PodModel::exposure() const {
 }
 
 std::optional<GeoPoint> PodModel::locate_target(const GeoPoint& host,
-                                                const VehicleAttitude& attitude) {
-  vehicle_ = attitude;
+                                                const YawPitchRoll& attitude_deg) {
+  vehicle_deg_ = attitude_deg;
   return laser_.locate_target(world_, host, boresight_yaw_deg(), boresight_pitch_deg());
 }
 

@@ -53,15 +53,15 @@ Result<p::Payload> gimbal_status(const PodModel& pod, const p::CodecOptions& cod
 Result<p::Payload> gimbal_attitude(const PodModel& pod, const p::CodecOptions& codec) {
   const GimbalPose pose = pod.gimbal().pose();
   p::GimbalAttitude report;
-  report.joint_yaw_deg = pose.joint_yaw_deg;
-  report.joint_roll_deg = pose.joint_roll_deg;
-  report.joint_pitch_deg = pose.joint_pitch_deg;
+  report.joint_yaw_deg = pose.joint_deg.yaw;
+  report.joint_roll_deg = pose.joint_deg.roll;
+  report.joint_pitch_deg = pose.joint_deg.pitch;
   report.yaw_deg = pod.attitude_yaw_deg();
-  report.roll_deg = pose.joint_roll_deg;
-  report.pitch_deg = pose.joint_pitch_deg;
-  report.yaw_rate_deg_s = pose.yaw_rate_deg_s;
-  report.pitch_rate_deg_s = pose.pitch_rate_deg_s;
-  report.roll_rate_deg_s = pose.roll_rate_deg_s;
+  report.roll_deg = pose.joint_deg.roll;
+  report.pitch_deg = pose.joint_deg.pitch;
+  report.yaw_rate_deg_s = pose.rate_deg_s.yaw;
+  report.pitch_rate_deg_s = pose.rate_deg_s.pitch;
+  report.roll_rate_deg_s = pose.rate_deg_s.roll;
   return encode(report, codec);
 }
 

@@ -172,13 +172,9 @@ void PodServer::ask_for_gps(const GpsRequestEvent& event) {
         if (!ack) return;
         GpsAnswer answer;
         answer.echoed = {ack->hour, ack->minute, ack->second, ack->millisecond};
-        answer.longitude_deg = ack->longitude_deg;
-        answer.latitude_deg = ack->latitude_deg;
-        answer.relative_height_m = ack->relative_height_m;
-        answer.altitude_m = ack->altitude_m;
-        answer.yaw_deg = ack->yaw_deg;
-        answer.roll_deg = ack->roll_deg;
-        answer.pitch_deg = ack->pitch_deg;
+        answer.position = {ack->latitude_deg, ack->longitude_deg, ack->relative_height_m,
+                           ack->altitude_m};
+        answer.attitude_deg = {ack->yaw_deg, ack->pitch_deg, ack->roll_deg};
         std::lock_guard<std::mutex> lock(model_mutex_);
         pod_.camera().attach_gps(photo_id, answer);
         pod_.ground_truth().photo_answered(photo_id, pod_.pod_position(), ack->latitude_deg,
@@ -282,8 +278,8 @@ std::string PodServer::status() {
       << s.parser.frames_good << " good frames, " << s.parser.checksum_errors << " checksum errors";
   with_model([&](PodModel& pod) {
     const GimbalPose pose = pod.gimbal().pose();
-    out << " | t " << pod.now_s() << " s yaw " << pose.joint_yaw_deg << " pitch "
-        << pose.joint_pitch_deg << " zoom " << pod.zoom().zoom() << "x sd "
+    out << " | t " << pod.now_s() << " s yaw " << pose.joint_deg.yaw << " pitch "
+        << pose.joint_deg.pitch << " zoom " << pod.zoom().zoom() << "x sd "
         << to_string(pod.camera().sd().state()) << " camera "
         << (pod.camera_available() ? "up" : "down") << " recording "
         << (pod.camera().recording() ? "yes" : "no") << " palette "

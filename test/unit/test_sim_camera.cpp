@@ -215,12 +215,12 @@ TEST_F(SimCamera, GpsAnswerIsRecordedWithThePhoto) {
   const auto requests = events_of<GpsRequestEvent>(events);
   ASSERT_EQ(requests.size(), 1u);
   GpsAnswer answer;
-  answer.latitude_deg = 47.5;
-  answer.longitude_deg = 8.25;
+  answer.position.latitude_deg = 47.5;
+  answer.position.longitude_deg = 8.25;
   EXPECT_TRUE(camera.attach_gps(requests[0].photo_id, answer));
   EXPECT_FALSE(camera.attach_gps(requests[0].photo_id + 1, answer));
   ASSERT_TRUE(camera.photos()[0].gps);
-  EXPECT_DOUBLE_EQ(camera.photos()[0].gps->latitude_deg, 47.5);
+  EXPECT_DOUBLE_EQ(camera.photos()[0].gps->position.latitude_deg, 47.5);
 }
 
 TEST_F(SimCamera, BacklightAndStrongLightExcludeEachOther) {

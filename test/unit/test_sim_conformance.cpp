@@ -39,9 +39,9 @@ TEST_F(SimConformance, PhotosAskForGpsAndRecordTheAnswer) {
     });
     return taken.has_value();
   }));
-  EXPECT_NEAR(taken->gps->latitude_deg, testing::kHostLatitudeDeg, 1e-7);
-  EXPECT_NEAR(taken->gps->longitude_deg, testing::kHostLongitudeDeg, 1e-7);
-  EXPECT_NEAR(taken->gps->altitude_m, testing::kHostAltitudeM, 0.1);
+  EXPECT_NEAR(taken->gps->position.latitude_deg, testing::kHostLatitudeDeg, 1e-7);
+  EXPECT_NEAR(taken->gps->position.longitude_deg, testing::kHostLongitudeDeg, 1e-7);
+  EXPECT_NEAR(taken->gps->position.altitude_m, testing::kHostAltitudeM, 0.1);
   EXPECT_EQ(taken->path.rfind("survey/IMG_20250304_0506", 0), 0u) << taken->path;
   EXPECT_TRUE(link.all<p::PhotoStatus>().empty());  // no status frame for a single shot
 }

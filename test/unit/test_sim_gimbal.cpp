@@ -26,22 +26,22 @@ TEST_F(SimGimbal, ReachesTheCommandedAngleInTheTimeTheDialSpeedImplies) {
   ASSERT_EQ(gimbal.command_angles(std::nullopt, 45.0), Outcome::kOk);
   // 45 deg at 10 deg/s: 4.5 s. A tenth of a second before, it is one degree short.
   advance(gimbal, 4.4, events);
-  EXPECT_NEAR(gimbal.pose().joint_yaw_deg, 44.0, 1e-6);
-  EXPECT_NEAR(gimbal.pose().yaw_rate_deg_s, 10.0, 1e-6);
+  EXPECT_NEAR(gimbal.pose().joint_deg.yaw, 44.0, 1e-6);
+  EXPECT_NEAR(gimbal.pose().rate_deg_s.yaw, 10.0, 1e-6);
   advance(gimbal, 0.1, events);
-  EXPECT_NEAR(gimbal.pose().joint_yaw_deg, 45.0, 1e-6);
+  EXPECT_NEAR(gimbal.pose().joint_deg.yaw, 45.0, 1e-6);
   advance(gimbal, 0.1, events);
-  EXPECT_DOUBLE_EQ(gimbal.pose().joint_yaw_deg, 45.0);
-  EXPECT_DOUBLE_EQ(gimbal.pose().yaw_rate_deg_s, 0.0);
+  EXPECT_DOUBLE_EQ(gimbal.pose().joint_deg.yaw, 45.0);
+  EXPECT_DOUBLE_EQ(gimbal.pose().rate_deg_s.yaw, 0.0);
 }
 
 TEST_F(SimGimbal, EachAxisUsesItsOwnDialSpeed) {
   ASSERT_EQ(gimbal.set_dial_speed(30, 5), Outcome::kOk);
   ASSERT_EQ(gimbal.command_angles(-60.0, -20.0), Outcome::kOk);
   advance(gimbal, 2.0, events);  // pitch done (2 s), yaw 10 of 20 deg
-  EXPECT_NEAR(gimbal.pose().joint_pitch_deg, -60.0, 1e-6);
-  EXPECT_NEAR(gimbal.pose().joint_yaw_deg, -10.0, 1e-6);
-  EXPECT_NEAR(gimbal.pose().yaw_rate_deg_s, -5.0, 1e-6);
+  EXPECT_NEAR(gimbal.pose().joint_deg.pitch, -60.0, 1e-6);
+  EXPECT_NEAR(gimbal.pose().joint_deg.yaw, -10.0, 1e-6);
+  EXPECT_NEAR(gimbal.pose().rate_deg_s.yaw, -5.0, 1e-6);
 }
 
 TEST_F(SimGimbal, DialSpeedOutsideOneToThirtyIsRefused) {
@@ -63,22 +63,22 @@ TEST_F(SimGimbal, DirectionMovesUntilStoppedAndHolds) {
   ASSERT_EQ(gimbal.set_dial_speed(20, 20), Outcome::kOk);
   ASSERT_EQ(gimbal.move(YawMotion::kRight, PitchMotion::kDown), Outcome::kOk);
   advance(gimbal, 2.0, events);
-  EXPECT_NEAR(gimbal.pose().joint_yaw_deg, 40.0, 1e-6);
-  EXPECT_NEAR(gimbal.pose().joint_pitch_deg, -40.0, 1e-6);
+  EXPECT_NEAR(gimbal.pose().joint_deg.yaw, 40.0, 1e-6);
+  EXPECT_NEAR(gimbal.pose().joint_deg.pitch, -40.0, 1e-6);
   ASSERT_EQ(gimbal.move(YawMotion::kStop, PitchMotion::kStop), Outcome::kOk);
   advance(gimbal, 1.0, events);
-  EXPECT_NEAR(gimbal.pose().joint_yaw_deg, 40.0, 1e-6);
-  EXPECT_NEAR(gimbal.pose().joint_pitch_deg, -40.0, 1e-6);
-  EXPECT_DOUBLE_EQ(gimbal.pose().yaw_rate_deg_s, 0.0);
+  EXPECT_NEAR(gimbal.pose().joint_deg.yaw, 40.0, 1e-6);
+  EXPECT_NEAR(gimbal.pose().joint_deg.pitch, -40.0, 1e-6);
+  EXPECT_DOUBLE_EQ(gimbal.pose().rate_deg_s.yaw, 0.0);
 }
 
 TEST_F(SimGimbal, DirectionMoveStopsAtTheEndStops) {
   ASSERT_EQ(gimbal.set_dial_speed(30, 30), Outcome::kOk);
   ASSERT_EQ(gimbal.move(YawMotion::kLeft, PitchMotion::kUp), Outcome::kOk);
   advance(gimbal, 10.0, events);  // 300 deg of travel asked for
-  EXPECT_DOUBLE_EQ(gimbal.pose().joint_pitch_deg, 30.0);
-  EXPECT_DOUBLE_EQ(gimbal.pose().joint_yaw_deg, -180.0);
-  EXPECT_DOUBLE_EQ(gimbal.pose().pitch_rate_deg_s, 0.0);
+  EXPECT_DOUBLE_EQ(gimbal.pose().joint_deg.pitch, 30.0);
+  EXPECT_DOUBLE_EQ(gimbal.pose().joint_deg.yaw, -180.0);
+  EXPECT_DOUBLE_EQ(gimbal.pose().rate_deg_s.pitch, 0.0);
 }
 
 TEST_F(SimGimbal, CentreAndLookDown) {
@@ -87,11 +87,11 @@ TEST_F(SimGimbal, CentreAndLookDown) {
   advance(gimbal, 4.0, events);
   ASSERT_EQ(gimbal.look_down(), Outcome::kOk);
   advance(gimbal, 4.0, events);  // 110 deg of pitch, 100 of yaw at 30 deg/s
-  EXPECT_DOUBLE_EQ(gimbal.pose().joint_pitch_deg, -90.0);
-  EXPECT_DOUBLE_EQ(gimbal.pose().joint_yaw_deg, 0.0);
+  EXPECT_DOUBLE_EQ(gimbal.pose().joint_deg.pitch, -90.0);
+  EXPECT_DOUBLE_EQ(gimbal.pose().joint_deg.yaw, 0.0);
   ASSERT_EQ(gimbal.centre(), Outcome::kOk);
   advance(gimbal, 3.1, events);
-  EXPECT_DOUBLE_EQ(gimbal.pose().joint_pitch_deg, 0.0);
+  EXPECT_DOUBLE_EQ(gimbal.pose().joint_deg.pitch, 0.0);
 }
 
 TEST_F(SimGimbal, PointAtTurnsTowardThePixelByTheLensFieldOfView) {
@@ -104,7 +104,7 @@ TEST_F(SimGimbal, PointAtTurnsTowardThePixelByTheLensFieldOfView) {
   advance(gimbal, 2.0, events);
 
   // At 10x the same pixel offset is a tenth of the tangent: a smaller turn.
-  const double yaw_before = gimbal.pose().joint_yaw_deg;
+  const double yaw_before = gimbal.pose().joint_deg.yaw;
   ASSERT_EQ(gimbal.point_at(Lens::kTele, 10.0, 960, 1080), Outcome::kOk);
   const double expected_down =
       rad_to_deg(std::atan(std::tan(deg_to_rad(field_of_view(Lens::kTele, 10).vertical_deg / 2))));
@@ -122,9 +122,9 @@ TEST_F(SimGimbal, ServoOffStopsMotionUntilTheNextCommand) {
   ASSERT_EQ(gimbal.command_angles(std::nullopt, 90.0), Outcome::kOk);
   advance(gimbal, 1.0, events);
   ASSERT_EQ(gimbal.servo_off(), Outcome::kOk);
-  const double where = gimbal.pose().joint_yaw_deg;
+  const double where = gimbal.pose().joint_deg.yaw;
   advance(gimbal, 1.0, events);
-  EXPECT_DOUBLE_EQ(gimbal.pose().joint_yaw_deg, where);
+  EXPECT_DOUBLE_EQ(gimbal.pose().joint_deg.yaw, where);
   EXPECT_FALSE(gimbal.servo_on());
   EXPECT_EQ(gimbal.stabilisation_state(), StabilisationState::kOff);
   ASSERT_EQ(gimbal.centre(), Outcome::kOk);
@@ -170,7 +170,7 @@ TEST_F(SimGimbal, SoftRestartGoesLimpThenReturnsToCentre) {
   EXPECT_EQ(gimbal.move(YawMotion::kLeft, PitchMotion::kStop), Outcome::kBusy);
   advance(gimbal, gimbal.config().restart_s + 1.5, events);
   EXPECT_FALSE(gimbal.restarting());
-  EXPECT_DOUBLE_EQ(gimbal.pose().joint_yaw_deg, 0.0);
+  EXPECT_DOUBLE_EQ(gimbal.pose().joint_deg.yaw, 0.0);
 }
 
 TEST_F(SimGimbal, TrackingHoldsTheBoxAndRefusesManualMotion) {

@@ -28,12 +28,11 @@ TEST(SimPod, ThermalAndLaserFollowTheGimbal) {
 
 TEST(SimPod, VehicleHeadingTurnsTheWorldAndTheReportedAttitude) {
   PodModel pod;
-  ASSERT_TRUE(pod.locate_target(GeoPoint{47, 8, 30, 500}, VehicleAttitude{90, 0, 0}) ==
-              std::nullopt);
+  ASSERT_TRUE(pod.locate_target(GeoPoint{47, 8, 30, 500}, YawPitchRoll{90, 0, 0}) == std::nullopt);
   EXPECT_DOUBLE_EQ(pod.attitude_yaw_deg(), 90);
   ASSERT_EQ(pod.gimbal().command_angles(-45.0, std::nullopt), Outcome::kOk);
   run(pod, 3.0);
-  const auto target = pod.locate_target(GeoPoint{47, 8, 30, 500}, VehicleAttitude{90, 0, 0});
+  const auto target = pod.locate_target(GeoPoint{47, 8, 30, 500}, YawPitchRoll{90, 0, 0});
   ASSERT_TRUE(target);
   EXPECT_GT(target->longitude_deg, 8.0);  // looking east, 30 m out
   // On the ground, which 30 m out is d^2 / 2R = 0.07 mm below the pod's tangent plane.

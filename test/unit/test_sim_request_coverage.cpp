@@ -72,8 +72,8 @@ TEST(SimRequestCoverage, RandomPayloadsAlwaysGetAnAckAndNeverBreakTheModel) {
   }
   // Whatever happened, the pod still reports sensible numbers.
   const GimbalPose pose = h.pod.gimbal().pose();
-  EXPECT_GE(pose.joint_pitch_deg, -90);
-  EXPECT_LE(pose.joint_pitch_deg, 30);
+  EXPECT_GE(pose.joint_deg.pitch, -90);
+  EXPECT_LE(pose.joint_deg.pitch, 30);
   EXPECT_GE(h.pod.zoom().zoom(), 1);
   EXPECT_LE(h.pod.zoom().zoom(), 160);
   EXPECT_LE(h.pod.camera().sd().used_mb(), h.pod.camera().sd().capacity_mb());

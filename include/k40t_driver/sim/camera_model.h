@@ -22,6 +22,8 @@
 
 #include "k40t_driver/sim/camera_settings.h"
 #include "k40t_driver/sim/events.h"
+#include "k40t_driver/sim/geo_point.h"
+#include "k40t_driver/sim/geometry.h"
 #include "k40t_driver/sim/model_part.h"
 #include "k40t_driver/sim/outcome.h"
 #include "k40t_driver/sim/pod_clock.h"
@@ -44,13 +46,8 @@ struct CameraConfig {
 // The host's answer to 0x000310 (the ACK the flight controller sends).
 struct GpsAnswer {
   TimeOfDay echoed;
-  double longitude_deg = 0;
-  double latitude_deg = 0;
-  double relative_height_m = 0;
-  double altitude_m = 0;
-  double yaw_deg = 0;
-  double roll_deg = 0;
-  double pitch_deg = 0;
+  GeoPoint position;
+  YawPitchRoll attitude_deg;
 };
 
 struct PhotoRecord {

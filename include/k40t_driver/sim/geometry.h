@@ -57,6 +57,14 @@ struct CameraBasis {
 };
 CameraBasis camera_basis(double yaw_deg, double pitch_deg);
 
+// Three axes in the convention above, for angles and rates alike: the unit lives in the name of
+// the member that holds one (joint_deg, rate_deg_s, attitude_deg).
+struct YawPitchRoll {
+  double yaw = 0;
+  double pitch = 0;
+  double roll = 0;
+};
+
 // Yaw and pitch of a direction vector, in degrees (the inverse of direction()).
 double yaw_of(const Vec3& v);
 double pitch_of(const Vec3& v);

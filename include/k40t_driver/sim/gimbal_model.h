@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "k40t_driver/sim/events.h"
+#include "k40t_driver/sim/geometry.h"
 #include "k40t_driver/sim/lens.h"
 #include "k40t_driver/sim/outcome.h"
 
@@ -39,12 +40,8 @@ struct GimbalConfig {
 // What 0x000002 reports. Joint angles are relative to the pod's base; the vehicle is level, so
 // attitude pitch/roll equal the joints' and attitude yaw adds the vehicle heading.
 struct GimbalPose {
-  double joint_yaw_deg = 0;
-  double joint_pitch_deg = 0;
-  double joint_roll_deg = 0;
-  double yaw_rate_deg_s = 0;
-  double pitch_rate_deg_s = 0;
-  double roll_rate_deg_s = 0;
+  YawPitchRoll joint_deg;
+  YawPitchRoll rate_deg_s;
 };
 
 class GimbalModel {

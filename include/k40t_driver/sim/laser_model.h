@@ -9,20 +9,13 @@
 
 #include <optional>
 
+#include "k40t_driver/sim/geo_point.h"
 #include "k40t_driver/sim/world.h"
 
 namespace k40t::sim {
 
 struct LaserConfig {
   double max_range_m = 3000;
-};
-
-// A WGS-84 position; heights in metres.
-struct GeoPoint {
-  double latitude_deg = 0;
-  double longitude_deg = 0;
-  double relative_height_m = 0;  // above the take-off point
-  double altitude_m = 0;         // above mean sea level (EGM96 geoid)
 };
 
 class LaserModel {

@@ -66,12 +66,6 @@ struct AiSettings {  // 0x000319 / 0x000324
   TrackingBox box;
 };
 
-struct VehicleAttitude {  // from the host's 0x000320; only the heading turns the world
-  double yaw_deg = 0;
-  double roll_deg = 0;
-  double pitch_deg = 0;
-};
-
 // Self-test bits of 0x000001 byte 3.
 enum SelfTestBit : uint8_t {
   kSelfTestInfrared = 1 << 0,
@@ -137,9 +131,10 @@ class PodModel {
   void set_unix_epoch_s(double seconds) { unix_epoch_s_ = seconds; }
   double unix_time_s() const { return unix_epoch_s_ + now_s_; }
 
-  // 0x000320: the host's fix and attitude in, the laser target's position out.
-  std::optional<GeoPoint> locate_target(const GeoPoint& host, const VehicleAttitude& attitude);
-  const VehicleAttitude& vehicle_attitude() const { return vehicle_; }
+  // 0x000320: the host's fix and attitude (degrees) in, the laser target's position out. Only
+  // the vehicle's heading turns the world.
+  std::optional<GeoPoint> locate_target(const GeoPoint& host, const YawPitchRoll& attitude_deg);
+  const YawPitchRoll& vehicle_attitude_deg() const { return vehicle_deg_; }
 
   const Versions& versions() const { return config_.versions; }
   K40T_MODEL_PART(NetworkSettings, network)
@@ -174,7 +169,7 @@ class PodModel {
   NetworkSettings network_;
   SbusSettings sbus_;
   AiSettings ai_;
-  VehicleAttitude vehicle_;
+  YawPitchRoll vehicle_deg_;
   GroundTruth truth_;
   double unix_epoch_s_ = 0;
   uint8_t self_test_ = kSelfTestAllGood;

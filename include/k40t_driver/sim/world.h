@@ -14,18 +14,12 @@
 
 namespace k40t::sim {
 
-struct HotObject {
-  double north_m = 80;
-  double east_m = 20;
-  double radius_m = 2;
-  double temperature_degC = 85;  // where the surface faces the viewer
-};
-
-struct ColdObject {
-  double north_m = 60;
-  double east_m = -30;
-  double radius_m = 8;
-  double temperature_degC = 2;  // at the centre; the rim blends into the ground
+// A round object on the ground, metres north and east of the take-off point.
+struct GroundObject {
+  double north_m = 0;
+  double east_m = 0;
+  double radius_m = 0;
+  double temperature_degC = 0;
 };
 
 struct WorldConfig {
@@ -34,8 +28,8 @@ struct WorldConfig {
   double ground_texture_degC = 2.5;  // amplitude of the ground's temperature pattern
   double sky_zenith_degC = -35;
   double sky_horizon_degC = -10;
-  HotObject hot;
-  ColdObject cold;
+  GroundObject hot{80, 20, 2, 85};   // a sphere; its temperature where it faces the viewer
+  GroundObject cold{60, -30, 8, 2};  // a disc; its temperature at the centre, the rim blends in
 };
 
 enum class Surface { kSky, kGround, kHotObject, kColdObject };
