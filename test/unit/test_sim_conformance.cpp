@@ -56,10 +56,11 @@ TEST_F(SimConformance, BurstRecordingAndModeRules) {
   }));
   p::TakePhotoRequest photo;
   photo.lens = p::PhotoLensMode::kInfrared;
+  const SimLink::Mark before_burst = link.mark();
   EXPECT_EQ(link.send(photo), ResponseCode::kOk);
   EXPECT_EQ(link.send(photo), ResponseCode::kPhotoInProgress);
   ASSERT_TRUE(link.wait_report<p::PhotoStatus>(
-      [](const p::PhotoStatus& s) { return s.state == p::PhotoState::kDone; }));
+      before_burst, [](const p::PhotoStatus& s) { return s.state == p::PhotoState::kDone; }));
   const auto statuses = link.all<p::PhotoStatus>();
   ASSERT_EQ(statuses.size(), 4u);
   EXPECT_EQ(statuses[0].state, p::PhotoState::kBurst);
@@ -73,14 +74,16 @@ TEST_F(SimConformance, BurstRecordingAndModeRules) {
   EXPECT_EQ(link.send(record), ResponseCode::kFailure);  // photo mode
   EXPECT_EQ(link.send(request_with(&p::CaptureModeRequest::mode, p::CaptureMode::kVideo)),
             ResponseCode::kOk);
+  const SimLink::Mark before_record = link.mark();
   EXPECT_EQ(link.send(record), ResponseCode::kOk);
   EXPECT_EQ(link.send(photo), ResponseCode::kRecording);
   EXPECT_TRUE(link.wait_report<p::RecordStatus>(
-      [](const p::RecordStatus& r) { return r.recording_time_s == 2; }));
+      before_record, [](const p::RecordStatus& r) { return r.recording_time_s == 2; }));
   record.action = p::RecordAction::kStop;
+  const SimLink::Mark before_stop = link.mark();
   EXPECT_EQ(link.send(record), ResponseCode::kOk);
   EXPECT_TRUE(link.wait_report<p::RecordStatus>(
-      [](const p::RecordStatus& r) { return r.state == p::RecordState::kStopped; }));
+      before_stop, [](const p::RecordStatus& r) { return r.state == p::RecordState::kStopped; }));
   EXPECT_TRUE(link.wait_report<p::CameraSystemStatus>(
       [](const p::CameraSystemStatus& s) { return s.capture_mode == p::CaptureMode::kVideo; }));
   link.server().with_model([](PodModel& pod) {
@@ -131,21 +134,28 @@ TEST_F(SimConformance, StreamNetworkAiAndSystemRequests) {
   reshoot.lens = p::PhotoLensMode::kVisible;
   reshoot.zoom_x = 2;
   reshoot.focal_length_raw = 940;
+  const SimLink::Mark before_reshoot = link.mark();
   EXPECT_EQ(link.send(reshoot), ResponseCode::kOk);
   EXPECT_TRUE(link.wait_report<p::PreciseReshootStatus>(
+      before_reshoot,
       [](const p::PreciseReshootStatus& s) { return s.state == p::ReshootState::kDone; }));
   EXPECT_TRUE(link.wait_report<p::VisibleStatus>(
       [](const p::VisibleStatus& v) { return near(v.precise_shot_focal_length_mm, 9.40, 0.001); }));
 }
 
 TEST_F(SimConformance, SdCardFormatAndUpgrade) {
+  // Each state is reported once, possibly before send() returns: wait from before the request.
+  const SimLink::Mark before_format = link.mark();
   EXPECT_EQ(link.send(p::FormatSdRequest{}), ResponseCode::kOk);
   EXPECT_EQ(link.send(p::FormatSdRequest{}), ResponseCode::kBusy);
-  EXPECT_TRUE(link.wait_report<p::SdFormatStatus>(
-      [](const p::SdFormatStatus& s) { return s.state == p::SdFormatState::kDone; }));
+  EXPECT_TRUE(link.wait_report<p::SdFormatStatus>(before_format, [](const p::SdFormatStatus& s) {
+    return s.state == p::SdFormatState::kDone;
+  }));
   EXPECT_GE(link.all<p::SdFormatStatus>().size(), 5u);  // 2 s at 5 Hz
+  const SimLink::Mark before_upgrade = link.mark();
   EXPECT_EQ(link.send(p::TfCardUpgradeRequest{}), ResponseCode::kOk);
   EXPECT_TRUE(link.wait_report<p::TfCardUpgradeStatus>(
+      before_upgrade,
       [](const p::TfCardUpgradeStatus& s) { return s.state == p::TfUpgradeState::kUpgrading; }));
   EXPECT_TRUE(link.wait_report<p::GimbalStatus>([](const p::GimbalStatus& s) {
     return s.upgrade == p::GimbalUpgradeState::kFirmwareUpgradeIncomplete;
@@ -175,10 +185,13 @@ TEST(SimConformanceOptions, NoSdCardRefusesPhotos) {
 TEST_F(SimConformance, ShutdownAndFactoryReset) {
   EXPECT_EQ(link.send(request_with(&p::CaptureModeRequest::mode, p::CaptureMode::kVideo)),
             ResponseCode::kOk);
-  EXPECT_EQ(link.send(p::FactoryResetRequest{}), ResponseCode::kOk);
   // The camera restarts: its link drops in 0x000001, then it comes back with factory settings.
-  EXPECT_TRUE(link.wait_report<p::GimbalStatus>(
-      [](const p::GimbalStatus& s) { return s.camera_link == p::GimbalLinkState::kAbnormal; }));
+  // The drop lasts camera_boot_s only: look for it from before the request.
+  const SimLink::Mark before_reset = link.mark();
+  EXPECT_EQ(link.send(p::FactoryResetRequest{}), ResponseCode::kOk);
+  EXPECT_TRUE(link.wait_report<p::GimbalStatus>(before_reset, [](const p::GimbalStatus& s) {
+    return s.camera_link == p::GimbalLinkState::kAbnormal;
+  }));
   EXPECT_TRUE(link.wait_report<p::CameraSystemStatus>(
       [](const p::CameraSystemStatus& s) { return s.capture_mode == p::CaptureMode::kPhoto; }));
 
