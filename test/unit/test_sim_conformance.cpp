@@ -269,10 +269,9 @@ TEST_F(SimConformance, SbusConfigurationIsStoredAndReadBack) {
 // ---- what every request shares --------------------------------------------------------------
 
 TEST(SimConformanceOptions, UnknownIdsAreIgnored) {
-  session::SessionOptions client;
-  client.ack_timeout = 200ms;
-  client.retries = 0;
-  SimLink link(quick_pod(), client);
+  // The client's usual patience (three 300 ms attempts): a single short attempt would save time
+  // on the unknown id but could miss the known id's ACK on a loaded machine.
+  SimLink link(quick_pod());
   EXPECT_EQ(link.send_raw(0x0003F0, {0x01, 0x00}), ResponseCode::kTimeout);
   EXPECT_EQ(link.send_raw(0x000017, {50, 50, 0}), ResponseCode::kOk);  // still talking
 }

@@ -82,11 +82,13 @@ TEST(SimFaultCounters, DroppedAcksShowAsRetriesThenATimeout) {
 }
 
 TEST(SimFaultCounters, DelayedAcksShowAsRetriesAndLateAcks) {
-  SimLink link({}, impatient_client(3));
+  // Retries enough for the first ACK (250 ms plus whatever a loaded machine adds) to come back
+  // while one of them is outstanding.
+  SimLink link({}, impatient_client(10));
   set_fault(link, &FaultSettings::delay_ack_ms, 250);
   const session::SessionStats before = link.client().stats();
-  // The first attempt's ACK arrives while the second is outstanding: the request succeeds late,
-  // and the ACK of the retry arrives with nothing waiting for it.
+  // The first attempt's ACK arrives while a retry is outstanding: the request succeeds late, and
+  // the ACK of the retry arrives with nothing waiting for it.
   EXPECT_EQ(link.send(p::CameraVersionRequest{}), p::ResponseCode::kOk);
   EXPECT_TRUE(
       SimLink::wait_for([&] { return link.client().stats().late_acks > before.late_acks; }));
