@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "eventually.h"
 #include "k40t_driver/protocol/messages/flight_controller.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/session/session.h"
@@ -27,6 +28,10 @@
 namespace k40t::sim::testing {
 
 using namespace std::chrono_literals;
+
+// Waits give up after the tests' generous deadline: only a broken pod reaches it, and simulated
+// time follows the wall clock while the threads that send and count frames may wait for a CPU.
+constexpr std::chrono::milliseconds kWaitDeadline = test::kEventuallyDeadline;
 
 // A pty path no other test (or test run) uses.
 inline std::string unique_pty_path() {
@@ -59,7 +64,7 @@ class SimLink {
                                  [this](const protocol::FrameView& f) { return answer_gps(f); });
     const Status opened = client_->start();
     EXPECT_TRUE(opened) << opened.message();
-    EXPECT_TRUE(wait_for([&] { return count(protocol::GimbalAttitude::kId) > 0; }, 5s))
+    EXPECT_TRUE(wait_for([&] { return count(protocol::GimbalAttitude::kId) > 0; }))
         << "no attitude report from the simulator on " << path_;
   }
 
@@ -117,11 +122,32 @@ class SimLink {
     return messages.back();
   }
 
-  // Waits until a report `Msg` received from now on satisfies `condition`; returns it.
+  // How many frames of each id have been received so far: take one before a request whose answer
+  // is a one-shot report, and wait for the report received since. The report can overtake the
+  // ACK's return to the caller (a loaded machine), so counting from after the request misses it.
+  using Mark = std::map<protocol::MessageId, size_t>;
+  Mark mark() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    Mark counts;
+    for (const auto& [id, frames] : frames_) counts[id] = frames.size();
+    return counts;
+  }
+
+  // Waits until a report `Msg` received from now on satisfies `condition`; returns it. Only for
+  // reports that repeat (periodic ones); one-shot reports use the overload with a Mark.
   template <class Msg>
   std::optional<Msg> wait_report(const std::function<bool(const Msg&)>& condition,
-                                 std::chrono::milliseconds timeout = 5s) {
-    const size_t seen = count(Msg::kId);
+                                 std::chrono::milliseconds timeout = kWaitDeadline) {
+    return wait_report<Msg>(mark(), condition, timeout);
+  }
+
+  // Waits until a report `Msg` received since `since` satisfies `condition`; returns it.
+  template <class Msg>
+  std::optional<Msg> wait_report(const Mark& since,
+                                 const std::function<bool(const Msg&)>& condition,
+                                 std::chrono::milliseconds timeout = kWaitDeadline) {
+    const auto it = since.find(Msg::kId);
+    const size_t seen = it == since.end() ? 0 : it->second;
     std::optional<Msg> found;
     wait_for(
         [&] {
@@ -139,7 +165,7 @@ class SimLink {
   }
 
   static bool wait_for(const std::function<bool()>& condition,
-                       std::chrono::milliseconds timeout = 5s) {
+                       std::chrono::milliseconds timeout = kWaitDeadline) {
     const auto deadline = std::chrono::steady_clock::now() + timeout;
     while (std::chrono::steady_clock::now() < deadline) {
       if (condition()) return true;

@@ -97,20 +97,24 @@ TEST_F(SimConformance, GimbalServoStabilisationVersionAndRestart) {
   EXPECT_EQ(version.software_patch, 1);
   EXPECT_EQ(link.send(p::GimbalUseFlightControllerAttitudeRequest{}), ResponseCode::kOk);
 
+  const SimLink::Mark before_restart = link.mark();  // the restart may end before send() returns
   EXPECT_EQ(link.send(p::GimbalRestartRequest{}), ResponseCode::kOk);
-  EXPECT_TRUE(link.wait_report<p::GimbalStatus>(
-      [](const p::GimbalStatus& s) { return s.gimbal_link == p::GimbalLinkState::kAbnormal; }));
+  EXPECT_TRUE(link.wait_report<p::GimbalStatus>(before_restart, [](const p::GimbalStatus& s) {
+    return s.gimbal_link == p::GimbalLinkState::kAbnormal;
+  }));
   EXPECT_TRUE(link.wait_report<p::GimbalStatus>(
       [](const p::GimbalStatus& s) { return s.gimbal_link == p::GimbalLinkState::kNormal; }));
 }
 
 TEST_F(SimConformance, GimbalCalibrationsReportProgress) {
+  const SimLink::Mark before_calibration = link.mark();  // its end is reported once
   EXPECT_EQ(link.send(p::GimbalDriftCalibrationRequest{}), ResponseCode::kOk);
   EXPECT_EQ(link.send(p::GimbalLinearCalibrationRequest{}), ResponseCode::kBusy);
   EXPECT_EQ(link.send(angles(0, 10)), ResponseCode::kBusy);
-  ASSERT_TRUE(link.wait_report<p::CameraUpgradeStatus>([](const p::CameraUpgradeStatus& s) {
-    return s.state == p::CameraUpgradeState::kSucceeded;
-  }));
+  ASSERT_TRUE(link.wait_report<p::CameraUpgradeStatus>(
+      before_calibration, [](const p::CameraUpgradeStatus& s) {
+        return s.state == p::CameraUpgradeState::kSucceeded;
+      }));
   const auto progress = link.all<p::CameraUpgradeStatus>();
   ASSERT_GE(progress.size(), 2u);
   EXPECT_EQ(progress.front().state, p::CameraUpgradeState::kRepairing);

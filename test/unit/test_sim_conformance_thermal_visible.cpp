@@ -90,12 +90,15 @@ TEST_F(SimConformance, ThermalMeasurementSwitchStartsAndStopsTheReport) {
   ASSERT_TRUE(link.wait_for([&] { return link.count(p::ThermalStatus::kId) > 0; }));
   EXPECT_EQ(link.send(request_with(&p::ThermalMeasurementRequest::measurement_on, false)),
             ResponseCode::kOk);
-  std::this_thread::sleep_for(300ms);  // frames already on their way
+  // Other reports go on meanwhile; thermal ones do not. Frames arrive in the order they are sent,
+  // so once a second of 5 Hz visible reports has come after the ACK, any thermal report that was
+  // already on its way has arrived too (however late the client gets to read them).
+  const auto visible_reports_after = [&](size_t from) {
+    return link.wait_for([&] { return link.count(p::VisibleStatus::kId) >= from + 5; });
+  };
+  ASSERT_TRUE(visible_reports_after(link.count(p::VisibleStatus::kId)));
   const size_t after_off = link.count(p::ThermalStatus::kId);
-  // Other reports go on meanwhile; thermal ones do not.
-  const size_t visible_before = link.count(p::VisibleStatus::kId);
-  ASSERT_TRUE(
-      link.wait_for([&] { return link.count(p::VisibleStatus::kId) >= visible_before + 5; }));
+  ASSERT_TRUE(visible_reports_after(link.count(p::VisibleStatus::kId)));
   EXPECT_EQ(link.count(p::ThermalStatus::kId), after_off);
   EXPECT_EQ(link.send(request_with(&p::ThermalMeasurementRequest::measurement_on, true)),
             ResponseCode::kOk);
