@@ -25,9 +25,10 @@ void expect_phases(Step (*step_of)(const Status&), State Status::*field,
   }
 }
 
-// Feeds the operation a status frame with `field` set to each state in turn; the phase after each.
-template <class Op, class Status, class State>
-std::vector<Phase> phases_after(Result<Op>& op, State Status::*field,
+// Feeds the operation a `Status` frame with `field` (which may be a member of a base the frame
+// shares with others) set to each state in turn; the phase after each.
+template <class Status, class Op, class Owner, class State>
+std::vector<Phase> phases_after(Result<Op>& op, State Owner::*field,
                                 std::initializer_list<State> states) {
   std::vector<Phase> phases;
   for (State state : states) {
@@ -97,8 +98,8 @@ TEST(ZoomTo, ValidatesTheRatioAndEndsOnDone) {
   zoom->on_visible(visible);
   EXPECT_EQ(zoom->ratio_x().value(), 4.2);
   zoom->tracker().acknowledged(true, "ok");
-  EXPECT_EQ(phases_after(zoom, &p::ZoomStatus::progress,
-                         {p::ZoomProgress::kZooming, p::ZoomProgress::kDone}),
+  EXPECT_EQ(phases_after<p::ZoomStatus>(zoom, &p::ZoomStatus::progress,
+                                        {p::ZoomProgress::kZooming, p::ZoomProgress::kDone}),
             (std::vector{Phase::kRunning, Phase::kSucceeded}));
 }
 
@@ -156,8 +157,9 @@ TEST(PreciseReshoot, EndsOnTakenOrAFailureState) {
   Result<PreciseReshoot> shot = PreciseReshoot::create(goal, visible, 0);
   ASSERT_TRUE(shot);
   shot->tracker().acknowledged(true, "ok");
-  EXPECT_EQ(phases_after(shot, &p::PreciseReshootStatus::state,
-                         {p::ReshootState::kReshooting, p::ReshootState::kSdFull}),
+  EXPECT_EQ(phases_after<p::PreciseReshootStatus>(
+                shot, &p::PreciseReshootStatus::state,
+                {p::ReshootState::kReshooting, p::ReshootState::kSdFull}),
             (std::vector{Phase::kRunning, Phase::kFailed}));
 }
 
