@@ -97,11 +97,15 @@ class Fields : public Entry {
  public:
   Fields(Entry entry, Members... members) : Entry(std::move(entry)), members_(members...) {}
 
-  template <class Report, class... V>
-  Entry&& reads(V Report::*... fields) && {
+  // The report is the fields' class, or `Report` when named (reads<Camera>(...)): a field may
+  // be a member of a base the report shares with a request (PhotoSettings).
+  template <class Report = void, class... Owners, class... V>
+  Entry&& reads(V Owners::*... fields) && {
     static_assert(sizeof...(V) == sizeof...(Members), "one report field per parameter");
-    return std::move(*this).template reads_with<Report>(
-        [members = members_, fields...](Config& c, const Report& r) {
+    using From = std::conditional_t<std::is_void_v<Report>,
+                                    std::tuple_element_t<0, std::tuple<Owners...>>, Report>;
+    return std::move(*this).template reads_with<From>(
+        [members = members_, fields...](Config& c, const From& r) {
           std::apply(
               [&](auto... member) {
                 ((c.*member = static_cast<std::decay_t<decltype(c.*member)>>(r.*fields)), ...);

@@ -35,7 +35,7 @@ std::vector<SettingBinding> general_and_gimbal() {
           "photo_mode", from(&p::PhotoSettingsRequest::photo_mode, &C::photo_mode),
           from(&p::PhotoSettingsRequest::time_lapse_interval_s, &C::timelapse_interval),
           from(&p::PhotoSettingsRequest::burst_count, &C::burst_count))
-          .reads(&Camera::photo_mode, &Camera::time_lapse_interval_s, &Camera::burst_count)
+          .reads<Camera>(&Camera::photo_mode, &Camera::time_lapse_interval_s, &Camera::burst_count)
           .service("set_photo_mode"),
       one_field<p::GimbalStabilisationRequest>(
           "stabilisation", &p::GimbalStabilisationRequest::enable, &C::stabilisation)
