@@ -81,7 +81,8 @@ template <class T>
   if (out == nullptr) return;  // w has failed: encode_payload reports the overflow
   codec::UncheckedWriter cursor(out);
   with_byte_order<T>(o, [&](auto order) {
-    T::layout(m, codec::BasicLayoutWriter<decltype(order)::value, codec::UncheckedWriter>(cursor));
+    T::layout(m,
+              codec::BasicLayoutWriter<decltype(order)::value, codec::UncheckedWriter>(cursor, &o));
   });
 }
 
@@ -96,9 +97,9 @@ template <class T>
       const size_t start = r.position();
       codec::UncheckedReader cursor(r.claim(full), full, start);
       T::layout(m, codec::BasicLayoutReader<kOrder, codec::UncheckedReader>(cursor, T::kMinSize,
-                                                                            &failure));
+                                                                            &failure, &o));
     } else {
-      T::layout(m, codec::BasicLayoutReader<kOrder>(r, T::kMinSize, &failure));
+      T::layout(m, codec::BasicLayoutReader<kOrder>(r, T::kMinSize, &failure, &o));
     }
   });
   if constexpr (HasFinishDecode<T>::value) {

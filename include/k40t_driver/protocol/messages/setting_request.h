@@ -37,9 +37,7 @@ struct ReadAllSettingsRequest {
   static constexpr uint8_t kReadAllSettings = 0x01;
   using Ack = AckT;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S&, V&& v) {
+  K40T_LAYOUT(s, v) {
     v("command", wire::gap, wire::fixed(kReadAllSettings, "read all settings"));
     v("reserved", wire::gap, wire::reserved(1));
   }
@@ -65,11 +63,9 @@ struct ByteSettingRequest {
   static constexpr uint8_t kValueMask = 0xFF;
   using Ack = PlainAck;
 
-  K40T_MESSAGE_LAYOUT()
   // The one value byte's wire format, from the constants the request declares.
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    using Self = std::conditional_t<std::is_const_v<S>, const Derived, Derived>;
+  K40T_LAYOUT(s, v) {
+    using Self = std::conditional_t<std::is_const_v<S_>, const Derived, Derived>;
     auto& value = static_cast<Self&>(s).*Derived::kValue;
     using T = std::decay_t<decltype(value)>;
     if constexpr (Prefix == SettingPrefix::kStartSetting) {

@@ -117,18 +117,12 @@ struct ThermalEnhancementRequest
 
 // ---- 0x00010F, section 3.2.2.10: spot measurement cursor, uint16 x 0..1920, y 0..1088 -------
 struct ThermalSpotRequest {
-  K40T_POD_MESSAGE(0x00010F, "thermal_set_spot", "3.2.2.10");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 5;
-  static constexpr size_t kMinSize = 4;
-  using Ack = PlainAck;
+  K40T_POD_REQUEST(0x00010F, "thermal_set_spot", "3.2.2.10", 5, 4);
 
   uint16_t x_px = 0;
   uint16_t y_px = 0;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     v("x_px", s.x_px, wire::u16.range(0, kThermalPictureWidth));
     v("y_px", s.y_px, wire::u16.range(0, kThermalPictureHeight));
     v("reserved", wire::gap, wire::reserved(1));
@@ -139,20 +133,14 @@ struct ThermalSpotRequest {
 // The rectangle must lie inside the measurable area x 320..1279, y 32..1023 (the note of
 // 3.2.2.11, read as: centre +- half the size stays inside).
 struct ThermalAreaRequest {
-  K40T_POD_MESSAGE(0x000110, "thermal_set_area", "3.2.2.11");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 9;
-  static constexpr size_t kMinSize = 8;
-  using Ack = PlainAck;
+  K40T_POD_REQUEST(0x000110, "thermal_set_area", "3.2.2.11", 9, 8);
 
   uint16_t width_px = 0;
   uint16_t height_px = 0;
   uint16_t center_x_px = 0;
   uint16_t center_y_px = 0;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     v("width_px", s.width_px, wire::u16.range(1, kThermalMeasurableXMax - kThermalMeasurableXMin));
     v("height_px", s.height_px,
       wire::u16.range(1, kThermalMeasurableYMax - kThermalMeasurableYMin));
@@ -178,12 +166,8 @@ struct ThermalGainModeRequest
 // ---- 0x000124, section 3.2.2.13: int16 x0.1 degC high, low, difference; 2 reserved ---------
 // High/low -100.0..500.0 degC, difference 0.1..600.0 degC; -2732 on the wire switches one off.
 struct ThermalAlarmsRequest {
-  K40T_POD_MESSAGE(0x000124, "thermal_set_alarms", "3.2.2.13");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 8;
   // docs/protocol/decisions.md#a9: the table says 7 bytes, the text 8.
-  static constexpr size_t kMinSize = 7;
-  using Ack = PlainAck;
+  K40T_POD_REQUEST(0x000124, "thermal_set_alarms", "3.2.2.13", 8, 7);
 
   bool high_alarm_on = false;
   double high_alarm_degC = 0;
@@ -192,9 +176,7 @@ struct ThermalAlarmsRequest {
   bool difference_alarm_on = false;
   double difference_alarm_degC = 0;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     thermal_alarm_limits(s, v);
     v("reserved", wire::gap, wire::reserved(2));
   }
@@ -213,19 +195,13 @@ struct ThermalOverlayRequest : ByteSettingRequest<ThermalOverlayRequest, Setting
 
 // ---- 0x000126, section 3.2.2.15: switch, int16 reference -30..50 degC, int16 float 0..80 degC
 struct ThermalThresholdAlarmRequest {
-  K40T_POD_MESSAGE(0x000126, "thermal_set_threshold_alarm", "3.2.2.15");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 6;
-  static constexpr size_t kMinSize = 5;
-  using Ack = PlainAck;
+  K40T_POD_REQUEST(0x000126, "thermal_set_threshold_alarm", "3.2.2.15", 6, 5);
 
   bool threshold_alarm_on = false;
   double threshold_reference_degC = 0;
   double threshold_float_degC = 0;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     thermal_threshold_alarm(s, v, wire::flag(1, 0));
     v("reserved", wire::gap, wire::reserved(1));
   }
@@ -235,10 +211,7 @@ struct ThermalThresholdAlarmRequest {
 // Response code, then 21 bytes; multi-byte fields in the ACK byte order
 // (docs/protocol/decisions.md#a2). A refusal may carry the response code only.
 struct ThermalSettingsAck {
-  K40T_POD_MESSAGE(0x010100, "thermal_read_settings_ack", "3.2.2.1");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 23;
-  static constexpr size_t kMinSize = 2;
+  K40T_POD_REPORT(0x010100, "thermal_read_settings_ack", "3.2.2.1", 23, 2);
   static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
   static constexpr size_t kSettingsMinSize = 19;  // after the code; the 2 reserved are optional
 
@@ -266,9 +239,7 @@ struct ThermalSettingsAck {
   double threshold_reference_degC = 0;
   double threshold_float_degC = 0;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     constexpr auto level = wire::u8.range(0, kThermalLevelMax);
     v("code", s.code, wire::response_code);
     v("palette", s.palette, wire::u8);

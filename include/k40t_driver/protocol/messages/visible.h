@@ -102,10 +102,8 @@ constexpr uint8_t kVisibleOffCode = 0x02;
 
 // ---- 0x000005, section 3.2.1.3, 5 Hz ---------------------------------------------------------
 struct VisibleStatus {
-  K40T_POD_MESSAGE(0x000005, "visible_status", "3.2.1.3");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 15;
-  static constexpr size_t kMinSize = 14;  // the reserved last byte is optional on receive
+  // kMinSize: the reserved last byte is optional on receive
+  K40T_POD_REPORT(0x000005, "visible_status", "3.2.1.3", 15, 14);
 
   bool zooming = false;        // 0x00 zoom done, 0x01 zooming
   double focal_length_mm = 0;  // uint16 x0.01 mm
@@ -117,9 +115,7 @@ struct VisibleStatus {
   bool focusing = false;                    // 0x00 focus done, 0x01 focusing
   double precise_shot_focal_length_mm = 0;  // uint16, unit not given: read as 0.01 mm
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     constexpr auto centi_mm = wire::scaled<uint16_t>(100).range(0.0, 655.35, "mm");
     // A report is what the pod says: flags are "non-zero", AE lock is "0x01".
     v("zooming", s.zooming, wire::u8);
@@ -139,10 +135,7 @@ struct VisibleStatus {
 // Response code (byte order docs/protocol/decisions.md#a2), then 15 bytes. A refusal may carry the
 // response code only.
 struct VisibleSettingsAck {
-  K40T_POD_MESSAGE(0x010200, "visible_read_settings_ack", "3.2.3.1");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 17;
-  static constexpr size_t kMinSize = 2;
+  K40T_POD_REPORT(0x010200, "visible_read_settings_ack", "3.2.3.1", 17, 2);
   static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
   static constexpr size_t kSettingsSize = 15;  // after the code
 
@@ -164,9 +157,7 @@ struct VisibleSettingsAck {
   AntiFlicker anti_flicker = AntiFlicker::kAuto;  // byte 16 bits 7..4
   MeteringMode metering = MeteringMode::kArea;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     constexpr auto level = wire::u8.range(0, kVisibleLevelMax);
     v("code", s.code, wire::response_code);
     v("photo_resolution", s.photo_resolution, wire::u8);
@@ -285,10 +276,8 @@ struct SwitchAndValueRequest {
   static constexpr size_t kMinSize = 3;
   using Ack = PlainAck;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    using Self = std::conditional_t<std::is_const_v<S>, const Derived, Derived>;
+  K40T_LAYOUT(s, v) {
+    using Self = std::conditional_t<std::is_const_v<S_>, const Derived, Derived>;
     auto& self = static_cast<Self&>(s);
     v("start", wire::gap, wire::fixed(kStartSettingByte, "start setting"));
     v(Derived::kOnName, self.*Derived::kOn, wire::flag(kVisibleOnCode, kVisibleOffCode));
