@@ -7,6 +7,13 @@
 #include "k40t_driver/protocol/message.h"
 #include "k40t_driver/protocol/message_layout.h"
 
+// A data ACK's first members in one line: its header with kMinSize 2 (a refusal may carry the
+// response code alone) and the ACK byte order (docs/protocol/decisions.md#a2):
+//   K40T_POD_DATA_ACK(0x010018, "gimbal_version_ack", "3.1.2.5", kPodToHost, 9);
+#define K40T_POD_DATA_ACK(id, name, section, direction, size) \
+  K40T_POD_HEADER(id, name, section, direction, size, 2);     \
+  static constexpr auto kByteOrder = &CodecOptions::ack_byte_order
+
 namespace k40t::protocol {
 
 struct PlainAck {

@@ -67,9 +67,7 @@ void attitude(S& s, V& v) {
 // echoed; int32 longitude/latitude deg x1e7; int16 relative height and altitude m x10; int16
 // yaw, roll, pitch deg x100 (25 bytes). int16 x100 limits yaw to -180..180.
 struct CameraGpsAck {
-  // kMinSize: a refusal (no fix) may carry the code only
-  K40T_POD_HEADER(0x010310, "camera_gps_request_ack", "3.2.4.15", kHostToPod, 25, 2);
-  static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
+  K40T_POD_DATA_ACK(0x010310, "camera_gps_request_ack", "3.2.4.15", kHostToPod, 25);
 
   ResponseCode code = ResponseCode::kOk;
   uint8_t hour = 0;
@@ -123,9 +121,7 @@ struct CameraGpsRequest {
 // (the document says it is always 0x1F), then low byte first: uint64 UTC ms, int32
 // longitude/latitude deg x1e7, int32 relative height and altitude m x1000 (27 bytes).
 struct TargetGpsAck {
-  // kMinSize: a refusal may carry the code only
-  K40T_POD_REPORT(0x010320, "target_gps_request_ack", "3.2.4.24", 27, 2);
-  static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
+  K40T_POD_DATA_ACK(0x010320, "target_gps_request_ack", "3.2.4.24", kPodToHost, 27);
 
   ResponseCode code = ResponseCode::kOk;
   uint8_t mount_mask = 0x1F;

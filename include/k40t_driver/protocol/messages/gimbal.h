@@ -203,9 +203,7 @@ struct GimbalDialSpeedRequest {
 // ACK 0x010018: response code (docs/protocol/decisions.md#a2 byte order), hardware
 // major.minor.patch, software major.minor.patch, 1 reserved byte.
 struct GimbalVersionAck {
-  // kMinSize: a refusal may carry the code only
-  K40T_POD_REPORT(0x010018, "gimbal_version_ack", "3.1.2.5", 9, 2);
-  static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
+  K40T_POD_DATA_ACK(0x010018, "gimbal_version_ack", "3.1.2.5", kPodToHost, 9);
 
   ResponseCode code = ResponseCode::kOk;
   uint8_t hardware_major = 0;

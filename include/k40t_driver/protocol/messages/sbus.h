@@ -77,9 +77,7 @@ struct SbusChannelsRequest {
 // (docs/protocol/decisions.md#a2 byte order, like the code), the seven channel bytes of 0x000501, 1
 // reserved byte.
 struct SbusConfigAck {
-  // kMinSize: a refusal may carry the code only: finish_decode()
-  K40T_POD_REPORT(0x010502, "sbus_config_ack", "3.2.6.3", 14, 2);
-  static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
+  K40T_POD_DATA_ACK(0x010502, "sbus_config_ack", "3.2.6.3", kPodToHost, 14);
 
   ResponseCode code = ResponseCode::kOk;
   SbusRangeRequest range;
