@@ -30,4 +30,17 @@ std::string flag_error(const char* field, size_t index, const wire::Flag& flag, 
          hex_byte(flag.off) + " (off), got " + hex_byte(got);
 }
 
+std::string scale_error(const wire::Directed& directed, int scale) {
+  return std::string(directed.scale_name) + " must be positive, got " + std::to_string(scale);
+}
+
+std::string direction_error(const char* field, const wire::Directed& directed, uint8_t got) {
+  const bool positive_first = directed.positive.value < directed.negative.value;
+  const wire::Code& first = positive_first ? directed.positive : directed.negative;
+  const wire::Code& second = positive_first ? directed.negative : directed.positive;
+  return std::string(field) + " direction byte must be " + std::to_string(first.value) + " (" +
+         first.meaning + "), " + std::to_string(second.value) + " (" + second.meaning + ") or " +
+         std::to_string(directed.none) + " (no movement), got " + std::to_string(got);
+}
+
 }  // namespace k40t::codec::detail

@@ -47,6 +47,7 @@
 #include <type_traits>
 
 #include "k40t_driver/codec/layout_detail.h"
+#include "k40t_driver/codec/layout_validator.h"
 #include "k40t_driver/codec/unchecked_bytes.h"
 #include "k40t_driver/protocol/field_visit.h"
 #include "k40t_driver/protocol/message.h"
@@ -57,11 +58,13 @@ using protocol::FieldSink;
 
 // The message's byte order is a template argument: known at compile time, each multi-byte field
 // is written without a run-time test per byte (message_layout.h picks the instance once).
-// Out: ByteWriter, or UncheckedWriter once the whole size has been claimed.
+// Out: ByteWriter, or UncheckedWriter once the whole size has been claimed. `options`: where a
+// field takes a value from the CodecOptions (wire::directed); none: the defaults.
 template <ByteOrder kOrder, class Out = ByteWriter>
 class BasicLayoutWriter {
  public:
-  explicit BasicLayoutWriter(Out& w) : w_(w) {}
+  explicit BasicLayoutWriter(Out& w, const CodecOptions* options = nullptr)
+      : w_(w), options_(options) {}
   template <class T, class Int>
   void operator()(const char*, const T& v, wire::Raw<Int> t) const {
     detail::write_int<Int>(w_, detail::to_raw<Int>(v, t.add), detail::order_of(kOrder, t.order));
@@ -79,6 +82,18 @@ class BasicLayoutWriter {
   void operator()(const char*, const wire::Switchable<B, D>& p, wire::OrOff<Int> t) const {
     const Int raw = *p.on ? protocol::to_wire<Int>(*p.value, t.value.scale) : t.off;
     detail::write_int<Int>(w_, raw, detail::order_of(kOrder, t.value.order));
+  }
+  template <class B, class D>
+  void operator()(const char*, const wire::Switchable<B, D>& p, const wire::Directed& d) const {
+    const double value = static_cast<double>(*p.value);
+    w_.u8(!*p.on ? d.none : value < 0 ? d.negative.value : d.positive.value);
+    const double scale = detail::option(options_, d.scale);
+    detail::write_int<uint16_t>(
+        w_, *p.on ? protocol::to_wire<uint16_t>(std::fabs(value), scale) : uint16_t{0}, kOrder);
+  }
+  template <class T, class Tag, class Rule>
+  void operator()(const char* name, const T& v, const wire::Ruled<Tag, Rule>& r) const {
+    (*this)(name, v, r.tag);
   }
   void operator()(const char*, const std::string& v, wire::Text t) const { w_.text(v, t.width); }
   template <class T, class C>
@@ -105,6 +120,7 @@ class BasicLayoutWriter {
 
  private:
   Out& w_;
+  const CodecOptions* options_;
 };
 using LayoutWriter = BasicLayoutWriter<ByteOrder::kLittle>;
 
@@ -116,8 +132,8 @@ template <ByteOrder kOrder, class In = ByteReader>
 class BasicLayoutReader {
  public:
   explicit BasicLayoutReader(In& r, size_t optional_from = std::numeric_limits<size_t>::max(),
-                             Status* failure = nullptr)
-      : r_(r), optional_from_(optional_from), failure_(failure) {}
+                             Status* failure = nullptr, const CodecOptions* options = nullptr)
+      : r_(r), optional_from_(optional_from), failure_(failure), options_(options) {}
   template <class T, class Int>
   void operator()(const char*, T& v, wire::Raw<Int> t) const {
     if (absent(v)) return;
@@ -140,6 +156,28 @@ class BasicLayoutReader {
     const Int raw = detail::read_int<Int>(r_, detail::order_of(kOrder, t.value.order));
     *p.on = raw != t.off;
     *p.value = *p.on ? static_cast<double>(raw) / t.value.scale : 0.0;
+  }
+  template <class B, class D>
+  void operator()(const char* name, const wire::Switchable<B, D>& p,
+                  const wire::Directed& d) const {
+    if (absent()) return;
+    const uint8_t direction = r_.u8();
+    const uint16_t magnitude = detail::read_int<uint16_t>(r_, kOrder);
+    const int scale = detail::option(options_, d.scale);
+    if (scale <= 0) return fail(detail::scale_error(d, scale));
+    *p.on = direction != d.none;
+    if (direction == d.none) {
+      *p.value = 0;
+    } else if (direction == d.positive.value || direction == d.negative.value) {
+      const double value = magnitude / static_cast<double>(scale);
+      *p.value = direction == d.positive.value ? value : -value;
+    } else if (r_.ok()) {
+      fail(detail::direction_error(name, d, direction));
+    }
+  }
+  template <class T, class Tag, class Rule>
+  void operator()(const char* name, T& v, const wire::Ruled<Tag, Rule>& r) const {
+    (*this)(name, v, r.tag);
   }
   void operator()(const char*, std::string& v, wire::Text t) const {
     if (absent(v)) return;
@@ -201,6 +239,7 @@ class BasicLayoutReader {
   In& r_;
   size_t optional_from_;
   Status* failure_;
+  const CodecOptions* options_;
 };
 using LayoutReader = BasicLayoutReader<ByteOrder::kLittle>;
 
@@ -223,6 +262,14 @@ class LayoutSizer {
   template <class B, class D, class Int>
   void operator()(const char*, const wire::Switchable<B, D>&, wire::OrOff<Int>) const {
     size_ += sizeof(Int);
+  }
+  template <class B, class D>
+  void operator()(const char*, const wire::Switchable<B, D>&, const wire::Directed&) const {
+    size_ += 1 + sizeof(uint16_t);
+  }
+  template <class T, class Tag, class Rule>
+  void operator()(const char* name, const T& v, const wire::Ruled<Tag, Rule>& r) const {
+    (*this)(name, v, r.tag);
   }
   void operator()(const char*, const std::string&, wire::Text t) const { size_ += t.width; }
   template <class T, class C>
@@ -249,81 +296,6 @@ class LayoutSizer {
   size_t& size_;
 };
 
-// The checks a layout implies, in wire order, keeping the first failure: the ranges it gives,
-// enum codes the document defines, values a scaled integer or a float can carry, text that
-// fits, bit fields that fit their width.
-class LayoutValidator {
- public:
-  explicit LayoutValidator(Status& result) : result_(result) {}
-  template <class T, class Int>
-  void operator()(const char* name, const T& v, wire::Raw<Int> t) const {
-    if constexpr (std::is_enum_v<T>) {
-      if (!t.any_code) keep(protocol::check_enum(name, v));
-    }
-    if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
-      if (t.limits.set) keep(detail::check_int(name, static_cast<int64_t>(v), t.limits));
-    }
-  }
-  template <class Int>
-  void operator()(const char* name, double v, wire::Scaled<Int> s) const {
-    if (s.limits.set) {
-      keep(protocol::check_range(name, v, s.limits.lo, s.limits.hi, s.limits.unit));
-    } else {
-      keep(protocol::check_range(name, v, std::numeric_limits<Int>::min() / s.scale,
-                                 std::numeric_limits<Int>::max() / s.scale));
-    }
-  }
-  template <class T, class Float>
-  void operator()(const char* name, T v, wire::Real<Float> r) const {
-    const double limit = static_cast<double>(std::numeric_limits<Float>::max()) / r.scale;
-    keep(protocol::check_range(name, static_cast<double>(v), -limit, limit));
-  }
-  // The value is only meaningful, and only checked, while switched on.
-  template <class B, class D, class Int>
-  void operator()(const char*, const wire::Switchable<B, D>& p, wire::OrOff<Int> t) const {
-    if (*p.on) (*this)(p.value_name, static_cast<double>(*p.value), t.value);
-  }
-  // A terminated width includes the NUL: a full-width name would not be terminated, which the
-  // PSDK document's "with \0 as the ending character" rules out.
-  void operator()(const char* name, const std::string& v, wire::Text t) const {
-    keep(protocol::check_text(name, v, t.terminated ? t.width - 1 : t.width));
-  }
-  template <class T, class C>
-  void operator()(const char* name, const T& v, wire::Custom<C>) const {
-    keep(C::check(name, v));
-  }
-  template <class Tag>
-  void operator()(const char*, const wire::Gap&, Tag) const {}
-  void operator()(const char*, const bool&, wire::Flag) const {}
-  template <size_t N>
-  void operator()(const char*, const std::array<uint8_t, N>&, wire::Bytes<N>) const {}
-  template <class Sub, class Int>
-  void operator()(const char*, const Sub& v, wire::Packed<Int>) const {
-    Sub::layout(v, *this);
-  }
-  template <class Sub>
-  void operator()(const char*, const Sub& v, wire::Nested) const {
-    Sub::body(v, *this);
-  }
-  template <class T>
-  void operator()(const char* name, const T& v, wire::Bits b) const {
-    if constexpr (std::is_enum_v<T>) keep(protocol::check_enum(name, v));
-    const uint64_t raw = detail::to_raw<uint64_t>(v);
-    const auto most = static_cast<int64_t>(detail::bit_mask<uint64_t>(b.width));
-    if (b.limits.set) keep(detail::check_int(name, static_cast<int64_t>(raw), b.limits));
-    // A bool, or a range inside the width, cannot overflow it: no second check.
-    if (std::is_same_v<T, bool> || (b.limits.set && b.limits.lo >= 0 && b.limits.hi <= most))
-      return;
-    keep(protocol::check_range(name, static_cast<int64_t>(raw), 0, most));
-  }
-
- private:
-  void keep(const Status& s) const {
-    if (result_.is_ok() && !s.is_ok()) result_ = s;
-  }
-  Status& result_;
-};
-
 // Hands every field (bit fields and nested structs flattened, no reserved or fixed bytes) to a
 // visitor v(name, field): what the message contract's fields() does, for JSON, CLI arguments,
 // FieldSink and the generic tests.
@@ -345,8 +317,8 @@ class FieldLister {
   void operator()(const char*, const wire::BitGroup<T...>& group, wire::Packed<Int>) const {
     wire::BitGroup<T...>::layout(group, *this);
   }
-  template <class B, class D, class Int>
-  void operator()(const char*, const wire::Switchable<B, D>& p, wire::OrOff<Int>) const {
+  template <class B, class D, class Tag>
+  void operator()(const char*, const wire::Switchable<B, D>& p, Tag) const {
     v_(p.on_name, *p.on);
     v_(p.value_name, *p.value);
   }

@@ -122,6 +122,16 @@ inline Status check_int(const char* name, int64_t value, const wire::Limits& lim
                                static_cast<int64_t>(limits.hi), limits.unit);
 }
 
+// The value of a CodecOptions member a field takes (the defaults when no options were given).
+inline int option(const CodecOptions* options, int CodecOptions::*member) {
+  static const CodecOptions kDefaults{};
+  return options != nullptr ? options->*member : kDefaults.*member;
+}
+// "angle_command_scale must be positive, got 0"
+std::string scale_error(const wire::Directed& directed, int scale);
+// "pitch direction byte must be 0 (up), 1 (down) or 2 (no movement), got 3"
+std::string direction_error(const char* field, const wire::Directed& directed, uint8_t got);
+
 // "byte 1 must be 0x01 (read all settings), got 0x02" / "byte 1 must be the command code 1, got 2"
 std::string fixed_byte_error(size_t index, const wire::Fixed& fixed, uint8_t got);
 // "field 'ae_lock_on' must be 0x01 (on) or 0x02 (off), got 0x03"

@@ -16,6 +16,12 @@
 //   v("high_alarm", wire::switchable("high_alarm_on", s.high_alarm_on, "high_alarm_degC",
 //                                    s.high_alarm_degC),
 //     wire::or_off(wire::scaled<int16_t>(10).range(-100, 500, "degC"), int16_t{-2732}))
+//   v("pitch", wire::switchable("pitch_move", s.pitch_move, "pitch_deg", s.pitch_deg),
+//     wire::directed({0, "up"}, {1, "down"}, 2, &CodecOptions::angle_command_scale,
+//                    "angle_command_scale")
+//         .range(-90, 30, "deg (up positive)"))                      // direction byte + |value|
+//   v("zoom_x", s.zoom_x, wire::ruled(wire::scaled<uint16_t>(10), [&s](const char* name,
+//     double zoom) { return check_zoom(name, s.lens, zoom); }))     // a check that needs s.lens
 #pragma once
 
 #include <cstddef>
@@ -23,12 +29,14 @@
 #include <tuple>
 
 #include "k40t_driver/protocol/byte_io.h"
+#include "k40t_driver/protocol/codec_options.h"
 
 namespace k40t::codec {
 
 using protocol::ByteOrder;
 using protocol::ByteReader;
 using protocol::ByteWriter;
+using protocol::CodecOptions;
 
 namespace wire {
 
@@ -171,6 +179,37 @@ struct Switchable {
   D* value;
 };
 
+// A signed value carried as a direction byte and a uint16 magnitude, |value| x the scale a
+// CodecOptions member holds (the gimbal angle request 0x000012, docs/protocol/decisions.md#a4).
+// The field is a Switchable: the bool off is the direction code `none` ("no movement", magnitude
+// sent as 0, value read as 0). The range applies to the value whether or not it moves.
+struct Code {
+  uint8_t value;
+  const char* meaning;  // for decode errors: "0 (up), 1 (down) or 2 (no movement)"
+};
+struct Directed {
+  Code positive;  // the direction code of a positive value
+  Code negative;
+  uint8_t none;
+  int CodecOptions::*scale;
+  const char* scale_name;  // for the error when the option is not positive
+  Limits limits{};
+  constexpr Directed range(double lo, double hi, const char* unit = "") const {
+    Directed r = *this;
+    r.limits = {true, lo, hi, unit};
+    return r;
+  }
+};
+
+// Another tag whose checks are replaced by `rule(name, value)`, a Status-returning callable: for a
+// range that depends on another field of the message (the aim zoom depends on the lens). The rule
+// is only called while every field before it has passed.
+template <class Tag, class Rule>
+struct Ruled {
+  Tag tag;
+  Rule rule;
+};
+
 // Bit fields of one integer whose fields are members of the message itself (not of a sub-struct):
 //   v("config", wire::bit_group(wire::in_bits("measurement_on", s.measurement_on,
 //                                             wire::inverted_bit(0)), ...), wire::packed8)
@@ -196,6 +235,7 @@ inline constexpr Raw<uint16_t> response_code{{}, 0, Order::kMessage, true};
 inline constexpr Raw<int8_t> i8{};
 inline constexpr Raw<uint16_t> u16{};
 inline constexpr Raw<uint32_t> u32{};
+inline constexpr Raw<uint64_t> u64{};
 inline constexpr Raw<int16_t> i16{};
 inline constexpr Raw<int32_t> i32{};
 inline constexpr Raw<int64_t> i64{};
@@ -243,6 +283,14 @@ constexpr Bits bits(unsigned shift, unsigned width) {
 template <class Int>
 constexpr OrOff<Int> or_off(Scaled<Int> value, Int off) {
   return {value, off};
+}
+constexpr Directed directed(Code positive, Code negative, uint8_t none, int CodecOptions::*scale,
+                            const char* scale_name) {
+  return {positive, negative, none, scale, scale_name};
+}
+template <class Tag, class Rule>
+constexpr Ruled<Tag, Rule> ruled(Tag tag, Rule rule) {
+  return {tag, rule};
 }
 template <class B, class D>
 constexpr Switchable<B, D> switchable(const char* on_name, B& on, const char* value_name,

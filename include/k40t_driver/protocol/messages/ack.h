@@ -7,6 +7,13 @@
 #include "k40t_driver/protocol/message.h"
 #include "k40t_driver/protocol/message_layout.h"
 
+// A data ACK's first members in one line: its header with kMinSize 2 (a refusal may carry the
+// response code alone) and the ACK byte order (docs/protocol/decisions.md#a2):
+//   K40T_POD_DATA_ACK(0x010018, "gimbal_version_ack", "3.1.2.5", kPodToHost, 9);
+#define K40T_POD_DATA_ACK(id, name, section, direction, size) \
+  K40T_POD_HEADER(id, name, section, direction, size, 2);     \
+  static constexpr auto kByteOrder = &CodecOptions::ack_byte_order
+
 namespace k40t::protocol {
 
 struct PlainAck {
@@ -21,12 +28,16 @@ struct PlainAck {
 
   ResponseCode code = ResponseCode::kOk;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    v("code", s.code, wire::response_code);
-  }
+  K40T_LAYOUT(s, v) { v("code", s.code, wire::response_code); }
 };
+
+// The payload of a data ACK, which a refusal may cut to the response code: the code alone, or at
+// least `full_size` bytes (a data ACK's finish_decode(); payload_size_error() otherwise).
+inline Status code_alone_or_at_least(const char* name, MessageId id, size_t payload_size,
+                                     size_t full_size) {
+  if (payload_size == PlainAck::kSize || payload_size >= full_size) return Status::ok();
+  return payload_size_error(name, id, payload_size, full_size);
+}
 
 // Reads just the response code of any ACK payload (all ACKs start with it). A payload too short
 // for one gives kAckUnreadable, the driver's own code, not the pod's 0x0007 "length mismatch".

@@ -16,6 +16,7 @@
 #pragma once
 
 #include "k40t_driver/protocol/message.h"
+#include "k40t_driver/protocol/message_layout.h"
 #include "k40t_driver/protocol/message_list.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/camera_enums.h"
@@ -24,14 +25,49 @@ namespace k40t::protocol {
 
 struct CameraGpsRequest;
 
+// The field groups the four messages share, in the message's byte order but where `deg_e7` says
+// otherwise.
+namespace gps_fields {
+// Hour 0-23, minute 0-59, second 0-59, uint16 millisecond 0-999 (0x000310 and its ACK).
+template <class S, class V>
+void time_of_day(S& s, V& v) {
+  v("hour", s.hour, wire::u8.range(0, 23));
+  v("minute", s.minute, wire::u8.range(0, 59));
+  v("second", s.second, wire::u8.range(0, 59));
+  v("millisecond", s.millisecond, wire::u16.range(0, 999));
+}
+// int32 longitude and latitude, degrees x1e7.
+template <class S, class V>
+void longitude_latitude(S& s, V& v, wire::Scaled<int32_t> deg_e7 = wire::scaled<int32_t>(1e7)) {
+  v("longitude_deg", s.longitude_deg, deg_e7.range(-180, 180, "deg"));
+  v("latitude_deg", s.latitude_deg, deg_e7.range(-90, 90, "deg"));
+}
+// 0x000320 and its ACK: the position, then int32 relative height and altitude m x1000, all low
+// byte first.
+template <class S, class V>
+void position(S& s, V& v) {
+  constexpr double kInt32MilliMax = 2147483.647;
+  constexpr auto milli_m =
+      wire::scaled<int32_t>(1000).little().range(-kInt32MilliMax, kInt32MilliMax, "m");
+  longitude_latitude(s, v, wire::scaled<int32_t>(1e7).little());
+  v("relative_height_m", s.relative_height_m, milli_m);
+  v("altitude_m", s.altitude_m, milli_m);
+}
+// int16 yaw, roll, pitch deg x100: yaw cannot reach 360, so its range is -180..180.
+template <class S, class V>
+void attitude(S& s, V& v) {
+  constexpr auto centi_deg = wire::scaled<int16_t>(100);
+  v("yaw_deg", s.yaw_deg, centi_deg.range(-180, 180, "deg"));
+  v("roll_deg", s.roll_deg, centi_deg.range(-180, 180, "deg"));
+  v("pitch_deg", s.pitch_deg, centi_deg.range(-90, 90, "deg"));
+}
+}  // namespace gps_fields
+
 // ACK 0x010310, section 3.2.4.15, host -> camera: response code; the request's time of day
 // echoed; int32 longitude/latitude deg x1e7; int16 relative height and altitude m x10; int16
 // yaw, roll, pitch deg x100 (25 bytes). int16 x100 limits yaw to -180..180.
 struct CameraGpsAck {
-  K40T_POD_MESSAGE(0x010310, "camera_gps_request_ack", "3.2.4.15");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 25;
-  static constexpr size_t kMinSize = 2;  // a refusal (no fix) may carry the code only
+  K40T_POD_DATA_ACK(0x010310, "camera_gps_request_ack", "3.2.4.15", kHostToPod, 25);
 
   ResponseCode code = ResponseCode::kOk;
   uint8_t hour = 0;
@@ -49,33 +85,24 @@ struct CameraGpsAck {
   // An OK answer that echoes the request's time of day; the caller fills in the rest.
   static CameraGpsAck answering(const CameraGpsRequest& request);
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("code", self.code);
-    v("hour", self.hour);
-    v("minute", self.minute);
-    v("second", self.second);
-    v("millisecond", self.millisecond);
-    v("longitude_deg", self.longitude_deg);
-    v("latitude_deg", self.latitude_deg);
-    v("relative_height_m", self.relative_height_m);
-    v("altitude_m", self.altitude_m);
-    v("yaw_deg", self.yaw_deg);
-    v("roll_deg", self.roll_deg);
-    v("pitch_deg", self.pitch_deg);
+  K40T_LAYOUT(s, v) {
+    constexpr auto deci_m = wire::scaled<int16_t>(10).range(-3276.8, 3276.7, "m");
+    v("code", s.code, wire::response_code);
+    gps_fields::time_of_day(s, v);
+    gps_fields::longitude_latitude(s, v);
+    v("relative_height_m", s.relative_height_m, deci_m);
+    v("altitude_m", s.altitude_m, deci_m);
+    gps_fields::attitude(s, v);
+  }
+  Status finish_decode(size_t payload_size) const {
+    return code_alone_or_at_least(kName, kId, payload_size, kSize);
   }
 };
 
 // 0x000310, section 3.2.4.15, camera -> flight controller: lens enable (0/1; any non-zero byte
 // reads as enabled), hour 0-23, minute 0-59, second 0-59, uint16 millisecond 0-999.
 struct CameraGpsRequest {
-  K40T_POD_MESSAGE(0x000310, "camera_gps_request", "3.2.4.15");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 6;
-  static constexpr size_t kMinSize = 6;
+  K40T_POD_HEADER(0x000310, "camera_gps_request", "3.2.4.15", kPodToHost, 6, 6);
   using Ack = CameraGpsAck;
 
   bool lens_enabled = true;
@@ -84,16 +111,9 @@ struct CameraGpsRequest {
   uint8_t second = 0;
   uint16_t millisecond = 0;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("lens_enabled", self.lens_enabled);
-    v("hour", self.hour);
-    v("minute", self.minute);
-    v("second", self.second);
-    v("millisecond", self.millisecond);
+  K40T_LAYOUT(s, v) {
+    v("lens_enabled", s.lens_enabled, wire::u8);  // 1 / 0 sent, any non-zero read as enabled
+    gps_fields::time_of_day(s, v);
   }
 };
 
@@ -101,10 +121,7 @@ struct CameraGpsRequest {
 // (the document says it is always 0x1F), then low byte first: uint64 UTC ms, int32
 // longitude/latitude deg x1e7, int32 relative height and altitude m x1000 (27 bytes).
 struct TargetGpsAck {
-  K40T_POD_MESSAGE(0x010320, "target_gps_request_ack", "3.2.4.24");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 27;
-  static constexpr size_t kMinSize = 2;  // a refusal may carry the code only
+  K40T_POD_DATA_ACK(0x010320, "target_gps_request_ack", "3.2.4.24", kPodToHost, 27);
 
   ResponseCode code = ResponseCode::kOk;
   uint8_t mount_mask = 0x1F;
@@ -114,18 +131,14 @@ struct TargetGpsAck {
   double relative_height_m = 0;
   double altitude_m = 0;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("code", self.code);
-    v("mount_mask", self.mount_mask);
-    v("utc_time_ms", self.utc_time_ms);
-    v("longitude_deg", self.longitude_deg);
-    v("latitude_deg", self.latitude_deg);
-    v("relative_height_m", self.relative_height_m);
-    v("altitude_m", self.altitude_m);
+  K40T_LAYOUT(s, v) {
+    v("code", s.code, wire::response_code);
+    v("mount_mask", s.mount_mask, wire::u8);
+    v("utc_time_ms", s.utc_time_ms, wire::u64.little());
+    gps_fields::position(s, v);
+  }
+  Status finish_decode(size_t payload_size) const {
+    return code_alone_or_at_least(kName, kId, payload_size, kSize);
   }
 };
 
@@ -136,10 +149,7 @@ struct TargetGpsAck {
 // rate m/s. The document gives no signedness for the last five; heading (up to 36000) only fits
 // unsigned, so airspeed, ground speed, heading and throttle are uint16 and climb rate int16.
 struct TargetGpsRequest {
-  K40T_POD_MESSAGE(0x000320, "target_gps_request", "3.2.4.24");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 42;
-  static constexpr size_t kMinSize = 42;
+  K40T_POD_HEADER(0x000320, "target_gps_request", "3.2.4.24", kHostToPod, 42, 42);
   using Ack = TargetGpsAck;
 
   uint8_t mount_mask = 0x01;
@@ -158,26 +168,18 @@ struct TargetGpsRequest {
   double throttle_percent = 0;
   double climb_rate_m_s = 0;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("mount_mask", self.mount_mask);
-    v("fix", self.fix);
-    v("utc_time_ms", self.utc_time_ms);
-    v("longitude_deg", self.longitude_deg);
-    v("latitude_deg", self.latitude_deg);
-    v("relative_height_m", self.relative_height_m);
-    v("altitude_m", self.altitude_m);
-    v("yaw_deg", self.yaw_deg);
-    v("roll_deg", self.roll_deg);
-    v("pitch_deg", self.pitch_deg);
-    v("airspeed_m_s", self.airspeed_m_s);
-    v("ground_speed_m_s", self.ground_speed_m_s);
-    v("heading_deg", self.heading_deg);
-    v("throttle_percent", self.throttle_percent);
-    v("climb_rate_m_s", self.climb_rate_m_s);
+  K40T_LAYOUT(s, v) {
+    constexpr auto centi_m_s = wire::scaled<uint16_t>(100).range(0, 655.35, "m/s");
+    v("mount_mask", s.mount_mask, wire::u8.range(1, 0xFF));
+    v("fix", s.fix, wire::u8);
+    v("utc_time_ms", s.utc_time_ms, wire::u64);
+    gps_fields::position(s, v);
+    gps_fields::attitude(s, v);
+    v("airspeed_m_s", s.airspeed_m_s, centi_m_s);
+    v("ground_speed_m_s", s.ground_speed_m_s, centi_m_s);
+    v("heading_deg", s.heading_deg, wire::scaled<uint16_t>(100).range(0, 360, "deg"));
+    v("throttle_percent", s.throttle_percent, wire::scaled<uint16_t>(100).range(0, 100, "%"));
+    v("climb_rate_m_s", s.climb_rate_m_s, wire::scaled<int16_t>(100).range(-327.68, 327.67, "m/s"));
   }
 };
 

@@ -8,9 +8,8 @@
 //          heading and the gimbal conventions of drone SDKs), negative = LEFT.
 // docs/protocol/gimbal_laser_sbus.md explains this and the other decisions.
 //
-// The messages are declarative layouts (codec/layout.h) but for 0x000012, whose scale is a codec
-// option and whose sign is a direction byte, and 0x00002C, whose zoom range depends on the lens:
-// those two keep their hand-written codec in gimbal.cpp.
+// Every message is a declarative layout (codec/layout.h): 0x000012's direction bytes and option
+// scale are wire::directed, 0x00002C's lens-dependent zoom range a wire::ruled check.
 #pragma once
 
 #include <cstdint>
@@ -47,10 +46,8 @@ enum class GimbalStabilisationState : uint8_t {
 const char* to_string(GimbalStabilisationState state);
 
 struct GimbalStatus {
-  K40T_POD_MESSAGE(0x000001, "gimbal_status", "3.1.1.1");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 7;
-  static constexpr size_t kMinSize = 4;  // bytes 5..7 are reserved: optional on receive
+  // kMinSize: bytes 5..7 are reserved: optional on receive
+  K40T_POD_REPORT(0x000001, "gimbal_status", "3.1.1.1", 7, 4);
 
   GimbalLinkState gimbal_link = GimbalLinkState::kNormal;
   GimbalLinkState camera_link = GimbalLinkState::kNormal;
@@ -62,9 +59,7 @@ struct GimbalStatus {
   bool laser_ok = true;
   GimbalStabilisationState stabilisation = GimbalStabilisationState::kOff;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     v("links",
       wire::bit_group(wire::in_bits("gimbal_link", s.gimbal_link, wire::bits(0, 4)),
                       wire::in_bits("camera_link", s.camera_link, wire::bits(4, 4))),
@@ -85,10 +80,8 @@ struct GimbalStatus {
 
 // All angles int16 degrees x100, low byte first. Note the rate order on the wire: yaw, pitch, roll.
 struct GimbalAttitude {
-  K40T_POD_MESSAGE(0x000002, "gimbal_attitude", "3.1.1.2");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 20;
-  static constexpr size_t kMinSize = 18;           // the 2 reserved bytes are optional on receive
+  // kMinSize: the 2 reserved bytes are optional on receive
+  K40T_POD_REPORT(0x000002, "gimbal_attitude", "3.1.1.2", 20, 18);
   static constexpr double kCentiDegMin = -327.68;  // what int16 x0.01 deg can carry
   static constexpr double kCentiDegMax = 327.67;
 
@@ -102,9 +95,7 @@ struct GimbalAttitude {
   double pitch_rate_deg_s = 0;
   double roll_rate_deg_s = 0;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     constexpr auto deg = wire::scaled<int16_t>(100).range(kCentiDegMin, kCentiDegMax, "deg");
     constexpr auto deg_s = wire::scaled<int16_t>(100).range(kCentiDegMin, kCentiDegMax, "deg/s");
     v("joint_yaw_deg", s.joint_yaw_deg, deg);
@@ -133,19 +124,13 @@ enum class GimbalPitchDirection : uint8_t { kUp = 0, kDown = 1, kStop = 2 };
 const char* to_string(GimbalPitchDirection direction);
 
 struct GimbalControlRequest {
-  K40T_POD_MESSAGE(0x000010, "gimbal_control", "3.1.2.1");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 4;
-  static constexpr size_t kMinSize = 3;
-  using Ack = PlainAck;
+  K40T_POD_REQUEST(0x000010, "gimbal_control", "3.1.2.1", 4, 3);
 
   GimbalMode mode = GimbalMode::kNone;
   GimbalYawDirection yaw = GimbalYawDirection::kStop;
   GimbalPitchDirection pitch = GimbalPitchDirection::kStop;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     // The low nibble of byte 1 is reserved: sent as zero, ignored on receive.
     v("mode_byte", wire::bit_group(wire::in_bits("mode", s.mode, wire::bits(4, 4))), wire::packed8);
     v("yaw", s.yaw, wire::u8);
@@ -162,30 +147,27 @@ struct GimbalControlRequest {
 // the top of this file) and, per axis, `*_move = false` for the document's "no movement" (the angle
 // is then ignored and sent as 0).
 struct GimbalAngleRequest {
-  K40T_POD_MESSAGE(0x000012, "gimbal_angle", "3.1.2.2");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 7;
-  static constexpr size_t kMinSize = 6;
-  using Ack = PlainAck;
-
+  K40T_POD_REQUEST(0x000012, "gimbal_angle", "3.1.2.2", 7, 6);
   static constexpr double kPitchMinDeg = -90;  // "down 90 degrees"
   static constexpr double kPitchMaxDeg = 30;   // "up 30 degrees"
   static constexpr double kYawLimitDeg = 180;  // "180 degrees left, 180 degrees right"
+  static constexpr uint8_t kNoMovement = 2;    // either axis's direction byte
 
   bool pitch_move = true;
   double pitch_deg = 0;  // up positive
   bool yaw_move = true;
   double yaw_deg = 0;  // right positive, left negative
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("pitch_move", self.pitch_move);
-    v("pitch_deg", self.pitch_deg);
-    v("yaw_move", self.yaw_move);
-    v("yaw_deg", self.yaw_deg);
+  K40T_LAYOUT(s, v) {
+    constexpr auto scale = &CodecOptions::angle_command_scale;
+    constexpr const char* kScaleName = "angle_command_scale";
+    v("pitch", wire::switchable("pitch_move", s.pitch_move, "pitch_deg", s.pitch_deg),
+      wire::directed({0, "up"}, {1, "down"}, kNoMovement, scale, kScaleName)
+          .range(kPitchMinDeg, kPitchMaxDeg, "deg (up positive)"));
+    v("yaw", wire::switchable("yaw_move", s.yaw_move, "yaw_deg", s.yaw_deg),
+      wire::directed({1, "right"}, {0, "left"}, kNoMovement, scale, kScaleName)
+          .range(-kYawLimitDeg, kYawLimitDeg, "deg (right positive)"));
+    v("reserved", wire::gap, wire::reserved(1));
   }
 };
 
@@ -199,11 +181,7 @@ struct GimbalDriftCalibrationRequest : CommandRequest<0x01> {
 // Maximum speed the gimbal turns at when steered with the dial: wire 5..150 = deg/s x5, i.e.
 // 1..30 deg/s. Byte 1 pitch, byte 2 yaw, byte 3 reserved.
 struct GimbalDialSpeedRequest {
-  K40T_POD_MESSAGE(0x000017, "gimbal_dial_speed", "3.1.2.4");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 3;
-  static constexpr size_t kMinSize = 2;
-  using Ack = PlainAck;
+  K40T_POD_REQUEST(0x000017, "gimbal_dial_speed", "3.1.2.4", 3, 2);
 
   static constexpr double kMinDegS = 1;
   static constexpr double kMaxDegS = 30;
@@ -212,9 +190,7 @@ struct GimbalDialSpeedRequest {
   double pitch_speed_deg_s = 6;
   double yaw_speed_deg_s = 6;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     constexpr auto speed = wire::scaled<uint8_t>(kWirePerDegS).range(kMinDegS, kMaxDegS, "deg/s");
     v("pitch_speed_deg_s", s.pitch_speed_deg_s, speed);
     v("yaw_speed_deg_s", s.yaw_speed_deg_s, speed);
@@ -227,11 +203,7 @@ struct GimbalDialSpeedRequest {
 // ACK 0x010018: response code (docs/protocol/decisions.md#a2 byte order), hardware
 // major.minor.patch, software major.minor.patch, 1 reserved byte.
 struct GimbalVersionAck {
-  K40T_POD_MESSAGE(0x010018, "gimbal_version_ack", "3.1.2.5");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 9;
-  static constexpr size_t kMinSize = 2;  // a refusal may carry the code only
-  static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
+  K40T_POD_DATA_ACK(0x010018, "gimbal_version_ack", "3.1.2.5", kPodToHost, 9);
 
   ResponseCode code = ResponseCode::kOk;
   uint8_t hardware_major = 0;
@@ -241,9 +213,7 @@ struct GimbalVersionAck {
   uint8_t software_minor = 0;
   uint8_t software_patch = 0;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     v("code", s.code, wire::response_code);
     v("hardware_major", s.hardware_major, wire::u8);
     v("hardware_minor", s.hardware_minor, wire::u8);
@@ -267,32 +237,30 @@ struct GimbalVersionRequest : CommandRequest<0x01, GimbalVersionAck> {
 // Byte 1: which lens the pixel coordinates and zoom ratio refer to.
 enum class GimbalAimLens : uint8_t { kTele = 0x00, kWide = 0x01, kThermal = 0x02 };
 const char* to_string(GimbalAimLens lens);
+// Telephoto 3.5..160, wide and thermal 1..8 whole multiples; ok for a lens the document does not
+// define (the lens field's own check reports that).
+Status check_aim_zoom(const char* field, GimbalAimLens lens, double zoom_x);
 
 // Turn the gimbal so that pixel (x, y) of the given lens's 1920x1080 picture, seen at the given
 // zoom, comes to the centre. Zoom: uint16 x0.1; telephoto 3.5..160 (3.5..11 optical, beyond that
 // digital), wide and thermal 1..8 whole multiples (digital only). x 1..1920, y 1..1080 (centre
 // 960, 540).
 struct GimbalPointAtRequest {
-  K40T_POD_MESSAGE(0x00002C, "gimbal_point_at", "3.1.2.6");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 7;
-  static constexpr size_t kMinSize = 7;
-  using Ack = PlainAck;
+  K40T_POD_REQUEST(0x00002C, "gimbal_point_at", "3.1.2.6", 7, 7);
 
   GimbalAimLens lens = GimbalAimLens::kTele;
   double zoom_x = 3.5;
   uint16_t x_px = 960;
   uint16_t y_px = 540;
 
-  Status validate() const;
-  void encode(ByteWriter& w, const CodecOptions& o) const;
-  Status decode(ByteReader& r, const CodecOptions& o);
-  template <class Self, class V>
-  static void fields(Self& self, V&& v) {
-    v("lens", self.lens);
-    v("zoom_x", self.zoom_x);
-    v("x_px", self.x_px);
-    v("y_px", self.y_px);
+  K40T_LAYOUT(s, v) {
+    const auto zoom_for_lens = [&s](const char* name, double zoom_x) {
+      return check_aim_zoom(name, s.lens, zoom_x);
+    };
+    v("lens", s.lens, wire::u8);
+    v("zoom_x", s.zoom_x, wire::ruled(wire::scaled<uint16_t>(10), zoom_for_lens));  // x0.1
+    v("x_px", s.x_px, wire::u16.range(1, 1920, "px"));
+    v("y_px", s.y_px, wire::u16.range(1, 1080, "px"));
   }
 };
 

@@ -31,9 +31,7 @@ struct LaserDistancePayload {
   ResponseCode code = ResponseCode::kOk;
   double distance_m = 0;  // 0 = no return
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     v("code", s.code, wire::response_code);
     v("distance_m", s.distance_m, wire::scaled<uint16_t>(10).range(0, kMaxDistanceM, "m"));
   }

@@ -18,20 +18,14 @@ namespace k40t::protocol {
 // 0x000500, section 3.2.6.1: uint16 maximum, uint16 minimum (both 0..2047, minimum < maximum),
 // 1 reserved byte. Values are raw SBUS channel values (11 bit), no unit.
 struct SbusRangeRequest {
-  K40T_POD_MESSAGE(0x000500, "sbus_range", "3.2.6.1");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 5;
-  static constexpr size_t kMinSize = 4;
-  using Ack = PlainAck;
+  K40T_POD_REQUEST(0x000500, "sbus_range", "3.2.6.1", 5, 4);
 
   static constexpr int64_t kMaxSbusValue = 2047;
 
   uint16_t max_value = 1811;  // common SBUS transmitter end points
   uint16_t min_value = 172;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     body(s, v);
     v("reserved", wire::gap, wire::reserved(1));
   }
@@ -48,11 +42,7 @@ struct SbusRangeRequest {
 // 0x000501, section 3.2.6.2: one channel per function, bytes 1..7, byte 8 reserved. The document
 // numbers all of bytes 3..8 "Byte3" (a copy-paste slip); the table header gives their order.
 struct SbusChannelsRequest {
-  K40T_POD_MESSAGE(0x000501, "sbus_channels", "3.2.6.2");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 8;
-  static constexpr size_t kMinSize = 7;
-  using Ack = PlainAck;
+  K40T_POD_REQUEST(0x000501, "sbus_channels", "3.2.6.2", 8, 7);
 
   static constexpr int kChannelCount = 7;
   static constexpr int64_t kMaxChannel = 16;
@@ -65,9 +55,7 @@ struct SbusChannelsRequest {
   int yaw_channel = 6;
   int centre_channel = 7;  // one "gimbal back to centre" per switch
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     body(s, v);
     v("reserved", wire::gap, wire::reserved(1));
   }
@@ -89,19 +77,13 @@ struct SbusChannelsRequest {
 // (docs/protocol/decisions.md#a2 byte order, like the code), the seven channel bytes of 0x000501, 1
 // reserved byte.
 struct SbusConfigAck {
-  K40T_POD_MESSAGE(0x010502, "sbus_config_ack", "3.2.6.3");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 14;
-  static constexpr size_t kMinSize = 2;  // a refusal may carry the code only: finish_decode()
-  static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
+  K40T_POD_DATA_ACK(0x010502, "sbus_config_ack", "3.2.6.3", kPodToHost, 14);
 
   ResponseCode code = ResponseCode::kOk;
   SbusRangeRequest range;
   SbusChannelsRequest channels;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     v("code", s.code, wire::response_code);
     v("range", s.range, wire::nested);
     v("channels", s.channels, wire::nested);

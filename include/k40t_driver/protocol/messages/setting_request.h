@@ -2,14 +2,14 @@
 // the 0x00 "start setting" byte in the visible-camera family, then reserved zeros
 // (docs/protocol/decisions.md#a11; optional on receive). ACK: the response code only.
 //
-// A request of that shape derives from ByteSettingRequest<Self, prefix, reserved bytes> and
-// declares, besides kId, kName and kSection, its one field and
-//   static constexpr auto kValue = &Self::field;        // the field
-//   static constexpr const char* kValueName = "field";  // its name in fields() and errors
+// A request of that shape derives from ByteSettingRequest<Self, prefix, reserved bytes> (or a
+// family's alias of it) and declares, besides kId, kName and kSection, its one field:
+//   K40T_SETTING_VALUE(uint8_t, sharpness, 0);  // the field, kValue = &Self::sharpness and
+//                                               // kValueName = "sharpness" (fields(), errors)
 // and, by the field's type:
-//   integer: static constexpr int64_t kMin, kMax;       // the document's range
+//   integer: K40T_SETTING_RANGE(0, 100);         // kMin, kMax: the document's range
 //   enum:    nothing (validated against the codes its to_string() knows)
-//   bool:    static constexpr uint8_t kOnCode, kOffCode;
+//   bool:    K40T_SETTING_CODES(0x01, 0x02);     // kOnCode, kOffCode
 // Optionally static constexpr uint8_t kValueMask: the bits of the byte that carry the value (the
 // others are reserved: sent as zero, ignored on receive).
 // The base turns these into the request's layout (codec/layout.h), which gives kDirection, kSize,
@@ -21,6 +21,25 @@
 #include "k40t_driver/protocol/message.h"
 #include "k40t_driver/protocol/message_layout.h"
 #include "k40t_driver/protocol/messages/ack.h"
+
+// The setting's field and the two constants that name it, after the field (a pointer to a member
+// needs the member declared). `Self` is the request, from its base.
+#define K40T_SETTING_VALUE(type, field, initial)    \
+  type field = initial;                             \
+  static constexpr const char* kValueName = #field; \
+  static constexpr auto kValue = &Self::field
+// The switch of a request with a switch and a value (visible.h's SwitchAndValueRequest): kOn and
+// kOnName, like K40T_SETTING_VALUE's kValue and kValueName.
+#define K40T_SETTING_SWITCH(field, initial)      \
+  bool field = initial;                          \
+  static constexpr const char* kOnName = #field; \
+  static constexpr auto kOn = &Self::field
+#define K40T_SETTING_RANGE(lo, hi)    \
+  static constexpr int64_t kMin = lo; \
+  static constexpr int64_t kMax = hi
+#define K40T_SETTING_CODES(on, off)      \
+  static constexpr uint8_t kOnCode = on; \
+  static constexpr uint8_t kOffCode = off
 
 namespace k40t::protocol {
 
@@ -37,9 +56,7 @@ struct ReadAllSettingsRequest {
   static constexpr uint8_t kReadAllSettings = 0x01;
   using Ack = AckT;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S&, V&& v) {
+  K40T_LAYOUT(s, v) {
     v("command", wire::gap, wire::fixed(kReadAllSettings, "read all settings"));
     v("reserved", wire::gap, wire::reserved(1));
   }
@@ -59,17 +76,16 @@ enum class SettingPrefix { kNone, kStartSetting };
 
 template <class Derived, SettingPrefix Prefix, size_t Reserved>
 struct ByteSettingRequest {
+  using Self = Derived;
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kMinSize = Prefix == SettingPrefix::kStartSetting ? 2 : 1;
   static constexpr size_t kSize = kMinSize + Reserved;
   static constexpr uint8_t kValueMask = 0xFF;
   using Ack = PlainAck;
 
-  K40T_MESSAGE_LAYOUT()
   // The one value byte's wire format, from the constants the request declares.
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    using Self = std::conditional_t<std::is_const_v<S>, const Derived, Derived>;
+  K40T_LAYOUT(s, v) {
+    using Self = std::conditional_t<std::is_const_v<S_>, const Derived, Derived>;
     auto& value = static_cast<Self&>(s).*Derived::kValue;
     using T = std::decay_t<decltype(value)>;
     if constexpr (Prefix == SettingPrefix::kStartSetting) {

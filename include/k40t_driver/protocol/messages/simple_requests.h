@@ -21,11 +21,9 @@ struct CommandRequest {
   static constexpr uint8_t kCommand = kCommandByte;
   using Ack = AckType;
 
-  K40T_MESSAGE_LAYOUT()
   // A different first byte is some other (undocumented) command: decoding refuses it rather
   // than act on it.
-  template <class S, class V>
-  static void layout(S&, V&& v) {
+  K40T_LAYOUT(s, v) {
     v("command", wire::gap, wire::command(kCommand));
     v("reserved", wire::gap, wire::reserved(1));
   }
@@ -40,9 +38,7 @@ struct SwitchRequest {
 
   bool enable = true;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     v("enable", s.enable, wire::on_off);
     v("reserved", wire::gap, wire::reserved(1));
   }

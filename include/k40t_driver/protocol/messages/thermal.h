@@ -21,73 +21,50 @@
 
 namespace k40t::protocol {
 
-// ---- 0x000105, section 3.2.2.2: 1 = no zoom, 2..8 = digital zoom ----------------------------
-struct ThermalZoomRequest : ByteSettingRequest<ThermalZoomRequest, SettingPrefix::kNone, 1> {
-  K40T_POD_MESSAGE(0x000105, "thermal_set_zoom", "3.2.2.2");
-  static constexpr int64_t kMin = kThermalZoomMin;
-  static constexpr int64_t kMax = kThermalZoomMax;
+// The family's one-byte settings: the value byte, one reserved byte (setting_request.h).
+template <class Self>
+using ThermalSetting = ByteSettingRequest<Self, SettingPrefix::kNone, 1>;
 
-  uint8_t zoom_x = 1;
-  static constexpr auto kValue = &ThermalZoomRequest::zoom_x;
-  static constexpr const char* kValueName = "zoom_x";
+// ---- 0x000105, section 3.2.2.2: 1 = no zoom, 2..8 = digital zoom ----------------------------
+struct ThermalZoomRequest : ThermalSetting<ThermalZoomRequest> {
+  K40T_POD_MESSAGE(0x000105, "thermal_set_zoom", "3.2.2.2");
+  K40T_SETTING_RANGE(kThermalZoomMin, kThermalZoomMax);
+  K40T_SETTING_VALUE(uint8_t, zoom_x, 1);
 };
 
 // ---- 0x000106, section 3.2.2.3 -------------------------------------------------------------
-struct ThermalPaletteRequest : ByteSettingRequest<ThermalPaletteRequest, SettingPrefix::kNone, 1> {
+struct ThermalPaletteRequest : ThermalSetting<ThermalPaletteRequest> {
   K40T_POD_MESSAGE(0x000106, "thermal_set_palette", "3.2.2.3");
-
-  Palette palette = Palette::kWhiteHot;
-  static constexpr auto kValue = &ThermalPaletteRequest::palette;
-  static constexpr const char* kValueName = "palette";
+  K40T_SETTING_VALUE(Palette, palette, Palette::kWhiteHot);
 };
 
 // ---- 0x000108, section 3.2.2.4: on the wire 0x00 = on, 0x01 = off --------------------------
 // While measurement is on the pod sends 0x000004 periodically.
-struct ThermalMeasurementRequest
-    : ByteSettingRequest<ThermalMeasurementRequest, SettingPrefix::kNone, 1> {
+struct ThermalMeasurementRequest : ThermalSetting<ThermalMeasurementRequest> {
   K40T_POD_MESSAGE(0x000108, "thermal_set_measurement", "3.2.2.4");
-  static constexpr uint8_t kOnCode = 0x00;  // inverted: 0 = on
-  static constexpr uint8_t kOffCode = 0x01;
-
-  bool measurement_on = true;
-  static constexpr auto kValue = &ThermalMeasurementRequest::measurement_on;
-  static constexpr const char* kValueName = "measurement_on";
+  K40T_SETTING_CODES(0x00, 0x01);  // inverted: 0 = on
+  K40T_SETTING_VALUE(bool, measurement_on, true);
 };
 
 // ---- 0x00010A, section 3.2.2.5: 0..100 -----------------------------------------------------
-struct ThermalSharpnessRequest
-    : ByteSettingRequest<ThermalSharpnessRequest, SettingPrefix::kNone, 1> {
+struct ThermalSharpnessRequest : ThermalSetting<ThermalSharpnessRequest> {
   K40T_POD_MESSAGE(0x00010A, "thermal_set_sharpness", "3.2.2.5");
-  static constexpr int64_t kMin = 0;
-  static constexpr int64_t kMax = kThermalLevelMax;
-
-  uint8_t sharpness = 0;
-  static constexpr auto kValue = &ThermalSharpnessRequest::sharpness;
-  static constexpr const char* kValueName = "sharpness";
+  K40T_SETTING_RANGE(0, kThermalLevelMax);
+  K40T_SETTING_VALUE(uint8_t, sharpness, 0);
 };
 
 // ---- 0x00010B, section 3.2.2.6: 0..100 -----------------------------------------------------
-struct ThermalBrightnessRequest
-    : ByteSettingRequest<ThermalBrightnessRequest, SettingPrefix::kNone, 1> {
+struct ThermalBrightnessRequest : ThermalSetting<ThermalBrightnessRequest> {
   K40T_POD_MESSAGE(0x00010B, "thermal_set_brightness", "3.2.2.6");
-  static constexpr int64_t kMin = 0;
-  static constexpr int64_t kMax = kThermalLevelMax;
-
-  uint8_t brightness = 0;
-  static constexpr auto kValue = &ThermalBrightnessRequest::brightness;
-  static constexpr const char* kValueName = "brightness";
+  K40T_SETTING_RANGE(0, kThermalLevelMax);
+  K40T_SETTING_VALUE(uint8_t, brightness, 0);
 };
 
 // ---- 0x00010C, section 3.2.2.7: 0..100 -----------------------------------------------------
-struct ThermalContrastRequest
-    : ByteSettingRequest<ThermalContrastRequest, SettingPrefix::kNone, 1> {
+struct ThermalContrastRequest : ThermalSetting<ThermalContrastRequest> {
   K40T_POD_MESSAGE(0x00010C, "thermal_set_contrast", "3.2.2.7");
-  static constexpr int64_t kMin = 0;
-  static constexpr int64_t kMax = kThermalLevelMax;
-
-  uint8_t contrast = 0;
-  static constexpr auto kValue = &ThermalContrastRequest::contrast;
-  static constexpr const char* kValueName = "contrast";
+  K40T_SETTING_RANGE(0, kThermalLevelMax);
+  K40T_SETTING_VALUE(uint8_t, contrast, 0);
 };
 
 // ---- 0x00010D, section 3.2.2.8: switch (0 off, 1 on), level 0..100, reserved ---------------
@@ -104,31 +81,20 @@ struct ThermalDenoiseRequest {
 };
 
 // ---- 0x00010E, section 3.2.2.9: 0 = off, 1..10 = level -------------------------------------
-struct ThermalEnhancementRequest
-    : ByteSettingRequest<ThermalEnhancementRequest, SettingPrefix::kNone, 1> {
+struct ThermalEnhancementRequest : ThermalSetting<ThermalEnhancementRequest> {
   K40T_POD_MESSAGE(0x00010E, "thermal_set_enhancement", "3.2.2.9");
-  static constexpr int64_t kMin = 0;
-  static constexpr int64_t kMax = kThermalEnhancementMax;
-
-  uint8_t enhancement_level = 0;
-  static constexpr auto kValue = &ThermalEnhancementRequest::enhancement_level;
-  static constexpr const char* kValueName = "enhancement_level";
+  K40T_SETTING_RANGE(0, kThermalEnhancementMax);
+  K40T_SETTING_VALUE(uint8_t, enhancement_level, 0);
 };
 
 // ---- 0x00010F, section 3.2.2.10: spot measurement cursor, uint16 x 0..1920, y 0..1088 -------
 struct ThermalSpotRequest {
-  K40T_POD_MESSAGE(0x00010F, "thermal_set_spot", "3.2.2.10");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 5;
-  static constexpr size_t kMinSize = 4;
-  using Ack = PlainAck;
+  K40T_POD_REQUEST(0x00010F, "thermal_set_spot", "3.2.2.10", 5, 4);
 
   uint16_t x_px = 0;
   uint16_t y_px = 0;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     v("x_px", s.x_px, wire::u16.range(0, kThermalPictureWidth));
     v("y_px", s.y_px, wire::u16.range(0, kThermalPictureHeight));
     v("reserved", wire::gap, wire::reserved(1));
@@ -139,20 +105,14 @@ struct ThermalSpotRequest {
 // The rectangle must lie inside the measurable area x 320..1279, y 32..1023 (the note of
 // 3.2.2.11, read as: centre +- half the size stays inside).
 struct ThermalAreaRequest {
-  K40T_POD_MESSAGE(0x000110, "thermal_set_area", "3.2.2.11");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 9;
-  static constexpr size_t kMinSize = 8;
-  using Ack = PlainAck;
+  K40T_POD_REQUEST(0x000110, "thermal_set_area", "3.2.2.11", 9, 8);
 
   uint16_t width_px = 0;
   uint16_t height_px = 0;
   uint16_t center_x_px = 0;
   uint16_t center_y_px = 0;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     v("width_px", s.width_px, wire::u16.range(1, kThermalMeasurableXMax - kThermalMeasurableXMin));
     v("height_px", s.height_px,
       wire::u16.range(1, kThermalMeasurableYMax - kThermalMeasurableYMin));
@@ -166,24 +126,16 @@ struct ThermalAreaRequest {
 };
 
 // ---- 0x000123, section 3.2.2.12 ------------------------------------------------------------
-struct ThermalGainModeRequest
-    : ByteSettingRequest<ThermalGainModeRequest, SettingPrefix::kNone, 1> {
+struct ThermalGainModeRequest : ThermalSetting<ThermalGainModeRequest> {
   K40T_POD_MESSAGE(0x000123, "thermal_set_gain_mode", "3.2.2.12");
-
-  ThermalGainMode gain_mode = ThermalGainMode::kHigh;
-  static constexpr auto kValue = &ThermalGainModeRequest::gain_mode;
-  static constexpr const char* kValueName = "gain_mode";
+  K40T_SETTING_VALUE(ThermalGainMode, gain_mode, ThermalGainMode::kHigh);
 };
 
 // ---- 0x000124, section 3.2.2.13: int16 x0.1 degC high, low, difference; 2 reserved ---------
 // High/low -100.0..500.0 degC, difference 0.1..600.0 degC; -2732 on the wire switches one off.
 struct ThermalAlarmsRequest {
-  K40T_POD_MESSAGE(0x000124, "thermal_set_alarms", "3.2.2.13");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 8;
   // docs/protocol/decisions.md#a9: the table says 7 bytes, the text 8.
-  static constexpr size_t kMinSize = 7;
-  using Ack = PlainAck;
+  K40T_POD_REQUEST(0x000124, "thermal_set_alarms", "3.2.2.13", 8, 7);
 
   bool high_alarm_on = false;
   double high_alarm_degC = 0;
@@ -192,40 +144,28 @@ struct ThermalAlarmsRequest {
   bool difference_alarm_on = false;
   double difference_alarm_degC = 0;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     thermal_alarm_limits(s, v);
     v("reserved", wire::gap, wire::reserved(2));
   }
 };
 
 // ---- 0x000125, section 3.2.2.14: temperature overlay on the thermal picture ----------------
-struct ThermalOverlayRequest : ByteSettingRequest<ThermalOverlayRequest, SettingPrefix::kNone, 1> {
+struct ThermalOverlayRequest : ThermalSetting<ThermalOverlayRequest> {
   K40T_POD_MESSAGE(0x000125, "thermal_set_overlay", "3.2.2.14");
-  static constexpr uint8_t kOnCode = 0x01;
-  static constexpr uint8_t kOffCode = 0x00;
-
-  bool overlay_on = false;
-  static constexpr auto kValue = &ThermalOverlayRequest::overlay_on;
-  static constexpr const char* kValueName = "overlay_on";
+  K40T_SETTING_CODES(0x01, 0x00);
+  K40T_SETTING_VALUE(bool, overlay_on, false);
 };
 
 // ---- 0x000126, section 3.2.2.15: switch, int16 reference -30..50 degC, int16 float 0..80 degC
 struct ThermalThresholdAlarmRequest {
-  K40T_POD_MESSAGE(0x000126, "thermal_set_threshold_alarm", "3.2.2.15");
-  static constexpr Direction kDirection = Direction::kHostToPod;
-  static constexpr size_t kSize = 6;
-  static constexpr size_t kMinSize = 5;
-  using Ack = PlainAck;
+  K40T_POD_REQUEST(0x000126, "thermal_set_threshold_alarm", "3.2.2.15", 6, 5);
 
   bool threshold_alarm_on = false;
   double threshold_reference_degC = 0;
   double threshold_float_degC = 0;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     thermal_threshold_alarm(s, v, wire::flag(1, 0));
     v("reserved", wire::gap, wire::reserved(1));
   }
@@ -235,11 +175,7 @@ struct ThermalThresholdAlarmRequest {
 // Response code, then 21 bytes; multi-byte fields in the ACK byte order
 // (docs/protocol/decisions.md#a2). A refusal may carry the response code only.
 struct ThermalSettingsAck {
-  K40T_POD_MESSAGE(0x010100, "thermal_read_settings_ack", "3.2.2.1");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 23;
-  static constexpr size_t kMinSize = 2;
-  static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
+  K40T_POD_DATA_ACK(0x010100, "thermal_read_settings_ack", "3.2.2.1", kPodToHost, 23);
   static constexpr size_t kSettingsMinSize = 19;  // after the code; the 2 reserved are optional
 
   ResponseCode code = ResponseCode::kOk;
@@ -266,9 +202,7 @@ struct ThermalSettingsAck {
   double threshold_reference_degC = 0;
   double threshold_float_degC = 0;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     constexpr auto level = wire::u8.range(0, kThermalLevelMax);
     v("code", s.code, wire::response_code);
     v("palette", s.palette, wire::u8);

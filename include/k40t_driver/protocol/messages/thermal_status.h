@@ -14,10 +14,8 @@ namespace k40t::protocol {
 // Area measurement fills max/min/centre/average and their coordinates; point measurement fills
 // point_degC and its coordinates.
 struct ThermalStatus {
-  K40T_POD_MESSAGE(0x000004, "thermal_status", "3.2.1.2");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 34;
-  static constexpr size_t kMinSize = 30;  // the 4 reserved bytes are optional on receive
+  // kMinSize: the 4 reserved bytes are optional on receive
+  K40T_POD_REPORT(0x000004, "thermal_status", "3.2.1.2", 34, 30);
 
   double max_degC = 0;
   double min_degC = 0;
@@ -37,9 +35,7 @@ struct ThermalStatus {
   bool difference_alarm = false;
   bool threshold_alarm = false;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     constexpr auto degC =
         wire::scaled<int16_t>(10).range(kThermalDeciDegMin, kThermalDeciDegMax, "degC");
     v("max_degC", s.max_degC, degC);

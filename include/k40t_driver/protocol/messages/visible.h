@@ -100,12 +100,14 @@ constexpr int kVisibleLevelMax = 100;     // zoom fine-tune, backlight, strong-l
 constexpr uint8_t kVisibleOnCode = 0x01;  // the switches: 0x01 on, 0x02 off
 constexpr uint8_t kVisibleOffCode = 0x02;
 
+// The family's one-byte settings: 0x00 "start setting", the value byte (setting_request.h).
+template <class Self>
+using VisibleSetting = ByteSettingRequest<Self, SettingPrefix::kStartSetting, 0>;
+
 // ---- 0x000005, section 3.2.1.3, 5 Hz ---------------------------------------------------------
 struct VisibleStatus {
-  K40T_POD_MESSAGE(0x000005, "visible_status", "3.2.1.3");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 15;
-  static constexpr size_t kMinSize = 14;  // the reserved last byte is optional on receive
+  // kMinSize: the reserved last byte is optional on receive
+  K40T_POD_REPORT(0x000005, "visible_status", "3.2.1.3", 15, 14);
 
   bool zooming = false;        // 0x00 zoom done, 0x01 zooming
   double focal_length_mm = 0;  // uint16 x0.01 mm
@@ -117,9 +119,7 @@ struct VisibleStatus {
   bool focusing = false;                    // 0x00 focus done, 0x01 focusing
   double precise_shot_focal_length_mm = 0;  // uint16, unit not given: read as 0.01 mm
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     constexpr auto centi_mm = wire::scaled<uint16_t>(100).range(0.0, 655.35, "mm");
     // A report is what the pod says: flags are "non-zero", AE lock is "0x01".
     v("zooming", s.zooming, wire::u8);
@@ -139,11 +139,7 @@ struct VisibleStatus {
 // Response code (byte order docs/protocol/decisions.md#a2), then 15 bytes. A refusal may carry the
 // response code only.
 struct VisibleSettingsAck {
-  K40T_POD_MESSAGE(0x010200, "visible_read_settings_ack", "3.2.3.1");
-  static constexpr Direction kDirection = Direction::kPodToHost;
-  static constexpr size_t kSize = 17;
-  static constexpr size_t kMinSize = 2;
-  static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
+  K40T_POD_DATA_ACK(0x010200, "visible_read_settings_ack", "3.2.3.1", kPodToHost, 17);
   static constexpr size_t kSettingsSize = 15;  // after the code
 
   ResponseCode code = ResponseCode::kOk;
@@ -164,9 +160,7 @@ struct VisibleSettingsAck {
   AntiFlicker anti_flicker = AntiFlicker::kAuto;  // byte 16 bits 7..4
   MeteringMode metering = MeteringMode::kArea;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
+  K40T_LAYOUT(s, v) {
     constexpr auto level = wire::u8.range(0, kVisibleLevelMax);
     v("code", s.code, wire::response_code);
     v("photo_resolution", s.photo_resolution, wire::u8);
@@ -203,53 +197,35 @@ struct VisibleReadSettingsRequest : ReadAllSettingsRequest<VisibleSettingsAck> {
 };
 
 // ---- 0x000201, section 3.2.3.2: 0x00 start setting, resolution ------------------------------
-struct VisibleVideoResolutionRequest
-    : ByteSettingRequest<VisibleVideoResolutionRequest, SettingPrefix::kStartSetting, 0> {
+struct VisibleVideoResolutionRequest : VisibleSetting<VisibleVideoResolutionRequest> {
   K40T_POD_MESSAGE(0x000201, "visible_set_video_resolution", "3.2.3.2");
-
-  VideoResolution video_resolution = VideoResolution::k1920x1080;
-  static constexpr auto kValue = &VisibleVideoResolutionRequest::video_resolution;
-  static constexpr const char* kValueName = "video_resolution";
+  K40T_SETTING_VALUE(VideoResolution, video_resolution, VideoResolution::k1920x1080);
 };
 
 // ---- 0x000202, section 3.2.3.3: 0x00 start setting, 0x14 or 0x15 ----------------------------
-struct VisiblePhotoResolutionRequest
-    : ByteSettingRequest<VisiblePhotoResolutionRequest, SettingPrefix::kStartSetting, 0> {
+struct VisiblePhotoResolutionRequest : VisibleSetting<VisiblePhotoResolutionRequest> {
   K40T_POD_MESSAGE(0x000202, "visible_set_photo_resolution", "3.2.3.3");
-
-  PhotoResolution photo_resolution = PhotoResolution::k4000x3000;
-  static constexpr auto kValue = &VisiblePhotoResolutionRequest::photo_resolution;
-  static constexpr const char* kValueName = "photo_resolution";
+  K40T_SETTING_VALUE(PhotoResolution, photo_resolution, PhotoResolution::k4000x3000);
 
   Status validate() const;  // 0x16 (5160x3870) is reported by 0x010200 but cannot be set
 };
 
 // ---- 0x000203, section 3.2.3.4: 0x00 start setting, ISO code --------------------------------
-struct VisibleIsoRequest : ByteSettingRequest<VisibleIsoRequest, SettingPrefix::kStartSetting, 0> {
+struct VisibleIsoRequest : VisibleSetting<VisibleIsoRequest> {
   K40T_POD_MESSAGE(0x000203, "visible_set_iso", "3.2.3.4");
-
-  Iso iso = Iso::kAuto;
-  static constexpr auto kValue = &VisibleIsoRequest::iso;
-  static constexpr const char* kValueName = "iso";
+  K40T_SETTING_VALUE(Iso, iso, Iso::kAuto);
 };
 
 // ---- 0x000204, section 3.2.3.5: 0x00 start setting, shutter code ----------------------------
-struct VisibleShutterRequest
-    : ByteSettingRequest<VisibleShutterRequest, SettingPrefix::kStartSetting, 0> {
+struct VisibleShutterRequest : VisibleSetting<VisibleShutterRequest> {
   K40T_POD_MESSAGE(0x000204, "visible_set_shutter", "3.2.3.5");
-
-  Shutter shutter = Shutter::kAuto;
-  static constexpr auto kValue = &VisibleShutterRequest::shutter;
-  static constexpr const char* kValueName = "shutter";
+  K40T_SETTING_VALUE(Shutter, shutter, Shutter::kAuto);
 };
 
 // ---- 0x000205, section 3.2.3.6 (Chinese original only): 0x00 start setting, EV code ---------
-struct VisibleEvRequest : ByteSettingRequest<VisibleEvRequest, SettingPrefix::kStartSetting, 0> {
+struct VisibleEvRequest : VisibleSetting<VisibleEvRequest> {
   K40T_POD_MESSAGE(0x000205, "visible_set_ev", "3.2.3.6");
-
-  ExposureValue ev = ExposureValue::kAuto;
-  static constexpr auto kValue = &VisibleEvRequest::ev;
-  static constexpr const char* kValueName = "ev";
+  K40T_SETTING_VALUE(ExposureValue, ev, ExposureValue::kAuto);
 };
 
 // ---- 0x000206, section 3.2.3.7 (Chinese original only): 0x00 start setting, white balance in
@@ -258,37 +234,29 @@ struct VisibleWhiteBalanceRequest
     : ByteSettingRequest<VisibleWhiteBalanceRequest, SettingPrefix::kStartSetting, 2> {
   K40T_POD_MESSAGE(0x000206, "visible_set_white_balance", "3.2.3.7");
   static constexpr uint8_t kValueMask = 0x0F;  // bits 7..4 reserved
-
-  WhiteBalance white_balance = WhiteBalance::kAuto;
-  static constexpr auto kValue = &VisibleWhiteBalanceRequest::white_balance;
-  static constexpr const char* kValueName = "white_balance";
+  K40T_SETTING_VALUE(WhiteBalance, white_balance, WhiteBalance::kAuto);
 };
 
 // ---- 0x000207, section 3.2.3.8: 0x00 start setting, anti-flicker code -----------------------
-struct VisibleAntiFlickerRequest
-    : ByteSettingRequest<VisibleAntiFlickerRequest, SettingPrefix::kStartSetting, 0> {
+struct VisibleAntiFlickerRequest : VisibleSetting<VisibleAntiFlickerRequest> {
   K40T_POD_MESSAGE(0x000207, "visible_set_anti_flicker", "3.2.3.8");
-
-  AntiFlicker anti_flicker = AntiFlicker::kAuto;
-  static constexpr auto kValue = &VisibleAntiFlickerRequest::anti_flicker;
-  static constexpr const char* kValueName = "anti_flicker";
+  K40T_SETTING_VALUE(AntiFlicker, anti_flicker, AntiFlicker::kAuto);
 };
 
 // "0x00 start setting, 0x01 on / 0x02 off, value 0..100": strong-light suppression (3.2.3.9)
 // and backlight compensation (3.2.3.10). A request derives from SwitchAndValueRequest<Self> and
-// names its two fields with kOn/kOnName and kValue/kValueName (see setting_request.h); the base
-// turns them into the request's layout.
+// declares its two fields with K40T_SETTING_SWITCH and K40T_SETTING_VALUE (setting_request.h); the
+// base turns them into the request's layout.
 template <class Derived>
 struct SwitchAndValueRequest {
+  using Self = Derived;
   static constexpr Direction kDirection = Direction::kHostToPod;
   static constexpr size_t kSize = 3;
   static constexpr size_t kMinSize = 3;
   using Ack = PlainAck;
 
-  K40T_MESSAGE_LAYOUT()
-  template <class S, class V>
-  static void layout(S& s, V&& v) {
-    using Self = std::conditional_t<std::is_const_v<S>, const Derived, Derived>;
+  K40T_LAYOUT(s, v) {
+    using Self = std::conditional_t<std::is_const_v<S_>, const Derived, Derived>;
     auto& self = static_cast<Self&>(s);
     v("start", wire::gap, wire::fixed(kStartSettingByte, "start setting"));
     v(Derived::kOnName, self.*Derived::kOn, wire::flag(kVisibleOnCode, kVisibleOffCode));
@@ -303,12 +271,8 @@ struct SwitchAndValueRequest {
 struct VisibleStrongLightRequest : SwitchAndValueRequest<VisibleStrongLightRequest> {
   K40T_POD_MESSAGE(0x000208, "visible_set_strong_light", "3.2.3.9");
 
-  bool strong_light_on = false;
-  uint8_t strong_light_value = 0;
-  static constexpr auto kOn = &VisibleStrongLightRequest::strong_light_on;
-  static constexpr const char* kOnName = "strong_light_on";
-  static constexpr auto kValue = &VisibleStrongLightRequest::strong_light_value;
-  static constexpr const char* kValueName = "strong_light_value";
+  K40T_SETTING_SWITCH(strong_light_on, false);
+  K40T_SETTING_VALUE(uint8_t, strong_light_value, 0);
 };
 
 // ---- 0x000209, section 3.2.3.10: 0x00 start setting, 0x01 on / 0x02 off, value 0..100 -------
@@ -316,34 +280,21 @@ struct VisibleStrongLightRequest : SwitchAndValueRequest<VisibleStrongLightReque
 struct VisibleBacklightRequest : SwitchAndValueRequest<VisibleBacklightRequest> {
   K40T_POD_MESSAGE(0x000209, "visible_set_backlight", "3.2.3.10");
 
-  bool backlight_on = false;
-  uint8_t backlight_value = 0;
-  static constexpr auto kOn = &VisibleBacklightRequest::backlight_on;
-  static constexpr const char* kOnName = "backlight_on";
-  static constexpr auto kValue = &VisibleBacklightRequest::backlight_value;
-  static constexpr const char* kValueName = "backlight_value";
+  K40T_SETTING_SWITCH(backlight_on, false);
+  K40T_SETTING_VALUE(uint8_t, backlight_value, 0);
 };
 
 // ---- 0x00020A, section 3.2.3.11: 0x00 start setting, 0x01 on / 0x02 off --------------------
-struct VisibleAeLockRequest
-    : ByteSettingRequest<VisibleAeLockRequest, SettingPrefix::kStartSetting, 0> {
+struct VisibleAeLockRequest : VisibleSetting<VisibleAeLockRequest> {
   K40T_POD_MESSAGE(0x00020A, "visible_set_ae_lock", "3.2.3.11");
-  static constexpr uint8_t kOnCode = kVisibleOnCode;
-  static constexpr uint8_t kOffCode = kVisibleOffCode;
-
-  bool ae_lock_on = false;
-  static constexpr auto kValue = &VisibleAeLockRequest::ae_lock_on;
-  static constexpr const char* kValueName = "ae_lock_on";
+  K40T_SETTING_CODES(kVisibleOnCode, kVisibleOffCode);
+  K40T_SETTING_VALUE(bool, ae_lock_on, false);
 };
 
 // ---- 0x00020B, section 3.2.3.12: 0x00 start setting, metering mode --------------------------
-struct VisibleMeteringRequest
-    : ByteSettingRequest<VisibleMeteringRequest, SettingPrefix::kStartSetting, 0> {
+struct VisibleMeteringRequest : VisibleSetting<VisibleMeteringRequest> {
   K40T_POD_MESSAGE(0x00020B, "visible_set_metering", "3.2.3.12");
-
-  MeteringMode metering = MeteringMode::kArea;
-  static constexpr auto kValue = &VisibleMeteringRequest::metering;
-  static constexpr const char* kValueName = "metering";
+  K40T_SETTING_VALUE(MeteringMode, metering, MeteringMode::kArea);
 };
 
 // Every message struct of the visible family: the catalogue, the catalogue tests and the fuzz

@@ -1,0 +1,103 @@
+// The validating visitor of a declarative layout (layout.h explains layouts): validate() of a
+// message is its layout() run with a LayoutValidator.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <type_traits>
+
+#include "k40t_driver/codec/layout_detail.h"
+#include "k40t_driver/protocol/message.h"
+
+namespace k40t::codec {
+
+// The checks a layout implies, in wire order, keeping the first failure: the ranges it gives,
+// enum codes the document defines, values a scaled integer or a float can carry, text that
+// fits, bit fields that fit their width.
+class LayoutValidator {
+ public:
+  explicit LayoutValidator(Status& result) : result_(result) {}
+  template <class T, class Int>
+  void operator()(const char* name, const T& v, wire::Raw<Int> t) const {
+    if constexpr (std::is_enum_v<T>) {
+      if (!t.any_code) keep(protocol::check_enum(name, v));
+    }
+    if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
+      if (t.limits.set) keep(detail::check_int(name, static_cast<int64_t>(v), t.limits));
+    }
+  }
+  template <class Int>
+  void operator()(const char* name, double v, wire::Scaled<Int> s) const {
+    if (s.limits.set) {
+      keep(protocol::check_range(name, v, s.limits.lo, s.limits.hi, s.limits.unit));
+    } else {
+      keep(protocol::check_range(name, v, std::numeric_limits<Int>::min() / s.scale,
+                                 std::numeric_limits<Int>::max() / s.scale));
+    }
+  }
+  template <class T, class Float>
+  void operator()(const char* name, T v, wire::Real<Float> r) const {
+    const double limit = static_cast<double>(std::numeric_limits<Float>::max()) / r.scale;
+    keep(protocol::check_range(name, static_cast<double>(v), -limit, limit));
+  }
+  // The value is only meaningful, and only checked, while switched on.
+  template <class B, class D, class Int>
+  void operator()(const char*, const wire::Switchable<B, D>& p, wire::OrOff<Int> t) const {
+    if (*p.on) (*this)(p.value_name, static_cast<double>(*p.value), t.value);
+  }
+  // Checked whether or not it moves (the value of a "no movement" axis is sent as 0 anyway).
+  template <class B, class D>
+  void operator()(const char*, const wire::Switchable<B, D>& p, const wire::Directed& d) const {
+    if (d.limits.set) {
+      keep(protocol::check_range(p.value_name, static_cast<double>(*p.value), d.limits.lo,
+                                 d.limits.hi, d.limits.unit));
+    }
+  }
+  template <class T, class Tag, class Rule>
+  void operator()(const char* name, const T& v, const wire::Ruled<Tag, Rule>& r) const {
+    if (result_.is_ok()) keep(r.rule(name, v));
+  }
+  // A terminated width includes the NUL: a full-width name would not be terminated, which the
+  // PSDK document's "with \0 as the ending character" rules out.
+  template <class T, class C>
+  void operator()(const char* name, const T& v, wire::Custom<C>) const {
+    keep(C::check(name, v));
+  }
+  void operator()(const char* name, const std::string& v, wire::Text t) const {
+    keep(protocol::check_text(name, v, t.terminated ? t.width - 1 : t.width));
+  }
+  template <class Tag>
+  void operator()(const char*, const wire::Gap&, Tag) const {}
+  void operator()(const char*, const bool&, wire::Flag) const {}
+  template <size_t N>
+  void operator()(const char*, const std::array<uint8_t, N>&, wire::Bytes<N>) const {}
+  template <class Sub, class Int>
+  void operator()(const char*, const Sub& v, wire::Packed<Int>) const {
+    Sub::layout(v, *this);
+  }
+  template <class Sub>
+  void operator()(const char*, const Sub& v, wire::Nested) const {
+    Sub::body(v, *this);
+  }
+  template <class T>
+  void operator()(const char* name, const T& v, wire::Bits b) const {
+    if constexpr (std::is_enum_v<T>) keep(protocol::check_enum(name, v));
+    const uint64_t raw = detail::to_raw<uint64_t>(v);
+    const auto most = static_cast<int64_t>(detail::bit_mask<uint64_t>(b.width));
+    if (b.limits.set) keep(detail::check_int(name, static_cast<int64_t>(raw), b.limits));
+    // A bool, or a range inside the width, cannot overflow it: no second check.
+    if (std::is_same_v<T, bool> || (b.limits.set && b.limits.lo >= 0 && b.limits.hi <= most))
+      return;
+    keep(protocol::check_range(name, static_cast<int64_t>(raw), 0, most));
+  }
+
+ private:
+  void keep(const Status& s) const {
+    if (result_.is_ok() && !s.is_ok()) result_ = s;
+  }
+  Status& result_;
+};
+
+}  // namespace k40t::codec
