@@ -64,7 +64,7 @@ void photo_settings(S& s, V&& v) {
 struct CaptureModeRequest : ByteSettingRequest<CaptureModeRequest, SettingPrefix::kNone, 1> {
   K40T_POD_MESSAGE(0x000300, "capture_mode", "3.2.4.1");
 
-  K40T_VALUE_FIELD(CaptureModeRequest, CaptureMode, mode, CaptureMode::kPhoto);
+  K40T_SETTING_VALUE(CaptureMode, mode, CaptureMode::kPhoto);
 };
 
 // 0x000301, section 3.2.4.2: the photo settings, 1 reserved.
@@ -122,7 +122,7 @@ struct ZoomRatioRequest {
 struct ContinuousZoomRequest : ByteSettingRequest<ContinuousZoomRequest, SettingPrefix::kNone, 1> {
   K40T_POD_MESSAGE(0x000306, "continuous_zoom", "3.2.4.6");
 
-  K40T_VALUE_FIELD(ContinuousZoomRequest, ZoomCommand, command, ZoomCommand::kStop);
+  K40T_SETTING_VALUE(ZoomCommand, command, ZoomCommand::kStop);
 };
 
 // 0x000307, section 3.2.4.7: take a photo at a given visible resolution, zoom and focus position

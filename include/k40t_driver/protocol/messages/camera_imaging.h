@@ -30,7 +30,7 @@ constexpr auto kStreamRow = wire::u16.range(0, kStreamHeightPx, "px");
 struct StreamBitrateRequest : ByteSettingRequest<StreamBitrateRequest, SettingPrefix::kNone, 1> {
   K40T_POD_MESSAGE(0x000308, "stream_bitrate", "3.2.4.8");
 
-  K40T_VALUE_FIELD(StreamBitrateRequest, StreamBitrate, bitrate, StreamBitrate::k4Mbps);
+  K40T_SETTING_VALUE(StreamBitrate, bitrate, StreamBitrate::k4Mbps);
 };
 
 // 0x00030A, section 3.2.4.9: output resolution, 1 = 1080P30. The document lists 2 = 720P30 as
@@ -39,8 +39,7 @@ struct StreamResolutionRequest
     : ByteSettingRequest<StreamResolutionRequest, SettingPrefix::kNone, 1> {
   K40T_POD_MESSAGE(0x00030A, "stream_resolution", "3.2.4.9");
 
-  K40T_VALUE_FIELD(StreamResolutionRequest, StreamResolution, resolution,
-                   StreamResolution::k1080p30);
+  K40T_SETTING_VALUE(StreamResolution, resolution, StreamResolution::k1080p30);
 
   Status validate() const;  // 720P30 has a code but cannot be set
 };
@@ -49,7 +48,7 @@ struct StreamResolutionRequest
 struct StreamEncodingRequest : ByteSettingRequest<StreamEncodingRequest, SettingPrefix::kNone, 1> {
   K40T_POD_MESSAGE(0x00030B, "stream_encoding", "3.2.4.10");
 
-  K40T_VALUE_FIELD(StreamEncodingRequest, VideoEncoding, encoding, VideoEncoding::kH264);
+  K40T_SETTING_VALUE(VideoEncoding, encoding, VideoEncoding::kH264);
 };
 
 // 0x000313, section 3.2.4.18: focus command; the uint16 area corners (top-left, bottom-right)
@@ -80,14 +79,14 @@ struct OsdWatermarkRequest : ByteSettingRequest<OsdWatermarkRequest, SettingPref
   static constexpr uint8_t kOnCode = 1;
   static constexpr uint8_t kOffCode = 0;
 
-  K40T_VALUE_FIELD(OsdWatermarkRequest, bool, enabled, false);
+  K40T_SETTING_VALUE(bool, enabled, false);
 };
 
 // 0x000318, section 3.2.4.22: what the stream shows: 0 infrared, 5/6 visible, 7 split screen.
 struct ImageModeRequest : ByteSettingRequest<ImageModeRequest, SettingPrefix::kNone, 1> {
   K40T_POD_MESSAGE(0x000318, "image_mode", "3.2.4.22");
 
-  K40T_VALUE_FIELD(ImageModeRequest, ImageMode, mode, ImageMode::kVisible);
+  K40T_SETTING_VALUE(ImageMode, mode, ImageMode::kVisible);
 };
 
 // 0x000319, section 3.2.4.23: AI recognition on (1) / off (2), the model to load (0 = default

@@ -33,9 +33,10 @@ struct LensAndState {
 };
 
 // 0x020302 and 0x020303: lens mode, state, a uint16 count, 3 reserved. The frame declares its
-// count with K40T_VALUE_FIELD (setting_request.h).
+// count with K40T_SETTING_VALUE (setting_request.h).
 template <class Derived, class Lens, class State>
 struct CountedStatus : LensAndState<Lens, State> {
+  using Self = Derived;  // for K40T_SETTING_VALUE
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 7;
   static constexpr size_t kMinSize = 4;
@@ -52,7 +53,7 @@ struct CountedStatus : LensAndState<Lens, State> {
 // uint16 number of burst photos, 3 reserved.
 struct PhotoStatus : CountedStatus<PhotoStatus, PhotoLensMode, PhotoState> {
   K40T_POD_MESSAGE(0x020302, "photo_status", "3.2.4.3");
-  K40T_VALUE_FIELD(PhotoStatus, uint16_t, burst_count, 0);
+  K40T_SETTING_VALUE(uint16_t, burst_count, 0);
 };
 
 // 0x020303, section 3.2.4.4, 1 Hz while recording: lens mode, record state 0..8, uint16
@@ -60,13 +61,14 @@ struct PhotoStatus : CountedStatus<PhotoStatus, PhotoLensMode, PhotoState> {
 // seconds.
 struct RecordStatus : CountedStatus<RecordStatus, RecordLensMode, RecordState> {
   K40T_POD_MESSAGE(0x020303, "record_status", "3.2.4.4");
-  K40T_VALUE_FIELD(RecordStatus, uint16_t, recording_time_s, 0);
+  K40T_SETTING_VALUE(uint16_t, recording_time_s, 0);
 };
 
 // A frame that is one code and `Reserved` reserved bytes: 0x020304, 0x02030C, 0x02030D. The frame
-// declares its code with K40T_VALUE_FIELD (setting_request.h).
+// declares its code with K40T_SETTING_VALUE (setting_request.h).
 template <class Derived, size_t Reserved>
 struct CodeStatus {
+  using Self = Derived;  // for K40T_SETTING_VALUE
   static constexpr Direction kDirection = Direction::kPodToHost;
   static constexpr size_t kSize = 1 + Reserved;
   static constexpr size_t kMinSize = 1;
@@ -81,7 +83,7 @@ struct CodeStatus {
 // 0x020304, section 3.2.4.5, after 0x000304: zooming (1) or done (0), 1 reserved.
 struct ZoomStatus : CodeStatus<ZoomStatus, 1> {
   K40T_POD_MESSAGE(0x020304, "zoom_status", "3.2.4.5");
-  K40T_VALUE_FIELD(ZoomStatus, ZoomProgress, progress, ZoomProgress::kDone);
+  K40T_SETTING_VALUE(ZoomProgress, progress, ZoomProgress::kDone);
 };
 
 // 0x020307, section 3.2.4.7, after 0x000307: lens mode, state 0..12, 5 reserved.
@@ -96,14 +98,14 @@ struct PreciseReshootStatus : LensAndState<PhotoLensMode, ReshootState> {
 // 0x02030C, section 3.2.4.11, after 0x00030C: TF-card upgrade state, 1 reserved.
 struct TfCardUpgradeStatus : CodeStatus<TfCardUpgradeStatus, 1> {
   K40T_POD_MESSAGE(0x02030C, "tf_card_upgrade_status", "3.2.4.11");
-  K40T_VALUE_FIELD(TfCardUpgradeStatus, TfUpgradeState, state, TfUpgradeState::kUpgrading);
+  K40T_SETTING_VALUE(TfUpgradeState, state, TfUpgradeState::kUpgrading);
 };
 
 // 0x02030D, section 3.2.4.12, 5 Hz after 0x00030D: SD format state 0..3, 2 reserved. The pod
 // also reports "failed" when a format is asked for during recording or shooting.
 struct SdFormatStatus : CodeStatus<SdFormatStatus, 2> {
   K40T_POD_MESSAGE(0x02030D, "sd_format_status", "3.2.4.12");
-  K40T_VALUE_FIELD(SdFormatStatus, SdFormatState, state, SdFormatState::kFormatting);
+  K40T_SETTING_VALUE(SdFormatState, state, SdFormatState::kFormatting);
 };
 
 // Every message struct of this part of the camera family: the catalogue, the catalogue tests and

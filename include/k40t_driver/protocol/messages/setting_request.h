@@ -22,8 +22,9 @@
 #include "k40t_driver/protocol/message_layout.h"
 #include "k40t_driver/protocol/messages/ack.h"
 
-// The setting's field and the two constants that name it, after the field (a pointer to a member
-// needs the member declared). `Self` is the request, from its base.
+// The value field of a one-value message (a setting request, or a status frame of one count or
+// code: camera_status.h) and the two constants its base reads to encode it, after the field (a
+// pointer to a member needs the member declared). `Self` is the message, from its base.
 #define K40T_SETTING_VALUE(type, field, initial)    \
   type field = initial;                             \
   static constexpr const char* kValueName = #field; \
@@ -104,13 +105,3 @@ struct ByteSettingRequest {
 };
 
 }  // namespace k40t::protocol
-
-// The value field of a struct that ByteSettingRequest (or another base reading kValue and
-// kValueName) encodes, with those two constants, in one line:
-//   K40T_VALUE_FIELD(CaptureModeRequest, CaptureMode, mode, CaptureMode::kPhoto);
-// declares `CaptureMode mode = CaptureMode::kPhoto;`, kValue = &CaptureModeRequest::mode and
-// kValueName = "mode".
-#define K40T_VALUE_FIELD(Self, Type, name, initial) \
-  Type name = initial;                              \
-  static constexpr auto kValue = &Self::name;       \
-  static constexpr const char* kValueName = #name
