@@ -30,10 +30,4 @@ Status check_photo_settings(uint8_t time_lapse_interval_s, uint8_t burst_count) 
       check_one_of("burst_count", burst_count, {3, 5}));
 }
 
-Status check_time_of_day(int64_t hour, int64_t minute, int64_t second, int64_t millisecond) {
-  return first_failure(check_int("hour", hour, 0, 23), check_int("minute", minute, 0, 59),
-                       check_int("second", second, 0, 59),
-                       check_int("millisecond", millisecond, 0, 999));
-}
-
 }  // namespace k40t::protocol::camera_codec

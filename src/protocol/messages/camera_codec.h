@@ -8,20 +8,6 @@
 
 namespace k40t::protocol::camera_codec {
 
-// A one-byte code table value on the wire, then `reserved` zero bytes
-// (docs/protocol/decisions.md#a11).
-template <class E>
-void put_code(ByteWriter& w, E code, size_t reserved = 0) {
-  static_assert(std::is_enum_v<E> && sizeof(E) == 1, "one-byte enum expected");
-  w.u8(static_cast<uint8_t>(code));
-  w.zeros(reserved);
-}
-// Decoders report what the sender says, so any code is taken (to_string tells it is undefined).
-template <class E>
-E get_code(ByteReader& r) {
-  static_assert(std::is_enum_v<E> && sizeof(E) == 1, "one-byte enum expected");
-  return static_cast<E>(r.u8());
-}
 // A data ACK (0x010312, 0x010317) is the response code alone, a refusal, or the code and all its
 // data: a payload between the two was cut short.
 Status code_alone_or_whole(size_t payload_size, size_t whole_size);
@@ -39,8 +25,5 @@ Status check_one_of(const char* field, int64_t value, std::initializer_list<int6
 
 // The photo settings of 0x000301 and 0x000003: time-lapse interval 5/7/30/60 s, burst 3/5 photos.
 Status check_photo_settings(uint8_t time_lapse_interval_s, uint8_t burst_count);
-
-// Time of day of 0x000310 and its ACK: hour 0-23, minute 0-59, second 0-59, millisecond 0-999.
-Status check_time_of_day(int64_t hour, int64_t minute, int64_t second, int64_t millisecond);
 
 }  // namespace k40t::protocol::camera_codec
