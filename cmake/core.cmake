@@ -5,6 +5,9 @@ file(GLOB_RECURSE K40T_CORE_SOURCES CONFIGURE_DEPENDS
   ${PROJECT_SOURCE_DIR}/src/transport/*.cpp
   ${PROJECT_SOURCE_DIR}/src/session/*.cpp
   ${PROJECT_SOURCE_DIR}/src/operations/*.cpp)  # ROS-free logic of the driver's actions
+# Boost.Preprocessor (header-only, in the compiler's default include path): codec/field_list.h
+# declares a message's members and layout from one list of fields.
+find_package(Boost 1.71 REQUIRED)
 add_library(k40t_core STATIC ${K40T_CORE_SOURCES})
 target_include_directories(k40t_core PUBLIC ${PROJECT_SOURCE_DIR}/include)
 include(${CMAKE_CURRENT_LIST_DIR}/cfg_enum_names.cmake)  # the enum names of cfg/setting_enums.txt

@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake g++ make pkg-config python3
-  libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
+  libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev libboost-dev
   catkin ros-base-dev python3-rostest rosbash python3-rosbag python3-roslaunch
   libnodeletlib-tools libnodelet-dev pluginlib-dev
   libtf2-ros-dev libtf2-geometry-msgs-dev libimage-transport-dev libcamera-info-manager-dev

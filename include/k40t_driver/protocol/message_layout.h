@@ -22,6 +22,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "k40t_driver/codec/field_list.h"
 #include "k40t_driver/codec/layout.h"
 #include "k40t_driver/protocol/codec_options.h"
 #include "k40t_driver/protocol/message.h"
@@ -165,3 +166,7 @@ inline Status decode(T& m, ByteReader& r, const CodecOptions& o) {
   K40T_MESSAGE_LAYOUT()         \
   template <class S_, class V_> \
   static void layout([[maybe_unused]] S_& s, V_&& v)
+
+// A message whose payload is its fields in order, each declared once (codec/field_list.h):
+//   K40T_FIELDS((ResponseCode, code, wire::response_code), (uint8_t, mode, wire::u8));
+#define K40T_FIELDS(...) K40T_FIELD_LIST(K40T_LAYOUT, __VA_ARGS__)

@@ -3,6 +3,7 @@
 // (section 2.1 and 3.3.9), the visitors' default, and every byte of a layout is required.
 #pragma once
 
+#include "k40t_driver/codec/field_list.h"
 #include "k40t_driver/codec/layout.h"
 
 namespace k40t::psdk {
@@ -29,3 +30,7 @@ using codec::LayoutWriter;
 #define K40T_PSDK_LAYOUT(s, v)  \
   template <class S_, class V_> \
   static void layout([[maybe_unused]] S_& s, [[maybe_unused]] V_&& v)
+
+// A command whose DATA is its fields in order, each declared once (codec/field_list.h):
+//   K40T_PSDK_FIELDS((uint8_t, percentage, wire::u8));
+#define K40T_PSDK_FIELDS(...) K40T_FIELD_LIST(K40T_PSDK_LAYOUT, __VA_ARGS__)

@@ -26,9 +26,7 @@ struct PlainAck {
 
   static constexpr auto kByteOrder = &CodecOptions::ack_byte_order;
 
-  ResponseCode code = ResponseCode::kOk;
-
-  K40T_LAYOUT(s, v) { v("code", s.code, wire::response_code); }
+  K40T_FIELDS((ResponseCode, code, wire::response_code, ResponseCode::kOk));
 };
 
 // The payload of a data ACK, which a refusal may cut to the response code: the code alone, or at

@@ -110,12 +110,8 @@ struct RecordRequest : FileCaptureRequest<RecordLensMode, RecordAction> {
 // Status frame 0x020304 tells when the zoom has arrived.
 struct ZoomRatioRequest {
   K40T_POD_REQUEST(0x000304, "zoom_ratio", "3.2.4.5", 3, 3);
-  double zoom_x = 1.0;
-
-  K40T_LAYOUT(s, v) {
-    v("start", wire::gap, wire::fixed(kStartSettingByte, "start setting"));
-    v("zoom_x", s.zoom_x, kZoomRatioWire);
-  }
+  K40T_FIELDS((start, wire::fixed(kStartSettingByte, "start setting")),
+              (double, zoom_x, kZoomRatioWire, 1.0));
 };
 
 // 0x000306, section 3.2.4.6: continuous zoom in/out, stop, or one step in/out.

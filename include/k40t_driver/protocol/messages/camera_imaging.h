@@ -55,21 +55,10 @@ struct StreamEncodingRequest : ByteSettingRequest<StreamEncodingRequest, Setting
 // are used by area auto focus (4) only and must then span a non-empty box.
 struct FocusRequest {
   K40T_POD_REQUEST(0x000313, "focus", "3.2.4.18", 10, 9);
-  FocusCommand command = FocusCommand::kAuto;
-  uint16_t area_left_px = 0;
-  uint16_t area_top_px = 0;
-  uint16_t area_right_px = 0;
-  uint16_t area_bottom_px = 0;
-
-  // Outside area focus the corners are ignored by the pod but must still fit the stream.
-  K40T_LAYOUT(s, v) {
-    v("command", s.command, wire::u8);
-    v("area_left_px", s.area_left_px, kStreamColumn);
-    v("area_top_px", s.area_top_px, kStreamRow);
-    v("area_right_px", s.area_right_px, kStreamColumn);
-    v("area_bottom_px", s.area_bottom_px, kStreamRow);
-    v("reserved", wire::gap, wire::reserved(1));
-  }
+  K40T_FIELDS((FocusCommand, command, wire::u8, FocusCommand::kAuto),
+              (uint16_t, area_left_px, kStreamColumn), (uint16_t, area_top_px, kStreamRow),
+              (uint16_t, area_right_px, kStreamColumn), (uint16_t, area_bottom_px, kStreamRow),
+              (reserved, wire::reserved(1)));
   Status extra_checks() const;  // area focus: right of left, below top
 };
 
@@ -115,20 +104,10 @@ struct AiRecognitionRequest {
 // its details and the 10-byte total make it one byte.
 struct BoxTrackingRequest {
   K40T_POD_REQUEST(0x000324, "box_tracking", "3.2.4.25", 10, 9);
-  FeatureSwitch tracking = FeatureSwitch::kOn;
-  uint16_t x_px = 0;
-  uint16_t y_px = 0;
-  uint16_t width_px = 0;
-  uint16_t height_px = 0;
-
-  K40T_LAYOUT(s, v) {
-    v("tracking", s.tracking, wire::u8);
-    v("x_px", s.x_px, kStreamColumn);
-    v("y_px", s.y_px, kStreamRow);
-    v("width_px", s.width_px, wire::u16);  // the box stays inside: extra_checks()
-    v("height_px", s.height_px, wire::u16);
-    v("reserved", wire::gap, wire::reserved(1));
-  }
+  K40T_FIELDS((FeatureSwitch, tracking, wire::u8, FeatureSwitch::kOn),
+              (uint16_t, x_px, kStreamColumn), (uint16_t, y_px, kStreamRow),
+              (uint16_t, width_px, wire::u16),  // the box stays inside: extra_checks()
+              (uint16_t, height_px, wire::u16), (reserved, wire::reserved(1)));
   Status extra_checks() const;  // x_px + width_px <= 1920, y_px + height_px <= 1080
 };
 

@@ -52,14 +52,9 @@ struct CameraSystemStatus : PhotoSettings {
 // 0x000008, section 3.2.1.4, 1 Hz: camera upgrade or repair state and progress 0..100 %.
 struct CameraUpgradeStatus {
   K40T_POD_REPORT(0x000008, "camera_upgrade_status", "3.2.1.4", 3, 2);
-  CameraUpgradeState state = CameraUpgradeState::kSucceeded;
-  uint8_t progress_percent = 0;  // 0 start, 100 complete
-
-  K40T_LAYOUT(s, v) {
-    v("state", s.state, wire::u8);
-    v("progress_percent", s.progress_percent, wire::u8.range(0, 100, "%"));
-    v("reserved", wire::gap, wire::reserved(1));
-  }
+  K40T_FIELDS((CameraUpgradeState, state, wire::u8, CameraUpgradeState::kSucceeded),
+              (uint8_t, progress_percent, wire::u8.range(0, 100, "%")),  // 0 start, 100 complete
+              (reserved, wire::reserved(1)));
 };
 
 // Every message struct of this part of the camera family: the catalogue, the catalogue tests and

@@ -46,16 +46,10 @@ struct FormatSdRequest : CommandRequest<0x01> {
 // first. Sent every 10 s right after a pulse on the RTC_IO pin when that pin is wired.
 struct TimeSyncRequest {
   K40T_POD_REQUEST(0x00030E, "time_sync", "3.2.4.13", 16, 16);
-  int64_t unix_time_ms = 0;
-  int32_t tz_minutes_west = 0;  // minutes west of Greenwich: UTC+8 is -480
-  int32_t tz_dst_type = 0;      // type of DST correction (0 = none)
-
-  // Time zones run from UTC-12 (720 minutes west) to UTC+14 (840 minutes east).
-  K40T_LAYOUT(s, v) {
-    v("unix_time_ms", s.unix_time_ms, wire::i64);
-    v("tz_minutes_west", s.tz_minutes_west, wire::i32.range(-840, 720, "min"));
-    v("tz_dst_type", s.tz_dst_type, wire::i32);
-  }
+  K40T_FIELDS((int64_t, unix_time_ms, wire::i64),
+              (int32_t, tz_minutes_west,
+               wire::i32.range(-840, 720, "min")),  // minutes west of Greenwich: UTC+8 is -480
+              (int32_t, tz_dst_type, wire::i32));   // type of DST correction (0 = none)
   // unix_time_ms >= 0 (an int64 range is beyond what a layout's double limits hold exactly).
   Status extra_checks() const;
 };

@@ -205,24 +205,11 @@ struct GimbalDialSpeedRequest {
 struct GimbalVersionAck {
   K40T_POD_DATA_ACK(0x010018, "gimbal_version_ack", "3.1.2.5", kPodToHost, 9);
 
-  ResponseCode code = ResponseCode::kOk;
-  uint8_t hardware_major = 0;
-  uint8_t hardware_minor = 0;
-  uint8_t hardware_patch = 0;
-  uint8_t software_major = 0;
-  uint8_t software_minor = 0;
-  uint8_t software_patch = 0;
-
-  K40T_LAYOUT(s, v) {
-    v("code", s.code, wire::response_code);
-    v("hardware_major", s.hardware_major, wire::u8);
-    v("hardware_minor", s.hardware_minor, wire::u8);
-    v("hardware_patch", s.hardware_patch, wire::u8);
-    v("software_major", s.software_major, wire::u8);
-    v("software_minor", s.software_minor, wire::u8);
-    v("software_patch", s.software_patch, wire::u8);
-    v("reserved", wire::gap, wire::reserved(1));
-  }
+  K40T_FIELDS((ResponseCode, code, wire::response_code, ResponseCode::kOk),
+              (uint8_t, hardware_major, wire::u8), (uint8_t, hardware_minor, wire::u8),
+              (uint8_t, hardware_patch, wire::u8), (uint8_t, software_major, wire::u8),
+              (uint8_t, software_minor, wire::u8), (uint8_t, software_patch, wire::u8),
+              (reserved, wire::reserved(1)));
   // The code alone (a refusal), or the code and all six version numbers.
   Status finish_decode(size_t payload_size) const;
 };

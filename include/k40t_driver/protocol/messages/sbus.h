@@ -79,16 +79,9 @@ struct SbusChannelsRequest {
 struct SbusConfigAck {
   K40T_POD_DATA_ACK(0x010502, "sbus_config_ack", "3.2.6.3", kPodToHost, 14);
 
-  ResponseCode code = ResponseCode::kOk;
-  SbusRangeRequest range;
-  SbusChannelsRequest channels;
-
-  K40T_LAYOUT(s, v) {
-    v("code", s.code, wire::response_code);
-    v("range", s.range, wire::nested);
-    v("channels", s.channels, wire::nested);
-    v("reserved", wire::gap, wire::reserved(1));
-  }
+  K40T_FIELDS((ResponseCode, code, wire::response_code, ResponseCode::kOk),
+              (SbusRangeRequest, range, wire::nested),
+              (SbusChannelsRequest, channels, wire::nested), (reserved, wire::reserved(1)));
   Status extra_checks() const { return range.extra_checks(); }
   // A refusal without the configuration reports none (all zeros), not the defaults.
   Status finish_decode(size_t payload_size);

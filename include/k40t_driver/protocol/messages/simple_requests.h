@@ -36,12 +36,7 @@ struct SwitchRequest {
   static constexpr size_t kMinSize = 1;
   using Ack = AckType;
 
-  bool enable = true;
-
-  K40T_LAYOUT(s, v) {
-    v("enable", s.enable, wire::on_off);
-    v("reserved", wire::gap, wire::reserved(1));
-  }
+  K40T_FIELDS((bool, enable, wire::on_off, true), (reserved, wire::reserved(1)));
 };
 
 }  // namespace k40t::protocol

@@ -70,14 +70,9 @@ struct ThermalContrastRequest : ThermalSetting<ThermalContrastRequest> {
 // ---- 0x00010D, section 3.2.2.8: switch (0 off, 1 on), level 0..100, reserved ---------------
 struct ThermalDenoiseRequest {
   K40T_POD_REQUEST(0x00010D, "thermal_set_denoise", "3.2.2.8", 3, 2);
-  bool denoise_on = false;
-  uint8_t denoise_level = 0;
-
-  K40T_LAYOUT(s, v) {
-    v("denoise_on", s.denoise_on, wire::flag(1, 0));
-    v("denoise_level", s.denoise_level, wire::u8.range(0, kThermalLevelMax));
-    v("reserved", wire::gap, wire::reserved(1));
-  }
+  K40T_FIELDS((bool, denoise_on, wire::flag(1, 0)),
+              (uint8_t, denoise_level, wire::u8.range(0, kThermalLevelMax)),
+              (reserved, wire::reserved(1)));
 };
 
 // ---- 0x00010E, section 3.2.2.9: 0 = off, 1..10 = level -------------------------------------
@@ -91,14 +86,9 @@ struct ThermalEnhancementRequest : ThermalSetting<ThermalEnhancementRequest> {
 struct ThermalSpotRequest {
   K40T_POD_REQUEST(0x00010F, "thermal_set_spot", "3.2.2.10", 5, 4);
 
-  uint16_t x_px = 0;
-  uint16_t y_px = 0;
-
-  K40T_LAYOUT(s, v) {
-    v("x_px", s.x_px, wire::u16.range(0, kThermalPictureWidth));
-    v("y_px", s.y_px, wire::u16.range(0, kThermalPictureHeight));
-    v("reserved", wire::gap, wire::reserved(1));
-  }
+  K40T_FIELDS((uint16_t, x_px, wire::u16.range(0, kThermalPictureWidth)),
+              (uint16_t, y_px, wire::u16.range(0, kThermalPictureHeight)),
+              (reserved, wire::reserved(1)));
 };
 
 // ---- 0x000110, section 3.2.2.11: measurement rectangle, uint16 width, height, centre x, y ----
@@ -107,21 +97,12 @@ struct ThermalSpotRequest {
 struct ThermalAreaRequest {
   K40T_POD_REQUEST(0x000110, "thermal_set_area", "3.2.2.11", 9, 8);
 
-  uint16_t width_px = 0;
-  uint16_t height_px = 0;
-  uint16_t center_x_px = 0;
-  uint16_t center_y_px = 0;
-
-  K40T_LAYOUT(s, v) {
-    v("width_px", s.width_px, wire::u16.range(1, kThermalMeasurableXMax - kThermalMeasurableXMin));
-    v("height_px", s.height_px,
-      wire::u16.range(1, kThermalMeasurableYMax - kThermalMeasurableYMin));
-    v("center_x_px", s.center_x_px,
-      wire::u16.range(kThermalMeasurableXMin, kThermalMeasurableXMax));
-    v("center_y_px", s.center_y_px,
-      wire::u16.range(kThermalMeasurableYMin, kThermalMeasurableYMax));
-    v("reserved", wire::gap, wire::reserved(1));
-  }
+  K40T_FIELDS(
+      (uint16_t, width_px, wire::u16.range(1, kThermalMeasurableXMax - kThermalMeasurableXMin)),
+      (uint16_t, height_px, wire::u16.range(1, kThermalMeasurableYMax - kThermalMeasurableYMin)),
+      (uint16_t, center_x_px, wire::u16.range(kThermalMeasurableXMin, kThermalMeasurableXMax)),
+      (uint16_t, center_y_px, wire::u16.range(kThermalMeasurableYMin, kThermalMeasurableYMax)),
+      (reserved, wire::reserved(1)));
   Status extra_checks() const;  // the rectangle stays inside the measurable area
 };
 

@@ -39,14 +39,10 @@ struct FloatingWindowMessage : Command<CommandSet::kAppFunction, 0x03, Sender::k
 
 // 3.2.9 ACK.
 struct TextInputBoxValue {
-  bool display = false;
-  std::string name;         // at most 31 bytes + NUL
-  std::string description;  // at most 31 bytes + NUL
-  K40T_PSDK_LAYOUT(s, v) {
-    v("display", s.display, wire::u8);
-    v("name", s.name, wire::Text{kTextInputNameSize});
-    v("description", s.description, wire::Text{kTextInputNameSize});
-  }
+  K40T_PSDK_FIELDS((bool, display, wire::u8),
+                   (std::string, name, wire::Text{kTextInputNameSize}),  // at most 31 bytes + NUL
+                   (std::string, description,
+                    wire::Text{kTextInputNameSize}));  // at most 31 bytes + NUL
 };
 
 // 3.2.9: parameters of DJI Pilot's text input box. GetTextInputBox, TextInputBoxAck.

@@ -32,8 +32,7 @@ K40T_PSDK_SETTING(CameraWorkMode, camera_work_mode, CameraWorkModeValue, kCamera
 // 3.4.3: takes effect in shoot-photo mode only.
 struct ShootPhoto : Command<CommandSet::kCamera, 0x03, Sender::kAdapter, PlainAck> {
   K40T_PSDK_NAMED("shoot_photo", "3.4.3");
-  ShootPhotoAction action = ShootPhotoAction::kStart;
-  K40T_PSDK_LAYOUT(s, v) { v("action", s.action, wire::u8); }
+  K40T_PSDK_FIELDS((ShootPhotoAction, action, wire::u8, ShootPhotoAction::kStart));
 };
 
 // 3.4.4 byte 2.
@@ -41,12 +40,8 @@ K40T_PSDK_FLAGS(ShootPhotoState, shooting_single, shooting_interval, shooting_bu
 
 // 3.4.4 ACK.
 struct ShootPhotoStateValue {
-  ShootPhotoState state;
-  uint16_t interval_countdown_s = 0;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("state", s.state, wire::packed8);
-    v("interval_countdown_s", s.interval_countdown_s, wire::u16);
-  }
+  K40T_PSDK_FIELDS((ShootPhotoState, state, wire::packed8),
+                   (uint16_t, interval_countdown_s, wire::u16));
 };
 
 // 3.4.4: GetShootPhotoState, ShootPhotoStateAck.
@@ -85,18 +80,13 @@ K40T_PSDK_SETTING(ShootPhotoMode, shoot_photo_mode, ShootPhotoMode, kCamera, 0x0
 // 3.4.7.
 struct RecordVideo : Command<CommandSet::kCamera, 0x07, Sender::kAdapter, PlainAck> {
   K40T_PSDK_NAMED("record_video", "3.4.7");
-  RecordAction action = RecordAction::kStart;
-  K40T_PSDK_LAYOUT(s, v) { v("action", s.action, wire::u8); }
+  K40T_PSDK_FIELDS((RecordAction, action, wire::u8, RecordAction::kStart));
 };
 
 // 3.4.8 ACK.
 struct RecordStateValue {
-  bool recording = false;
-  uint16_t duration_s = 0;  // of the current recording
-  K40T_PSDK_LAYOUT(s, v) {
-    v("recording", s.recording, wire::u8);
-    v("duration_s", s.duration_s, wire::u16);
-  }
+  K40T_PSDK_FIELDS((bool, recording, wire::u8),
+                   (uint16_t, duration_s, wire::u16));  // of the current recording
 };
 
 // 3.4.8: GetRecordState, RecordStateAck.
@@ -108,18 +98,9 @@ K40T_PSDK_FLAGS(SdCardState, inserted, initializing, read_only, formatted, forma
 
 // 3.4.9 ACK.
 struct SdCardInfoValue {
-  SdCardState state;
-  uint32_t capacity_mb = 0;
-  uint32_t remaining_mb = 0;
-  uint32_t remaining_shots = 0;
-  uint32_t remaining_record_time_s = 0;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("state", s.state, wire::packed16);
-    v("capacity_mb", s.capacity_mb, wire::u32);
-    v("remaining_mb", s.remaining_mb, wire::u32);
-    v("remaining_shots", s.remaining_shots, wire::u32);
-    v("remaining_record_time_s", s.remaining_record_time_s, wire::u32);
-  }
+  K40T_PSDK_FIELDS((SdCardState, state, wire::packed16), (uint32_t, capacity_mb, wire::u32),
+                   (uint32_t, remaining_mb, wire::u32), (uint32_t, remaining_shots, wire::u32),
+                   (uint32_t, remaining_record_time_s, wire::u32));
 };
 
 // 3.4.9: GetSdCardInfo, SdCardInfoAck.
@@ -139,8 +120,7 @@ K40T_PSDK_FLAGS(CameraCapability, camera_commands, optical_zoom, digital_zoom, f
 
 // 3.4.33 ACK.
 struct CameraCapabilityValue {
-  CameraCapability supported;
-  K40T_PSDK_LAYOUT(s, v) { v("supported", s.supported, wire::packed8); }
+  K40T_PSDK_FIELDS((CameraCapability, supported, wire::packed8));
 };
 
 // 3.4.33: GetCameraCapability, CameraCapabilityAck.

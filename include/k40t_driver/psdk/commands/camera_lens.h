@@ -36,12 +36,8 @@ K40T_PSDK_SETTING(MeteringMode, metering_mode, MeteringModeValue, kCamera, 0x20,
 
 // 3.4.13 / 3.4.14: one cell of a 12 x 8 grid.
 struct SpotZone {
-  uint8_t column = 0;  // 0..11
-  uint8_t row = 0;     // 0..7
-  K40T_PSDK_LAYOUT(s, v) {
-    v("column", s.column, wire::bits(0, 4));
-    v("row", s.row, wire::bits(4, 4));
-  }
+  K40T_PSDK_FIELDS((uint8_t, column, wire::bits(0, 4)),  // 0..11
+                   (uint8_t, row, wire::bits(4, 4)));    // 0..7
 };
 
 struct SpotZoneValue {
@@ -90,15 +86,10 @@ K40T_PSDK_SETTING(DigitalZoomFactor, digital_zoom_factor, DigitalZoomFactorValue
 
 // 3.4.21 ACK: focal lengths in 0.1 mm on the wire.
 struct OpticalZoomSpecValue {
-  double max_focal_length_mm = 0;
-  double min_focal_length_mm = 0;
-  double focal_length_step_mm = 0;
+  K40T_PSDK_FIELDS((double, max_focal_length_mm, wire::scaled<uint16_t>(10)),
+                   (double, min_focal_length_mm, wire::scaled<uint16_t>(10)),
+                   (double, focal_length_step_mm, wire::scaled<uint16_t>(10)));
   Status validate() const;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("max_focal_length_mm", s.max_focal_length_mm, wire::scaled<uint16_t>(10));
-    v("min_focal_length_mm", s.min_focal_length_mm, wire::scaled<uint16_t>(10));
-    v("focal_length_step_mm", s.focal_length_step_mm, wire::scaled<uint16_t>(10));
-  }
 };
 
 // 3.4.21: GetOpticalZoomSpec, OpticalZoomSpecAck.
@@ -107,8 +98,7 @@ K40T_PSDK_GET(OpticalZoomSpec, optical_zoom_spec, OpticalZoomSpecValue, kCamera,
 // 3.4.22 / 3.4.23: the document says "1:2 Float" in 0.1 mm; two bytes cannot hold a float, and
 // 3.4.21 gives focal lengths as uint16 0.1 mm, so this is read as uint16 0.1 mm (docs/psdk.md).
 struct FocalLengthValue {
-  double focal_length_mm = 0;
-  K40T_PSDK_LAYOUT(s, v) { v("focal_length_mm", s.focal_length_mm, wire::scaled<uint16_t>(10)); }
+  K40T_PSDK_FIELDS((double, focal_length_mm, wire::scaled<uint16_t>(10)));
 };
 
 // 3.4.22 / 3.4.23: SetOpticalZoomFocalLength, OpticalZoomFocalLengthAck, GetOpticalZoomFocalLength.
@@ -129,12 +119,8 @@ K40T_PSDK_GET(OpticalZoomFactor, optical_zoom_factor, OpticalZoomFactorValue, kC
 // 3.4.25: zoom until the end of travel or 3.4.26.
 struct StartContinuousZoom : Command<CommandSet::kCamera, 0x40, Sender::kAdapter, PlainAck> {
   K40T_PSDK_NAMED("start_continuous_zoom", "3.4.25");
-  ZoomSpeed speed = ZoomSpeed::kNormal;
-  ZoomDirection direction = ZoomDirection::kIn;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("speed", s.speed, wire::u8);
-    v("direction", s.direction, wire::u8);
-  }
+  K40T_PSDK_FIELDS((ZoomSpeed, speed, wire::u8, ZoomSpeed::kNormal),
+                   (ZoomDirection, direction, wire::u8, ZoomDirection::kIn));
 };
 
 // 3.4.26.
@@ -144,8 +130,7 @@ K40T_PSDK_NO_DATA(StopContinuousZoom, kCamera, 0x41, PlainAck, "stop_continuous_
 K40T_PSDK_FLAGS(FocusAssistant, for_auto_focus, for_manual_focus);
 
 struct FocusAssistantValue {
-  FocusAssistant assistant;
-  K40T_PSDK_LAYOUT(s, v) { v("assistant", s.assistant, wire::packed8); }
+  K40T_PSDK_FIELDS((FocusAssistant, assistant, wire::packed8));
 };
 
 // 3.4.27 / 3.4.28: SetFocusAssistant, FocusAssistantAck, GetFocusAssistant.
@@ -154,8 +139,7 @@ K40T_PSDK_SETTING(FocusAssistant, focus_assistant, FocusAssistantValue, kCamera,
 
 // 3.4.29 ACK.
 struct FocusRingUpperBoundValue {
-  uint16_t upper_bound = 0;
-  K40T_PSDK_LAYOUT(s, v) { v("upper_bound", s.upper_bound, wire::u16); }
+  K40T_PSDK_FIELDS((uint16_t, upper_bound, wire::u16));
 };
 
 // 3.4.29: GetFocusRingUpperBound, FocusRingUpperBoundAck.
@@ -164,8 +148,7 @@ K40T_PSDK_GET(FocusRingUpperBound, focus_ring_upper_bound, FocusRingUpperBoundVa
 
 // 3.4.30 / 3.4.31: 0 = infinity .. upper bound = closest focus.
 struct FocusRingValue {
-  uint16_t value = 0;
-  K40T_PSDK_LAYOUT(s, v) { v("value", s.value, wire::u16); }
+  K40T_PSDK_FIELDS((uint16_t, value, wire::u16));
 };
 
 // 3.4.30 / 3.4.31: SetFocusRing, FocusRingAck, GetFocusRing.

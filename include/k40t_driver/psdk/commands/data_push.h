@@ -8,21 +8,10 @@ namespace k40t::psdk {
 
 // Calendar date and time of day, as the time pushes and the positioning set carry them.
 struct DateTime {
-  uint16_t year = 2000;
-  uint8_t month = 1;
-  uint8_t day = 1;
-  uint8_t hour = 0;
-  uint8_t minute = 0;
-  uint8_t second = 0;
+  K40T_PSDK_FIELDS((uint16_t, year, wire::u16, 2000), (uint8_t, month, wire::u8, 1),
+                   (uint8_t, day, wire::u8, 1), (uint8_t, hour, wire::u8),
+                   (uint8_t, minute, wire::u8), (uint8_t, second, wire::u8));
   Status validate() const;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("year", s.year, wire::u16);
-    v("month", s.month, wire::u8);
-    v("day", s.day, wire::u8);
-    v("hour", s.hour, wire::u8);
-    v("minute", s.minute, wire::u8);
-    v("second", s.second, wire::u8);
-  }
 };
 
 // 3.3.1 byte 4.
@@ -39,59 +28,29 @@ K40T_PSDK_FLAGS(OsdkBandwidthFlags, osdk_uplink_within_limit);
 // 3.3.1 (link bandwidth). MSDK uplink is mobile -> payload; OSDK uplink is payload -> onboard.
 struct LinkBandwidthPush : Command<CommandSet::kDataPush, 0x01, Sender::kAdapter, NoAck> {
   K40T_PSDK_NAMED("link_bandwidth_push", "3.3.1");
-  bool image_link_normal = false;
-  uint8_t max_image_link_bandwidth = 0;  // the document gives no unit
-  LinkConnectionState connection;
-  uint32_t msdk_uplink_max_bytes_s = 0;
-  uint32_t msdk_downlink_max_bytes_s = 0;
-  uint32_t network_max_kbit_s = 0;
-  MsdkBandwidthFlags msdk_flags;
-  uint32_t msdk_uplink_bytes_s = 0;
-  uint32_t msdk_downlink_bytes_s = 0;
-  uint32_t network_video_kbit_s = 0;
-  uint32_t network_data_kbit_s = 0;
-  uint32_t osdk_uplink_max_bytes_s = 0;
-  OsdkBandwidthFlags osdk_flags;
-  uint32_t osdk_uplink_bytes_s = 0;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("image_link_normal", s.image_link_normal, wire::u8);
-    v("max_image_link_bandwidth", s.max_image_link_bandwidth, wire::u8);
-    v("reserved", wire::gap, wire::Reserved{1});
-    v("connection", s.connection, wire::packed8);
-    v("msdk_uplink_max_bytes_s", s.msdk_uplink_max_bytes_s, wire::u32);
-    v("msdk_downlink_max_bytes_s", s.msdk_downlink_max_bytes_s, wire::u32);
-    v("network_max_kbit_s", s.network_max_kbit_s, wire::u32);
-    v("msdk_flags", s.msdk_flags, wire::packed8);
-    v("msdk_uplink_bytes_s", s.msdk_uplink_bytes_s, wire::u32);
-    v("msdk_downlink_bytes_s", s.msdk_downlink_bytes_s, wire::u32);
-    v("network_video_kbit_s", s.network_video_kbit_s, wire::u32);
-    v("network_data_kbit_s", s.network_data_kbit_s, wire::u32);
-    v("osdk_uplink_max_bytes_s", s.osdk_uplink_max_bytes_s, wire::u32);
-    v("osdk_flags", s.osdk_flags, wire::packed8);
-    v("osdk_uplink_bytes_s", s.osdk_uplink_bytes_s, wire::u32);
-  }
+  K40T_PSDK_FIELDS(
+      (bool, image_link_normal, wire::u8),
+      (uint8_t, max_image_link_bandwidth, wire::u8),  // the document gives no unit
+      (reserved, wire::Reserved{1}), (LinkConnectionState, connection, wire::packed8),
+      (uint32_t, msdk_uplink_max_bytes_s, wire::u32),
+      (uint32_t, msdk_downlink_max_bytes_s, wire::u32), (uint32_t, network_max_kbit_s, wire::u32),
+      (MsdkBandwidthFlags, msdk_flags, wire::packed8), (uint32_t, msdk_uplink_bytes_s, wire::u32),
+      (uint32_t, msdk_downlink_bytes_s, wire::u32), (uint32_t, network_video_kbit_s, wire::u32),
+      (uint32_t, network_data_kbit_s, wire::u32), (uint32_t, osdk_uplink_max_bytes_s, wire::u32),
+      (OsdkBandwidthFlags, osdk_flags, wire::packed8), (uint32_t, osdk_uplink_bytes_s, wire::u32));
 };
 
 // 3.3.2: the airframe's attitude quaternion (q0 is the scalar part).
 struct AttitudePush : Command<CommandSet::kDataPush, 0x02, Sender::kAdapter, NoAck> {
   K40T_PSDK_NAMED("attitude_push", "3.3.2");
-  float q0 = 1.0f;
-  float q1 = 0.0f;
-  float q2 = 0.0f;
-  float q3 = 0.0f;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("q0", s.q0, wire::f32);
-    v("q1", s.q1, wire::f32);
-    v("q2", s.q2, wire::f32);
-    v("q3", s.q3, wire::f32);
-  }
+  K40T_PSDK_FIELDS((float, q0, wire::f32, 1.0f), (float, q1, wire::f32), (float, q2, wire::f32),
+                   (float, q3, wire::f32));
 };
 
 // 3.3.3 ACK: read only when the push announced power-off.
 struct BatteryInfoAck : Reply<CommandSet::kDataPush, 0x03, Sender::kPayload> {
   K40T_PSDK_NAMED("battery_info_push_ack", "3.3.3");
-  bool power_off_ready = false;  // preparation for power-off complete
-  K40T_PSDK_LAYOUT(s, v) { v("power_off_ready", s.power_off_ready, wire::u8); }
+  K40T_PSDK_FIELDS((bool, power_off_ready, wire::u8));  // preparation for power-off complete
 };
 
 // 3.3.3.
@@ -112,19 +71,12 @@ const char* to_string(GpsSignal signal);
 // 3.3.4.
 struct GpsPush : Command<CommandSet::kDataPush, 0x04, Sender::kAdapter, NoAck> {
   K40T_PSDK_NAMED("gps_push", "3.3.4");
-  double longitude_rad = 0;
-  double latitude_rad = 0;
-  double relative_height_m = 0;  // above the take-off point; 0.1 m on the wire
-  uint8_t satellites = 0;
-  GpsSignal signal = GpsSignal::kNone;
+  K40T_PSDK_FIELDS((double, longitude_rad, wire::f64), (double, latitude_rad, wire::f64),
+                   (double, relative_height_m,
+                    wire::scaled<int16_t>(10)),  // above the take-off point; 0.1 m on the wire
+                   (uint8_t, satellites, wire::u8),
+                   (GpsSignal, signal, wire::u8, GpsSignal::kNone));
   Status validate() const;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("longitude_rad", s.longitude_rad, wire::f64);
-    v("latitude_rad", s.latitude_rad, wire::f64);
-    v("relative_height_m", s.relative_height_m, wire::scaled<int16_t>(10));
-    v("satellites", s.satellites, wire::u8);
-    v("signal", s.signal, wire::u8);
-  }
 };
 
 enum class LandingState : uint8_t { kUnknown = 0, kLanded = 1, kInTheSky = 2 };
@@ -145,27 +97,18 @@ const char* to_string(DroneType type);
 
 // 3.3.5 byte 1.
 struct UavFunctionState {
-  bool compass_abnormal = false;
-  bool motors_rotating = false;
-  LandingState landing = LandingState::kUnknown;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("compass_abnormal", s.compass_abnormal, wire::bit(0));
-    v("motors_rotating", s.motors_rotating, wire::bit(1));
-    v("landing", s.landing, wire::bits(2, 2));
-  }
+  K40T_PSDK_FIELDS((bool, compass_abnormal, wire::bit(0)), (bool, motors_rotating, wire::bit(1)),
+                   (LandingState, landing, wire::bits(2, 2), LandingState::kUnknown));
 };
 
 // 3.3.5.
 struct UavStatePush : Command<CommandSet::kDataPush, 0x05, Sender::kAdapter, NoAck> {
   K40T_PSDK_NAMED("uav_state_push", "3.3.5");
-  UavFunctionState state;
-  double flight_time_s = 0;  // since the motors last started; 0.1 s on the wire
-  DroneType drone_type = DroneType::kUnknown;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("state", s.state, wire::packed8);
-    v("flight_time_s", s.flight_time_s, wire::scaled<uint16_t>(10));
-    v("drone_type", s.drone_type, wire::u8);
-  }
+  K40T_PSDK_FIELDS(
+      (UavFunctionState, state, wire::packed8),
+      (double, flight_time_s,
+       wire::scaled<uint16_t>(10)),  // since the motors last started; 0.1 s on the wire
+      (DroneType, drone_type, wire::u8, DroneType::kUnknown));
 };
 
 // 3.3.6: the mobile app's local date and time, when an app is connected.
@@ -179,78 +122,41 @@ struct AppDateTimePush : Command<CommandSet::kDataPush, 0x06, Sender::kAdapter, 
 // 3.3.7. The document gives no unit; metres (like the RTK height) is this project's reading.
 struct BarometricAltitudePush : Command<CommandSet::kDataPush, 0x07, Sender::kAdapter, NoAck> {
   K40T_PSDK_NAMED("barometric_altitude_push", "3.3.7");
-  float altitude_m = 0;
-  K40T_PSDK_LAYOUT(s, v) { v("altitude_m", s.altitude_m, wire::f32); }
+  K40T_PSDK_FIELDS((float, altitude_m, wire::f32));
 };
 
 // 3.3.8: the GPS receiver's own solution.
 struct RawGpsPush : Command<CommandSet::kDataPush, 0x08, Sender::kAdapter, NoAck> {
   K40T_PSDK_NAMED("raw_gps_push", "3.3.8");
-  uint32_t date_yyyymmdd = 0;  // GMT, decimal digits
-  uint32_t time_hhmmss = 0;    // GMT, decimal digits
-  double longitude_deg = 0;    // 1e-7 deg on the wire
-  double latitude_deg = 0;     // 1e-7 deg on the wire
-  double height_m = 0;         // above sea level; mm on the wire
-  float velocity_north_cm_s = 0;
-  float velocity_east_cm_s = 0;
-  float velocity_down_cm_s = 0;
-  float hdop = 0;
-  float pdop = 0;
-  float fix_state = 0;             // 3 = 3D fix
-  float vertical_accuracy_mm = 0;  // unit not given; taken to be the horizontal one's
-  float horizontal_accuracy_mm = 0;
-  float speed_accuracy_cm_s = 0;
-  uint32_t gps_satellites = 0;
-  uint32_t glonass_satellites = 0;
-  uint16_t total_satellites = 0;
-  uint16_t counter = 0;  // increments per push, wraps at 65535
+  K40T_PSDK_FIELDS(
+      (uint32_t, date_yyyymmdd, wire::u32),                 // GMT, decimal digits
+      (uint32_t, time_hhmmss, wire::u32),                   // GMT, decimal digits
+      (double, longitude_deg, wire::scaled<int32_t>(1e7)),  // 1e-7 deg on the wire
+      (double, latitude_deg, wire::scaled<int32_t>(1e7)),   // 1e-7 deg on the wire
+      (double, height_m, wire::scaled<int32_t>(1000)),      // above sea level; mm on the wire
+      (float, velocity_north_cm_s, wire::f32), (float, velocity_east_cm_s, wire::f32),
+      (float, velocity_down_cm_s, wire::f32), (float, hdop, wire::f32), (float, pdop, wire::f32),
+      (float, fix_state, wire::f32),             // 3 = 3D fix
+      (float, vertical_accuracy_mm, wire::f32),  // unit not given; taken to be the horizontal one's
+      (float, horizontal_accuracy_mm, wire::f32), (float, speed_accuracy_cm_s, wire::f32),
+      (uint32_t, gps_satellites, wire::u32), (uint32_t, glonass_satellites, wire::u32),
+      (uint16_t, total_satellites, wire::u16),
+      (uint16_t, counter, wire::u16));  // increments per push, wraps at 65535
   Status validate() const;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("date_yyyymmdd", s.date_yyyymmdd, wire::u32);
-    v("time_hhmmss", s.time_hhmmss, wire::u32);
-    v("longitude_deg", s.longitude_deg, wire::scaled<int32_t>(1e7));
-    v("latitude_deg", s.latitude_deg, wire::scaled<int32_t>(1e7));
-    v("height_m", s.height_m, wire::scaled<int32_t>(1000));
-    v("velocity_north_cm_s", s.velocity_north_cm_s, wire::f32);
-    v("velocity_east_cm_s", s.velocity_east_cm_s, wire::f32);
-    v("velocity_down_cm_s", s.velocity_down_cm_s, wire::f32);
-    v("hdop", s.hdop, wire::f32);
-    v("pdop", s.pdop, wire::f32);
-    v("fix_state", s.fix_state, wire::f32);
-    v("vertical_accuracy_mm", s.vertical_accuracy_mm, wire::f32);
-    v("horizontal_accuracy_mm", s.horizontal_accuracy_mm, wire::f32);
-    v("speed_accuracy_cm_s", s.speed_accuracy_cm_s, wire::f32);
-    v("gps_satellites", s.gps_satellites, wire::u32);
-    v("glonass_satellites", s.glonass_satellites, wire::u32);
-    v("total_satellites", s.total_satellites, wire::u16);
-    v("counter", s.counter, wire::u16);
-  }
 };
 
 // 3.3.9: the RTK solution.
 struct RawRtkPush : Command<CommandSet::kDataPush, 0x09, Sender::kAdapter, NoAck> {
   K40T_PSDK_NAMED("raw_rtk_push", "3.3.9");
-  double longitude_deg = 0;
-  double latitude_deg = 0;
-  float height_m = 0;  // above sea level
-  float velocity_north_cm_s = 0;
-  float velocity_east_cm_s = 0;
-  float velocity_down_cm_s = 0;
-  int16_t azimuth = 0;           // the document gives no unit
-  uint8_t position_type = 0;     // solution type; the document's value table is a copy of DOP's
-  uint8_t orientation_type = 0;  // likewise
+  K40T_PSDK_FIELDS((double, longitude_deg, wire::f64), (double, latitude_deg, wire::f64),
+                   (float, height_m, wire::f32),  // above sea level
+                   (float, velocity_north_cm_s, wire::f32), (float, velocity_east_cm_s, wire::f32),
+                   (float, velocity_down_cm_s, wire::f32),
+                   (int16_t, azimuth, wire::i16),  // the document gives no unit
+                   (uint8_t, position_type,
+                    wire::u8),  // solution type; the document's value table is a copy of DOP's
+                   (uint8_t, orientation_type, wire::u8));  // likewise
   Status validate() const;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("longitude_deg", s.longitude_deg, wire::f64);
-    v("latitude_deg", s.latitude_deg, wire::f64);
-    v("height_m", s.height_m, wire::f32);
-    v("velocity_north_cm_s", s.velocity_north_cm_s, wire::f32);
-    v("velocity_east_cm_s", s.velocity_east_cm_s, wire::f32);
-    v("velocity_down_cm_s", s.velocity_down_cm_s, wire::f32);
-    v("azimuth", s.azimuth, wire::i16);
-    v("position_type", s.position_type, wire::u8);
-    v("orientation_type", s.orientation_type, wire::u8);
-  }
 };
 
 // 3.3.10: the UTC time of the last PPS rising edge (discard it when it arrives more than 500 ms
@@ -274,16 +180,14 @@ const char* to_string(OtherPayloadType type);
 // 3.3.11: what is mounted on the airframe's main gimbal port.
 struct OtherPayloadTypePush : Command<CommandSet::kDataPush, 0x0B, Sender::kAdapter, NoAck> {
   K40T_PSDK_NAMED("other_payload_type_push", "3.3.11");
-  OtherPayloadType type = OtherPayloadType::kUnknown;
-  K40T_PSDK_LAYOUT(s, v) { v("type", s.type, wire::u8); }
+  K40T_PSDK_FIELDS((OtherPayloadType, type, wire::u8, OtherPayloadType::kUnknown));
 };
 
 // 3.3.12: the main gimbal payload's focal length. The table says byte "1" for a uint16; read
 // as bytes 1:2.
 struct OtherPayloadFocalLengthPush : Command<CommandSet::kDataPush, 0x0C, Sender::kAdapter, NoAck> {
   K40T_PSDK_NAMED("other_payload_focal_length_push", "3.3.12");
-  double focal_length_mm = 0;  // 0.1 mm on the wire
-  K40T_PSDK_LAYOUT(s, v) { v("focal_length_mm", s.focal_length_mm, wire::scaled<uint16_t>(10)); }
+  K40T_PSDK_FIELDS((double, focal_length_mm, wire::scaled<uint16_t>(10)));  // 0.1 mm on the wire
 };
 
 }  // namespace k40t::psdk

@@ -11,8 +11,7 @@ namespace k40t::psdk {
 // A setting whose DATA is one enum byte, `mode`.
 template <class Mode, Mode kDefault>
 struct ModeValue {
-  Mode mode = kDefault;
-  K40T_PSDK_LAYOUT(s, v) { v("mode", s.mode, wire::u8); }
+  K40T_PSDK_FIELDS((Mode, mode, wire::u8, kDefault));
 };
 
 }  // namespace k40t::psdk

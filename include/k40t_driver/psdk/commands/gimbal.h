@@ -30,14 +30,9 @@ K40T_PSDK_FLAGS(GimbalStateFlags, upward_mounted, yaw_at_limit, roll_at_limit, p
 // Three angles in 0.1 degree on the wire, as int16 (the document does not say signed for 3.5.1
 // and says Uint16 for 3.5.6, but angles below zero exist; docs/psdk.md).
 struct GimbalAngles {
-  double pitch_deg = 0;
-  double roll_deg = 0;
-  double yaw_deg = 0;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("pitch_deg", s.pitch_deg, wire::scaled<int16_t>(10));
-    v("roll_deg", s.roll_deg, wire::scaled<int16_t>(10));
-    v("yaw_deg", s.yaw_deg, wire::scaled<int16_t>(10));
-  }
+  K40T_PSDK_FIELDS((double, pitch_deg, wire::scaled<int16_t>(10)),
+                   (double, roll_deg, wire::scaled<int16_t>(10)),
+                   (double, yaw_deg, wire::scaled<int16_t>(10)));
 };
 
 // 3.5.1 ACK.
@@ -67,30 +62,18 @@ K40T_PSDK_NO_DATA(GimbalReturnHead, kGimbal, 0x03, PlainAck, "gimbal_return_head
 // 3.5.4.
 struct ControlGimbalSpeed : Command<CommandSet::kGimbal, 0x04, Sender::kAdapter, PlainAck> {
   K40T_PSDK_NAMED("control_gimbal_speed", "3.5.4");
-  double pitch_rate_deg_s = 0;
-  double roll_rate_deg_s = 0;
-  double yaw_rate_deg_s = 0;
-  GimbalControlAction action = GimbalControlAction::kControl;
+  K40T_PSDK_FIELDS((double, pitch_rate_deg_s, wire::scaled<int16_t>(10)),
+                   (double, roll_rate_deg_s, wire::scaled<int16_t>(10)),
+                   (double, yaw_rate_deg_s, wire::scaled<int16_t>(10)),
+                   (GimbalControlAction, action, wire::u8, GimbalControlAction::kControl));
   Status validate() const;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("pitch_rate_deg_s", s.pitch_rate_deg_s, wire::scaled<int16_t>(10));
-    v("roll_rate_deg_s", s.roll_rate_deg_s, wire::scaled<int16_t>(10));
-    v("yaw_rate_deg_s", s.yaw_rate_deg_s, wire::scaled<int16_t>(10));
-    v("action", s.action, wire::u8);
-  }
 };
 
 // 3.5.5: attitude angles in degrees (no range given).
 struct ControlGimbalAngle : Command<CommandSet::kGimbal, 0x05, Sender::kAdapter, PlainAck> {
   K40T_PSDK_NAMED("control_gimbal_angle", "3.5.5");
-  float pitch_deg = 0;
-  float roll_deg = 0;
-  float yaw_deg = 0;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("pitch_deg", s.pitch_deg, wire::f32);
-    v("roll_deg", s.roll_deg, wire::f32);
-    v("yaw_deg", s.yaw_deg, wire::f32);
-  }
+  K40T_PSDK_FIELDS((float, pitch_deg, wire::f32), (float, roll_deg, wire::f32),
+                   (float, yaw_deg, wire::f32));
 };
 
 // 3.5.6: joint angles.
@@ -120,14 +103,9 @@ K40T_PSDK_GET(CalibrationProgress, calibration_progress, CalibrationProgressValu
 
 // 3.5.9 ACK: body-frame rotation speeds, floats in 0.1 deg/s on the wire.
 struct GimbalAdditionalStatusValue {
-  double pitch_rate_deg_s = 0;
-  double roll_rate_deg_s = 0;
-  double yaw_rate_deg_s = 0;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("pitch_rate_deg_s", s.pitch_rate_deg_s, wire::f32_scaled(10));
-    v("roll_rate_deg_s", s.roll_rate_deg_s, wire::f32_scaled(10));
-    v("yaw_rate_deg_s", s.yaw_rate_deg_s, wire::f32_scaled(10));
-  }
+  K40T_PSDK_FIELDS((double, pitch_rate_deg_s, wire::f32_scaled(10)),
+                   (double, roll_rate_deg_s, wire::f32_scaled(10)),
+                   (double, yaw_rate_deg_s, wire::f32_scaled(10)));
 };
 
 // 3.5.9: GetGimbalAdditionalStatus, GimbalAdditionalStatusAck.
@@ -136,8 +114,7 @@ K40T_PSDK_GET(GimbalAdditionalStatus, gimbal_additional_status, GimbalAdditional
 
 // 3.5.10 ACK.
 struct GimbalCapabilityValue {
-  bool supported = false;
-  K40T_PSDK_LAYOUT(s, v) { v("supported", s.supported, wire::u8); }
+  K40T_PSDK_FIELDS((bool, supported, wire::u8));
 };
 
 // 3.5.10: GetGimbalCapability, GimbalCapabilityAck.

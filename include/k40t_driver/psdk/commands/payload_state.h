@@ -64,14 +64,11 @@ struct Handshake : Command<CommandSet::kPayloadState, 0x03, Sender::kAdapter, Ha
 
 // 3.1.4 ACK.
 struct ProductInfoValue {
-  std::string product_name;       // at most 31 bytes + NUL
-  std::string product_id;         // at most 15 bytes + NUL
-  std::string developer_account;  // at most 63 bytes + NUL
-  K40T_PSDK_LAYOUT(s, v) {
-    v("product_name", s.product_name, wire::Text{kProductNameSize});
-    v("product_id", s.product_id, wire::Text{kProductIdSize});
-    v("developer_account", s.developer_account, wire::Text{kDeveloperAccountSize});
-  }
+  K40T_PSDK_FIELDS((std::string, product_name,
+                    wire::Text{kProductNameSize}),                         // at most 31 bytes + NUL
+                   (std::string, product_id, wire::Text{kProductIdSize}),  // at most 15 bytes + NUL
+                   (std::string, developer_account,
+                    wire::Text{kDeveloperAccountSize}));  // at most 63 bytes + NUL
 };
 
 // 3.1.4: GetProductInfo, ProductInfoAck.
@@ -83,8 +80,7 @@ K40T_PSDK_GET(SkyportVersion, skyport_version, VersionValue, kPayloadState, 0x05
 
 // 3.1.6 ACK.
 struct ProductAliasValue {
-  std::string alias;  // at most 31 bytes + NUL
-  K40T_PSDK_LAYOUT(s, v) { v("alias", s.alias, wire::Text{kProductNameSize}); }
+  K40T_PSDK_FIELDS((std::string, alias, wire::Text{kProductNameSize}));  // at most 31 bytes + NUL
 };
 
 // 3.1.6: GetProductAlias, ProductAliasAck.

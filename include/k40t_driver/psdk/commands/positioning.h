@@ -24,59 +24,29 @@ const char* to_string(PositionSolution solution);
 
 // Bits 0..12 event index, bits 13..15 target point index.
 struct PositionEvent {
-  uint16_t event_index = 0;        // 0..8191
-  uint8_t target_point_index = 0;  // 0..7
-  K40T_PSDK_LAYOUT(s, v) {
-    v("event_index", s.event_index, wire::bits(0, 13));
-    v("target_point_index", s.target_point_index, wire::bits(13, 3));
-  }
+  K40T_PSDK_FIELDS((uint16_t, event_index, wire::bits(0, 13)),         // 0..8191
+                   (uint8_t, target_point_index, wire::bits(13, 3)));  // 0..7
 };
 
 struct PositionRequestPoint {
-  PositionEvent event;
-  uint32_t time_offset_us = 0;  // after the base time, 0..2000000
+  K40T_PSDK_FIELDS((PositionEvent, event, wire::packed16),
+                   (uint32_t, time_offset_us, wire::u32));  // after the base time, 0..2000000
   Status validate() const;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("event", s.event, wire::packed16);
-    v("time_offset_us", s.time_offset_us, wire::u32);
-  }
 };
 
 struct TargetPosition {
-  PositionEvent event;
-  uint32_t time_offset_us = 0;
-  PositionSolution solution = PositionSolution::kNotAvailable;
-  int16_t uav_pitch_deg = 0;  // -180..180, whole degrees on the wire
-  int16_t uav_roll_deg = 0;
-  int16_t uav_yaw_deg = 0;
-  int16_t offset_north_mm = 0;  // RTK main antenna -> target point, NED
-  int16_t offset_east_mm = 0;
-  int16_t offset_down_mm = 0;
-  double longitude_deg = 0;
-  double latitude_deg = 0;
-  double height_m = 0;          // above sea level
-  float longitude_std_dev = 0;  // the document gives no unit
-  float latitude_std_dev = 0;
-  float height_std_dev = 0;
+  K40T_PSDK_FIELDS((PositionEvent, event, wire::packed16), (uint32_t, time_offset_us, wire::u32),
+                   (PositionSolution, solution, wire::u8, PositionSolution::kNotAvailable),
+                   (reserved, wire::Reserved{1}),
+                   (int16_t, uav_pitch_deg, wire::i16),  // -180..180, whole degrees on the wire
+                   (int16_t, uav_roll_deg, wire::i16), (int16_t, uav_yaw_deg, wire::i16),
+                   (int16_t, offset_north_mm, wire::i16),  // RTK main antenna -> target point, NED
+                   (int16_t, offset_east_mm, wire::i16), (int16_t, offset_down_mm, wire::i16),
+                   (double, longitude_deg, wire::f64), (double, latitude_deg, wire::f64),
+                   (double, height_m, wire::f64),          // above sea level
+                   (float, longitude_std_dev, wire::f32),  // the document gives no unit
+                   (float, latitude_std_dev, wire::f32), (float, height_std_dev, wire::f32));
   Status validate() const;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("event", s.event, wire::packed16);
-    v("time_offset_us", s.time_offset_us, wire::u32);
-    v("solution", s.solution, wire::u8);
-    v("reserved", wire::gap, wire::Reserved{1});
-    v("uav_pitch_deg", s.uav_pitch_deg, wire::i16);
-    v("uav_roll_deg", s.uav_roll_deg, wire::i16);
-    v("uav_yaw_deg", s.uav_yaw_deg, wire::i16);
-    v("offset_north_mm", s.offset_north_mm, wire::i16);
-    v("offset_east_mm", s.offset_east_mm, wire::i16);
-    v("offset_down_mm", s.offset_down_mm, wire::i16);
-    v("longitude_deg", s.longitude_deg, wire::f64);
-    v("latitude_deg", s.latitude_deg, wire::f64);
-    v("height_m", s.height_m, wire::f64);
-    v("longitude_std_dev", s.longitude_std_dev, wire::f32);
-    v("latitude_std_dev", s.latitude_std_dev, wire::f32);
-    v("height_std_dev", s.height_std_dev, wire::f32);
-  }
 };
 
 // What 3.7.1's request and its ACK both carry: count, task index, base time, then `count`

@@ -66,14 +66,8 @@ K40T_PSDK_GET(WidgetGroupCount, widget_group_count, CountUpTo<kMaxWidgetGroups>,
               "3.2.6");
 
 struct WidgetValue {
-  WidgetType type = WidgetType::kButton;
-  uint8_t index = 0;
-  int32_t value = 0;
-  K40T_PSDK_LAYOUT(s, v) {
-    v("type", s.type, wire::u8);
-    v("index", s.index, wire::u8);
-    v("value", s.value, wire::i32);
-  }
+  K40T_PSDK_FIELDS((WidgetType, type, wire::u8, WidgetType::kButton), (uint8_t, index, wire::u8),
+                   (int32_t, value, wire::i32));
 };
 
 // 3.2.7 ACK: 1..15 widget values.
