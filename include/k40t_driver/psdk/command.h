@@ -182,20 +182,22 @@ size_t layout_size() {
 template <class T>
 constexpr bool is_ack_v = T::kPacket == PacketType::kAck;
 
-// DATA bytes after the return code (ACKs) or all DATA bytes (commands).
+// DATA bytes after the return code (ACKs) or all DATA bytes (commands), at least and at most: a
+// layout's one size, or the bounds a struct without a layout gives.
+template <class T>
+std::pair<size_t, size_t> body_size_bounds() {
+  if constexpr (detail::HasLayout<T>::value)
+    return {detail::layout_size<T>(), detail::layout_size<T>()};
+  else
+    return {T::kMinBodySize, T::kMaxBodySize};
+}
 template <class T>
 size_t min_body_size() {
-  if constexpr (detail::HasLayout<T>::value)
-    return detail::layout_size<T>();
-  else
-    return T::kMinBodySize;
+  return body_size_bounds<T>().first;
 }
 template <class T>
 size_t max_body_size() {
-  if constexpr (detail::HasLayout<T>::value)
-    return detail::layout_size<T>();
-  else
-    return T::kMaxBodySize;
+  return body_size_bounds<T>().second;
 }
 template <class T>
 size_t min_data_size() {

@@ -3,91 +3,38 @@
 #include <cmath>
 #include <string>
 
+#include "k40t_driver/codec/enum_names.h"
+
 namespace k40t::protocol {
 
 // ---- enums ----------------------------------------------------------------------------------
 const char* to_string(GimbalLinkState state) {
-  switch (state) {
-    case GimbalLinkState::kNormal:
-      return "normal";
-    case GimbalLinkState::kAbnormal:
-      return "abnormal";
-  }
-  return nullptr;
+  return consecutive_name(state, 0, {"normal", "abnormal"});
 }
 
 const char* to_string(GimbalUpgradeState state) {
-  switch (state) {
-    case GimbalUpgradeState::kNormal:
-      return "normal";
-    case GimbalUpgradeState::kKernelUpgradeIncomplete:
-      return "kernel upgrade incomplete";
-    case GimbalUpgradeState::kFirmwareUpgradeIncomplete:
-      return "firmware upgrade incomplete";
-  }
-  return nullptr;
+  return consecutive_name(state, 0,
+                          {"normal", "kernel upgrade incomplete", "firmware upgrade incomplete"});
 }
 
 const char* to_string(GimbalStabilisationState state) {
-  switch (state) {
-    case GimbalStabilisationState::kOff:
-      return "off";
-    case GimbalStabilisationState::kStabilising:
-      return "stabilising";
-    case GimbalStabilisationState::kFailed:
-      return "failed";
-    case GimbalStabilisationState::kFeatureLost:
-      return "feature lost";
-  }
-  return nullptr;
+  return consecutive_name(state, 0, {"off", "stabilising", "failed", "feature lost"});
 }
 
 const char* to_string(GimbalMode mode) {
-  switch (mode) {
-    case GimbalMode::kNone:
-      return "none";
-    case GimbalMode::kCentre:
-      return "centre";
-    case GimbalMode::kLookDown:
-      return "look down";
-  }
-  return nullptr;
+  return consecutive_name(mode, 0, {"none", "centre", "look down"});
 }
 
 const char* to_string(GimbalYawDirection direction) {
-  switch (direction) {
-    case GimbalYawDirection::kLeft:
-      return "left";
-    case GimbalYawDirection::kRight:
-      return "right";
-    case GimbalYawDirection::kStop:
-      return "stop";
-  }
-  return nullptr;
+  return consecutive_name(direction, 0, {"left", "right", "stop"});
 }
 
 const char* to_string(GimbalPitchDirection direction) {
-  switch (direction) {
-    case GimbalPitchDirection::kUp:
-      return "up";
-    case GimbalPitchDirection::kDown:
-      return "down";
-    case GimbalPitchDirection::kStop:
-      return "stop";
-  }
-  return nullptr;
+  return consecutive_name(direction, 0, {"up", "down", "stop"});
 }
 
 const char* to_string(GimbalAimLens lens) {
-  switch (lens) {
-    case GimbalAimLens::kTele:
-      return "telephoto";
-    case GimbalAimLens::kWide:
-      return "wide-angle";
-    case GimbalAimLens::kThermal:
-      return "thermal";
-  }
-  return nullptr;
+  return consecutive_name(lens, 0, {"telephoto", "wide-angle", "thermal"});
 }
 
 // ---- 0x010018 -------------------------------------------------------------------------------

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "k40t_driver/codec/enum_names.h"
 #include "k40t_driver/protocol/cfg_enum_names.h"
 #include "setting_bytes.h"
 
@@ -16,23 +17,11 @@ const char* to_string(ThermalGainMode mode) {
 }
 
 const char* to_string(ThermalMeasurementType type) {
-  switch (type) {
-    case ThermalMeasurementType::kPoint:
-      return "point";
-    case ThermalMeasurementType::kArea:
-      return "area";
-  }
-  return nullptr;
+  return consecutive_name(type, 0, {"point", "area"});
 }
 
 const char* to_string(ThermalCoreType type) {
-  switch (type) {
-    case ThermalCoreType::kSighting:
-      return "sighting";
-    case ThermalCoreType::kRadiometric:
-      return "radiometric";
-  }
-  return nullptr;
+  return consecutive_name(type, 0, {"sighting", "radiometric"});
 }
 
 // ---- 0x010100 ------------------------------------------------------------------------------

@@ -53,22 +53,15 @@ K40T_PSDK_GET(ShootPhotoState, shoot_photo_state, ShootPhotoStateValue, kCamera,
 // (ShootPhotoModeWide, header_variants.h).
 template <class Interval>
 struct BasicShootPhotoMode {
-  ShootPhotoType type = ShootPhotoType::kSingle;
-  uint8_t burst_count = 0;
-  uint8_t interval_count = 0;
-  Interval interval_s = 0;
+  K40T_PSDK_FIELDS((ShootPhotoType, type, wire::u8, ShootPhotoType::kSingle),
+                   (uint8_t, burst_count, wire::u8), (uint8_t, interval_count, wire::u8),
+                   (Interval, interval_s, wire::Raw<Interval>{}));
   Status validate() const {
     // Counts and interval matter only for the type that uses them (0 is reserved there).
     if (type != ShootPhotoType::kInterval) return Status::ok();
     return first_failure(
         check_int("interval_count", interval_count, 1, 255),
         check_int("interval_s", interval_s, 1, std::numeric_limits<Interval>::max(), "s"));
-  }
-  K40T_PSDK_LAYOUT(s, v) {
-    v("type", s.type, wire::u8);
-    v("burst_count", s.burst_count, wire::u8);
-    v("interval_count", s.interval_count, wire::u8);
-    v("interval_s", s.interval_s, wire::Raw<Interval>{});
   }
 };
 struct ShootPhotoMode : BasicShootPhotoMode<uint8_t> {};

@@ -41,11 +41,10 @@ struct SpotZone {
 };
 
 struct SpotZoneValue {
-  SpotZone zone;
+  K40T_PSDK_FIELDS((SpotZone, zone, wire::packed8));
   Status validate() const {
     return first_failure(check_int("column", zone.column, 0, 11), check_int("row", zone.row, 0, 7));
   }
-  K40T_PSDK_LAYOUT(s, v) { v("zone", s.zone, wire::packed8); }
 };
 
 // 3.4.13 / 3.4.14: SetSpotMeteringZone, SpotMeteringZoneAck, GetSpotMeteringZone.
@@ -59,14 +58,9 @@ K40T_PSDK_SETTING(FocusMode, focus_mode, FocusModeValue, kCamera, 0x30, "3.4.15"
 
 // 3.4.17 / 3.4.18: fractions of the image, (0, 0) top left.
 struct FocusZoneValue {
-  float x = 0.5f;
-  float y = 0.5f;
+  K40T_PSDK_FIELDS((float, x, wire::f32, 0.5f), (float, y, wire::f32, 0.5f));
   Status validate() const {
     return first_failure(check_real("x", x, 0.0, 1.0), check_real("y", y, 0.0, 1.0));
-  }
-  K40T_PSDK_LAYOUT(s, v) {
-    v("x", s.x, wire::f32);
-    v("y", s.y, wire::f32);
   }
 };
 
@@ -75,9 +69,8 @@ K40T_PSDK_SETTING(FocusZone, focus_zone, FocusZoneValue, kCamera, 0x32, "3.4.17"
 
 // 3.4.19 / 3.4.20: 1.0 up to the maximum of 3.4.32 (which the codec does not know).
 struct DigitalZoomFactorValue {
-  float factor_x = 1.0f;
+  K40T_PSDK_FIELDS((float, factor_x, wire::f32, 1.0f));
   Status validate() const { return check_real("factor_x", factor_x, 1.0, 1e6); }
-  K40T_PSDK_LAYOUT(s, v) { v("factor_x", s.factor_x, wire::f32); }
 };
 
 // 3.4.19 / 3.4.20: SetDigitalZoomFactor, DigitalZoomFactorAck, GetDigitalZoomFactor.
@@ -107,9 +100,8 @@ K40T_PSDK_SETTING(OpticalZoomFocalLength, optical_zoom_focal_length, FocalLength
 
 // 3.4.24 ACK.
 struct OpticalZoomFactorValue {
-  float factor_x = 1.0f;
+  K40T_PSDK_FIELDS((float, factor_x, wire::f32, 1.0f));
   Status validate() const { return check_real("factor_x", factor_x, 1.0, kMaxOpticalZoomFactor); }
-  K40T_PSDK_LAYOUT(s, v) { v("factor_x", s.factor_x, wire::f32); }
 };
 
 // 3.4.24: GetOpticalZoomFactor, OpticalZoomFactorAck.
@@ -156,9 +148,8 @@ K40T_PSDK_SETTING(FocusRing, focus_ring, FocusRingValue, kCamera, 0x45, "3.4.30"
 
 // 3.4.32 ACK.
 struct DigitalZoomSpecValue {
-  float max_factor_x = 1.0f;
+  K40T_PSDK_FIELDS((float, max_factor_x, wire::f32, 1.0f));
   Status validate() const { return check_real("max_factor_x", max_factor_x, 1.0, 1e6); }
-  K40T_PSDK_LAYOUT(s, v) { v("max_factor_x", s.max_factor_x, wire::f32); }
 };
 
 // 3.4.32: GetDigitalZoomSpec, DigitalZoomSpecAck.

@@ -56,13 +56,8 @@ struct BatteryInfoAck : Reply<CommandSet::kDataPush, 0x03, Sender::kPayload> {
 // 3.3.3.
 struct BatteryInfoPush : Command<CommandSet::kDataPush, 0x03, Sender::kAdapter, BatteryInfoAck> {
   K40T_PSDK_NAMED("battery_info_push", "3.3.3");
-  uint8_t percentage = 0;
-  bool power_off_soon = false;
+  K40T_PSDK_FIELDS((uint8_t, percentage, wire::u8), (bool, power_off_soon, wire::u8));
   Status validate() const { return check_int("percentage", percentage, 0, 100, "%"); }
-  K40T_PSDK_LAYOUT(s, v) {
-    v("percentage", s.percentage, wire::u8);
-    v("power_off_soon", s.power_off_soon, wire::u8);
-  }
 };
 
 enum class GpsSignal : uint8_t { kNone = 0, kVeryWeak = 1, kMedium = 2, kVeryStrong = 3 };

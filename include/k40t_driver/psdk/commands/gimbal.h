@@ -88,13 +88,9 @@ K40T_PSDK_NO_DATA(CalibrateGimbal, kGimbal, 0x07, PlainAck, "calibrate_gimbal", 
 
 // 3.5.8 ACK.
 struct CalibrationProgressValue {
-  uint8_t progress_percent = 0;
-  CalibrationStatus status = CalibrationStatus::kComplete;
+  K40T_PSDK_FIELDS((uint8_t, progress_percent, wire::u8),
+                   (CalibrationStatus, status, wire::u8, CalibrationStatus::kComplete));
   Status validate() const { return check_int("progress_percent", progress_percent, 0, 100, "%"); }
-  K40T_PSDK_LAYOUT(s, v) {
-    v("progress_percent", s.progress_percent, wire::u8);
-    v("status", s.status, wire::u8);
-  }
 };
 
 // 3.5.8: GetCalibrationProgress, CalibrationProgressAck.

@@ -26,9 +26,8 @@ const char* to_string(WidgetType type);
 // An ACK that reports how many there are of something, 0..Max (one byte).
 template <size_t Max>
 struct CountUpTo {
-  uint8_t count = 0;
+  K40T_PSDK_FIELDS((uint8_t, count, wire::u8));
   Status validate() const { return check_int("count", count, 0, static_cast<int64_t>(Max)); }
-  K40T_PSDK_LAYOUT(s, v) { v("count", s.count, wire::u8); }
 };
 
 // 3.2.4: GetWidgetListLength, WidgetListLengthAck.
@@ -56,9 +55,8 @@ struct WidgetListDataAck : Reply<CommandSet::kAppFunction, 0x05, Sender::kPayloa
 struct GetWidgetListData
     : Command<CommandSet::kAppFunction, 0x05, Sender::kAdapter, WidgetListDataAck> {
   K40T_PSDK_NAMED("get_widget_list_data", "3.2.5");
-  uint8_t index = 0;
+  K40T_PSDK_FIELDS((uint8_t, index, wire::u8));
   Status validate() const { return check_int("index", index, 0, kMaxWidgets - 1); }
-  K40T_PSDK_LAYOUT(s, v) { v("index", s.index, wire::u8); }
 };
 
 // 3.2.6: GetWidgetGroupCount, WidgetGroupCountAck: widget values are read in groups of at most 15.
@@ -86,9 +84,8 @@ struct WidgetGroupDataAck : Reply<CommandSet::kAppFunction, 0x07, Sender::kPaylo
 struct GetWidgetGroupData
     : Command<CommandSet::kAppFunction, 0x07, Sender::kAdapter, WidgetGroupDataAck> {
   K40T_PSDK_NAMED("get_widget_group_data", "3.2.7");
-  uint8_t group = 0;
+  K40T_PSDK_FIELDS((uint8_t, group, wire::u8));
   Status validate() const { return check_int("group", group, 0, kMaxWidgetGroups - 1); }
-  K40T_PSDK_LAYOUT(s, v) { v("group", s.group, wire::u8); }
 };
 
 // 3.2.8: DJI Pilot changed a widget.
