@@ -4,14 +4,6 @@
 
 namespace k40t::protocol::camera_codec {
 
-Status code_alone_or_whole(size_t payload_size, size_t whole_size) {
-  constexpr size_t kCodeSize = 2;
-  if (payload_size <= kCodeSize || payload_size >= whole_size) return Status::ok();
-  return Status::fail("the data after the response code need " +
-                      std::to_string(whole_size - kCodeSize) + " bytes, got " +
-                      std::to_string(payload_size - kCodeSize));
-}
-
 Status check_one_of(const char* field, int64_t value, std::initializer_list<int64_t> allowed,
                     const char* unit) {
   std::string list;

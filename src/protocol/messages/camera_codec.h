@@ -8,10 +8,6 @@
 
 namespace k40t::protocol::camera_codec {
 
-// A data ACK (0x010312, 0x010317) is the response code alone, a refusal, or the code and all its
-// data: a payload between the two was cut short.
-Status code_alone_or_whole(size_t payload_size, size_t whole_size);
-
 // check_range for integer fields of any width (the int64_t/double overloads of message.h are
 // ambiguous for a uint16_t checked against int literals).
 inline Status check_int(const char* field, int64_t value, int64_t lo, int64_t hi,

@@ -27,7 +27,7 @@ Status SetIpRequest::extra_checks() const {
 
 // ---- ACK 0x010312 --------------------------------------------------------------------------
 Status GetIpAck::finish_decode(size_t payload_size) const {
-  return camera_codec::code_alone_or_whole(payload_size, kSize);
+  return code_alone_or_at_least(kName, kId, payload_size, kSize);
 }
 
 // ---- ACK 0x010317 --------------------------------------------------------------------------
@@ -36,7 +36,7 @@ std::string CameraVersionAck::version_text() const {
 }
 
 Status CameraVersionAck::finish_decode(size_t payload_size) const {
-  return camera_codec::code_alone_or_whole(payload_size, kSize);
+  return code_alone_or_at_least(kName, kId, payload_size, kSize);
 }
 
 }  // namespace k40t::protocol
