@@ -2,7 +2,6 @@
 
 #include "k40t_driver/sim/number_text.h"
 
-#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -43,31 +42,14 @@ std::string change_faults(ControlTarget& target, Change change) {
   return "ok " + target.faults().describe();
 }
 
-// A number argument: its name in errors, its range, and its value when an optional one is absent.
-struct NumberArg {
-  const char* what;
-  double lo;
-  double hi;
-  double absent = 0;
-};
-
-// A command's required first number and optional second one.
-Result<std::array<double, 2>> two_numbers(const Args& args, const NumberArg& first,
-                                          const NumberArg& second) {
-  const auto a = number(args[0], first.what, first.lo, first.hi);
-  if (!a) return a.status();
-  const auto b = args.size() > 1 ? number(args[1], second.what, second.lo, second.hi)
-                                 : Result<double>(second.absent);
-  if (!b) return b.status();
-  return std::array<double, 2>{*a, *b};
-}
-
 std::string run_refuse(const Args& args, ControlTarget& target) {
-  const auto n = two_numbers(args, {"ID", 0, 0xFFFF}, {"CODE", 1, 0xFFFF, 1});
-  if (!n) return error(n.error());
+  const auto id = number(args[0], "ID", 0, 0xFFFF);
+  if (!id) return error(id.error());
+  const auto code = args.size() > 1 ? number(args[1], "CODE", 1, 0xFFFF) : Result<double>(1.0);
+  if (!code) return error(code.error());
   return change_faults(target, [&](FaultSettings& s) {
-    s.refuse_id = static_cast<uint32_t>((*n)[0]);
-    s.refuse_code = static_cast<uint16_t>((*n)[1]);
+    s.refuse_id = static_cast<uint32_t>(*id);
+    s.refuse_code = static_cast<uint16_t>(*code);
   });
 }
 
@@ -91,20 +73,24 @@ std::string run_rate(const Args& args, ControlTarget& target) {
 }
 
 std::string run_garbage(const Args& args, ControlTarget& target) {
-  const auto n = two_numbers(args, {"RATE", 0, 1}, {"MAX", 1, 64, 16});
-  if (!n) return error(n.error());
+  const auto rate = number(args[0], "RATE", 0, 1);
+  if (!rate) return error(rate.error());
+  const auto max = args.size() > 1 ? number(args[1], "MAX", 1, 64) : Result<double>(16.0);
+  if (!max) return error(max.error());
   return change_faults(target, [&](FaultSettings& s) {
-    s.garbage_rate = (*n)[0];
-    s.garbage_max_bytes = static_cast<size_t>((*n)[1]);
+    s.garbage_rate = *rate;
+    s.garbage_max_bytes = static_cast<size_t>(*max);
   });
 }
 
 std::string run_delay_acks(const Args& args, ControlTarget& target) {
-  const auto n = two_numbers(args, {"MS", 0, 60000}, {"RATE", 0, 1, 1});
-  if (!n) return error(n.error());
+  const auto ms = number(args[0], "MS", 0, 60000);
+  if (!ms) return error(ms.error());
+  const auto rate = args.size() > 1 ? number(args[1], "RATE", 0, 1) : Result<double>(1.0);
+  if (!rate) return error(rate.error());
   return change_faults(target, [&](FaultSettings& s) {
-    s.delay_ack_ms = (*n)[0];
-    s.delay_ack_rate = (*n)[1];
+    s.delay_ack_ms = *ms;
+    s.delay_ack_rate = *rate;
   });
 }
 
