@@ -28,7 +28,8 @@ CaptureWriter::~CaptureWriter() {
   std::fclose(rx_);
 }
 
-void CaptureWriter::write(std::FILE* file, const uint8_t* data, size_t size, uint64_t& counter) {
+void CaptureWriter::write(std::FILE* file, const uint8_t* data, size_t size,
+                          std::atomic<uint64_t>& counter) {
   std::lock_guard<std::mutex> lock(mutex_);
   counter += std::fwrite(data, 1, size, file);
   std::fflush(file);  // a killed simulator still leaves a complete capture
@@ -39,16 +40,6 @@ void CaptureWriter::sent(const uint8_t* data, size_t size) {
 }
 void CaptureWriter::received(const uint8_t* data, size_t size) {
   write(rx_, data, size, bytes_received_);
-}
-
-uint64_t CaptureWriter::bytes_sent() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return bytes_sent_;
-}
-
-uint64_t CaptureWriter::bytes_received() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return bytes_received_;
 }
 
 }  // namespace k40t::sim

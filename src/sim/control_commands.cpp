@@ -12,28 +12,36 @@ namespace k40t::sim {
 namespace {
 
 using Args = std::vector<std::string>;
+using Numbers = std::vector<double>;
 
+// A number a command takes: its name in errors, its range, and its value when it is optional and
+// not given.
+struct NumberArg {
+  const char* what;
+  double lo;
+  double hi;
+  double absent = 0;
+};
+
+// The usage's first word is the command's name; `numbers` are its leading arguments, checked
+// before `run` sees them (as `n`).
 struct Command {
-  const char* name;
   const char* usage;
   size_t min_args;
   size_t max_args;
-  std::string (*run)(const Args& args, ControlTarget& target);
+  std::string (*run)(const Args& args, const Numbers& n, ControlTarget& target);
+  std::vector<NumberArg> numbers = {};
 };
 
 std::string error(const std::string& why) {
   return "error: " + why;
 }
 
-Result<double> number(const std::string& text, const char* what, double lo, double hi) {
-  return parse_number_in(text, what, lo, hi);
-}
-
 std::chrono::milliseconds millis(double seconds) {
   return std::chrono::milliseconds(static_cast<int64_t>(std::llround(seconds * 1000)));
 }
 
-// Changes one fault setting, after checking its argument.
+// Changes fault settings (their arguments are checked already).
 template <class Change>
 std::string change_faults(ControlTarget& target, Change change) {
   FaultSettings settings = target.faults().settings();
@@ -42,80 +50,60 @@ std::string change_faults(ControlTarget& target, Change change) {
   return "ok " + target.faults().describe();
 }
 
-std::string run_refuse(const Args& args, ControlTarget& target) {
-  const auto id = number(args[0], "ID", 0, 0xFFFF);
-  if (!id) return error(id.error());
-  const auto code = args.size() > 1 ? number(args[1], "CODE", 1, 0xFFFF) : Result<double>(1.0);
-  if (!code) return error(code.error());
+std::string run_refuse(const Args&, const Numbers& n, ControlTarget& target) {
   return change_faults(target, [&](FaultSettings& s) {
-    s.refuse_id = static_cast<uint32_t>(*id);
-    s.refuse_code = static_cast<uint16_t>(*code);
+    s.refuse_id = static_cast<uint32_t>(n[0]);
+    s.refuse_code = static_cast<uint16_t>(n[1]);
   });
 }
 
-std::string run_help(const Args&, ControlTarget&) {
+std::string run_help(const Args&, const Numbers&, ControlTarget&) {
   return "ok " + control_help();
 }
-std::string run_status(const Args&, ControlTarget& target) {
+std::string run_status(const Args&, const Numbers&, ControlTarget& target) {
   return "ok " + target.status();
 }
-std::string run_clear(const Args&, ControlTarget& target) {
+std::string run_clear(const Args&, const Numbers&, ControlTarget& target) {
   target.faults().clear();
   return "ok " + target.faults().describe();
 }
 
 // "RATE", a probability, becomes the fault setting kRate (corrupt, drop-acks).
 template <double FaultSettings::*kRate>
-std::string run_rate(const Args& args, ControlTarget& target) {
-  const auto rate = number(args[0], "RATE", 0, 1);
-  if (!rate) return error(rate.error());
-  return change_faults(target, [&](FaultSettings& s) { s.*kRate = *rate; });
+std::string run_rate(const Args&, const Numbers& n, ControlTarget& target) {
+  return change_faults(target, [&](FaultSettings& s) { s.*kRate = n[0]; });
 }
 
-std::string run_garbage(const Args& args, ControlTarget& target) {
-  const auto rate = number(args[0], "RATE", 0, 1);
-  if (!rate) return error(rate.error());
-  const auto max = args.size() > 1 ? number(args[1], "MAX", 1, 64) : Result<double>(16.0);
-  if (!max) return error(max.error());
+std::string run_garbage(const Args&, const Numbers& n, ControlTarget& target) {
   return change_faults(target, [&](FaultSettings& s) {
-    s.garbage_rate = *rate;
-    s.garbage_max_bytes = static_cast<size_t>(*max);
+    s.garbage_rate = n[0];
+    s.garbage_max_bytes = static_cast<size_t>(n[1]);
   });
 }
 
-std::string run_delay_acks(const Args& args, ControlTarget& target) {
-  const auto ms = number(args[0], "MS", 0, 60000);
-  if (!ms) return error(ms.error());
-  const auto rate = args.size() > 1 ? number(args[1], "RATE", 0, 1) : Result<double>(1.0);
-  if (!rate) return error(rate.error());
+std::string run_delay_acks(const Args&, const Numbers& n, ControlTarget& target) {
   return change_faults(target, [&](FaultSettings& s) {
-    s.delay_ack_ms = *ms;
-    s.delay_ack_rate = *rate;
+    s.delay_ack_ms = n[0];
+    s.delay_ack_rate = n[1];
   });
 }
 
-std::string run_silence(const Args& args, ControlTarget& target) {
-  const auto seconds = number(args[0], "SECONDS", 0, 3600);
-  if (!seconds) return error(seconds.error());
-  target.faults().silence_for(millis(*seconds));
+std::string run_silence(const Args& args, const Numbers& n, ControlTarget& target) {
+  target.faults().silence_for(millis(n[0]));
   return "ok silent for " + args[0] + " s";
 }
 
-std::string run_disconnect(const Args& args, ControlTarget& target) {
-  const auto seconds = number(args[0], "SECONDS", 0, 3600);
-  if (!seconds) return error(seconds.error());
-  target.disconnect_for(millis(*seconds));
+std::string run_disconnect(const Args& args, const Numbers& n, ControlTarget& target) {
+  target.disconnect_for(millis(n[0]));
   return "ok disconnected for " + args[0] + " s";
 }
 
-std::string run_seq_jump(const Args& args, ControlTarget& target) {
-  const auto n = number(args[0], "N", 1, 255);
-  if (!n) return error(n.error());
-  target.faults().jump_sequence(static_cast<int>(*n));
+std::string run_seq_jump(const Args&, const Numbers& n, ControlTarget& target) {
+  target.faults().jump_sequence(static_cast<int>(n[0]));
   return "ok " + target.faults().describe();
 }
 
-std::string run_sd(const Args& args, ControlTarget& target) {
+std::string run_sd(const Args& args, const Numbers&, ControlTarget& target) {
   bool known = false;
   std::string state;
   target.with_model([&](PodModel& pod) {
@@ -129,16 +117,14 @@ std::string run_sd(const Args& args, ControlTarget& target) {
 
 // The photo resolution the camera holds and reports (0x010200 byte 3): 0x16 (5160x3870) is one
 // the document lists in the ACK but 0x000202 cannot set, so only this reaches it.
-std::string run_photo_resolution(const Args& args, ControlTarget& target) {
-  const auto code = number(args[0], "CODE", 0x14, 0x16);
-  if (!code) return error(code.error());
+std::string run_photo_resolution(const Args& args, const Numbers& n, ControlTarget& target) {
   target.with_model([&](PodModel& pod) {
-    pod.camera().visible().photo_resolution = static_cast<protocol::PhotoResolution>(*code);
+    pod.camera().visible().photo_resolution = static_cast<protocol::PhotoResolution>(n[0]);
   });
   return "ok photo-resolution " + args[0];
 }
 
-std::string run_self_test(const Args& args, ControlTarget& target) {
+std::string run_self_test(const Args& args, const Numbers&, ControlTarget& target) {
   char* end = nullptr;
   const unsigned long mask = std::strtoul(args[0].c_str(), &end, 0);
   if (args[0].empty() || *end != '\0' || mask > 0x0F)
@@ -147,23 +133,17 @@ std::string run_self_test(const Args& args, ControlTarget& target) {
   return "ok self-test " + args[0];
 }
 
-std::string run_ground_height(const Args& args, ControlTarget& target) {
-  const auto metres = number(args[0], "METRES", 1, 10000);
-  if (!metres) return error(metres.error());
-  target.with_model([&](PodModel& pod) { pod.world().set_ground_height(*metres); });
+std::string run_ground_height(const Args& args, const Numbers& n, ControlTarget& target) {
+  target.with_model([&](PodModel& pod) { pod.world().set_ground_height(n[0]); });
   return "ok ground " + args[0] + " m below the pod";
 }
 
-std::string run_hot_object(const Args& args, ControlTarget& target) {
-  const auto north = number(args[0], "NORTH", -100000, 100000);
-  if (!north) return error(north.error());
-  const auto east = number(args[1], "EAST", -100000, 100000);
-  if (!east) return error(east.error());
-  target.with_model([&](PodModel& pod) { pod.world().set_hot_object(*north, *east); });
+std::string run_hot_object(const Args& args, const Numbers& n, ControlTarget& target) {
+  target.with_model([&](PodModel& pod) { pod.world().set_hot_object(n[0], n[1]); });
   return "ok hot object " + args[0] + " m north, " + args[1] + " m east of the take-off point";
 }
 
-std::string run_photos(const Args&, ControlTarget& target) {
+std::string run_photos(const Args&, const Numbers&, ControlTarget& target) {
   std::ostringstream out;
   out << "ok";
   target.with_model([&](PodModel& pod) {
@@ -199,7 +179,7 @@ void put_point(std::ostream& out, const char* name, const std::optional<Vec3>& p
 // The true state now: Unix time of the model's now, the pod's position and velocity, the
 // vehicle heading the pod uses, the boresight (yaw clockwise from north, pitch up, degrees: where
 // every camera and the laser point), the hot object's centre, the laser spot and its range.
-std::string run_truth(const Args&, ControlTarget& target) {
+std::string run_truth(const Args&, const Numbers&, ControlTarget& target) {
   std::ostringstream out;
   out.precision(12);
   out << "ok";
@@ -219,14 +199,14 @@ std::string run_truth(const Args&, ControlTarget& target) {
   return out.str();
 }
 
-std::string run_geotags(const Args&, ControlTarget& target) {
+std::string run_geotags(const Args&, const Numbers&, ControlTarget& target) {
   std::string text;
   target.with_model([&](PodModel& pod) { text = pod.ground_truth().describe_geotags(); });
   return "ok " + text;
 }
 
 // What the host last sent in 0x000320 (ground_truth.h).
-std::string run_flight_data(const Args&, ControlTarget& target) {
+std::string run_flight_data(const Args&, const Numbers&, ControlTarget& target) {
   std::ostringstream out;
   out.precision(9);
   target.with_model([&](PodModel& pod) {
@@ -239,27 +219,29 @@ std::string run_flight_data(const Args&, ControlTarget& target) {
 }
 
 const std::vector<Command>& commands() {
+  const NumberArg kRate{"RATE", 0, 1};
+  const NumberArg kSeconds{"SECONDS", 0, 3600};
   static const std::vector<Command> kCommands = {
-      {"help", "help", 0, 0, run_help},
-      {"status", "status", 0, 0, run_status},
-      {"clear", "clear", 0, 0, run_clear},
-      {"corrupt", "corrupt RATE", 1, 1, run_rate<&FaultSettings::corrupt_rate>},
-      {"garbage", "garbage RATE [MAX]", 1, 2, run_garbage},
-      {"drop-acks", "drop-acks RATE", 1, 1, run_rate<&FaultSettings::drop_ack_rate>},
-      {"delay-acks", "delay-acks MS [RATE]", 1, 2, run_delay_acks},
-      {"refuse", "refuse ID [CODE]", 1, 2, run_refuse},
-      {"silence", "silence SECONDS", 1, 1, run_silence},
-      {"disconnect", "disconnect SECONDS", 1, 1, run_disconnect},
-      {"seq-jump", "seq-jump N", 1, 1, run_seq_jump},
-      {"sd", "sd absent|insert|fill|normal|abnormal|slow|format-error", 1, 1, run_sd},
-      {"self-test", "self-test MASK", 1, 1, run_self_test},
-      {"photo-resolution", "photo-resolution 0x14|0x15|0x16", 1, 1, run_photo_resolution},
-      {"ground-height", "ground-height METRES", 1, 1, run_ground_height},
-      {"photos", "photos", 0, 0, run_photos},
-      {"truth", "truth", 0, 0, run_truth},
-      {"hot-object", "hot-object NORTH EAST", 2, 2, run_hot_object},
-      {"geotags", "geotags", 0, 0, run_geotags},
-      {"flight-data", "flight-data", 0, 0, run_flight_data},
+      {"help", 0, 0, run_help},
+      {"status", 0, 0, run_status},
+      {"clear", 0, 0, run_clear},
+      {"corrupt RATE", 1, 1, run_rate<&FaultSettings::corrupt_rate>, {kRate}},
+      {"garbage RATE [MAX]", 1, 2, run_garbage, {kRate, {"MAX", 1, 64, 16}}},
+      {"drop-acks RATE", 1, 1, run_rate<&FaultSettings::drop_ack_rate>, {kRate}},
+      {"delay-acks MS [RATE]", 1, 2, run_delay_acks, {{"MS", 0, 60000}, {"RATE", 0, 1, 1}}},
+      {"refuse ID [CODE]", 1, 2, run_refuse, {{"ID", 0, 0xFFFF}, {"CODE", 1, 0xFFFF, 1}}},
+      {"silence SECONDS", 1, 1, run_silence, {kSeconds}},
+      {"disconnect SECONDS", 1, 1, run_disconnect, {kSeconds}},
+      {"seq-jump N", 1, 1, run_seq_jump, {{"N", 1, 255}}},
+      {"sd absent|insert|fill|normal|abnormal|slow|format-error", 1, 1, run_sd},
+      {"self-test MASK", 1, 1, run_self_test},
+      {"photo-resolution 0x14|0x15|0x16", 1, 1, run_photo_resolution, {{"CODE", 0x14, 0x16}}},
+      {"ground-height METRES", 1, 1, run_ground_height, {{"METRES", 1, 10000}}},
+      {"photos", 0, 0, run_photos},
+      {"truth", 0, 0, run_truth},
+      {"hot-object NORTH EAST", 2, 2, run_hot_object, {{"NORTH", -1e5, 1e5}, {"EAST", -1e5, 1e5}}},
+      {"geotags", 0, 0, run_geotags},
+      {"flight-data", 0, 0, run_flight_data},
   };
   return kCommands;
 }
@@ -280,10 +262,18 @@ std::string execute_control_command(const std::string& line, ControlTarget& targ
   Args args;
   for (std::string word; in >> word;) args.push_back(word);
   for (const Command& c : commands()) {
-    if (name != c.name) continue;
-    if (args.size() < c.min_args || args.size() > c.max_args)
-      return error("usage: " + std::string(c.usage));
-    return c.run(args, target);
+    const std::string usage = c.usage;
+    if (usage.substr(0, usage.find(' ')) != name) continue;
+    if (args.size() < c.min_args || args.size() > c.max_args) return error("usage: " + usage);
+    Numbers n;
+    for (const NumberArg& spec : c.numbers) {
+      const size_t i = n.size();
+      const auto v = i < args.size() ? parse_number_in(args[i], spec.what, spec.lo, spec.hi)
+                                     : Result<double>(spec.absent);
+      if (!v) return error(v.error());
+      n.push_back(*v);
+    }
+    return c.run(args, n, target);
   }
   return error("unknown command '" + name + "'; try 'help'");
 }

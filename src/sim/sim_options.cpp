@@ -1,7 +1,7 @@
 #include "k40t_driver/sim/sim_options.h"
 
 #include "k40t_driver/sim/number_text.h"
-#include "k40t_driver/sim/option_table.h"
+#include "k40t_driver/sim/option_kinds.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -17,26 +17,10 @@ Result<double> parse_number(const std::string& option, const std::string& text, 
 }
 
 using OptionSpec = sim::OptionSpec<SimOptions>;
-
-// Where an option writes: the field of the options it sets.
-template <class T>
-using FieldOf = T& (*)(SimOptions&);
-
-// An option whose number within [lo, hi] becomes `field`, converted to its type.
-template <class T>
-OptionSpec number_option(const char* name, const char* argument, const char* help, double lo,
-                         double hi, FieldOf<T> field) {
-  return {name, argument, help,
-          [=](SimOptions& o, const std::string& option, const std::string& v) {
-            const auto n = parse_number(option, v, lo, hi);
-            if (!n) return n.status();
-            field(o) = static_cast<T>(*n);
-            return Status::ok();
-          }};
-}
+using Kinds = OptionKinds<SimOptions>;
 
 OptionSpec byte_order_option(const char* name, const char* argument, const char* help,
-                             FieldOf<protocol::ByteOrder> field) {
+                             Kinds::Field<protocol::ByteOrder> field) {
   return {name, argument, help,
           [=](SimOptions& o, const std::string& option, const std::string& v) {
             const auto order = protocol::parse_byte_order(v);
@@ -46,36 +30,10 @@ OptionSpec byte_order_option(const char* name, const char* argument, const char*
           }};
 }
 
-// "AT:AMOUNT": a fault of `kind` scheduled AT seconds after the start.
-OptionSpec scheduled_option(const char* name, const char* argument, const char* help,
-                            ScheduledFault::Kind kind, double max_amount) {
-  return {name, argument, help,
-          [=](SimOptions& o, const std::string& option, const std::string& v) {
-            const auto f = parse_scheduled_fault(option, v, kind, max_amount);
-            if (!f) return f.status();
-            o.scheduled.push_back(*f);
-            return Status::ok();
-          }};
-}
-
-OptionSpec flag_option(const char* name, const char* help, FieldOf<bool> field) {
-  return {name, nullptr, help, [=](SimOptions& o, const std::string&, const std::string&) {
-            field(o) = true;
-            return Status::ok();
-          }};
-}
-
 const std::vector<OptionSpec>& option_table() {
   static const std::vector<OptionSpec> kOptions = {
-      {"--link", "URL",
-       "where to serve: pty:/tmp/k40t_pod (default; creates the pty and the symlink), "
-       "udp://127.0.0.1:PORT, tcp://127.0.0.1:PORT (the server side of each)",
-       [](SimOptions& o, const std::string&, const std::string& v) {
-         const auto url = server_side_url(v);
-         if (!url) return url.status();
-         o.link = *url;
-         return Status::ok();
-       }},
+      Kinds::link("where to serve: pty:/tmp/k40t_pod (default; creates the pty and the symlink), "
+                  "udp://127.0.0.1:PORT, tcp://127.0.0.1:PORT (the server side of each)"),
       {"--crc-coverage", "header_excluded|whole_frame",
        "docs/protocol/decisions.md#a1: checksum coverage the pod uses, sending and receiving "
        "(default header_excluded)",
@@ -97,30 +55,30 @@ const std::vector<OptionSpec>& option_table() {
           "--laser-status-byte-order", "little|big",
           "byte order of status frame 0x020406 (default little, section 2.1)",
           [](SimOptions& o) -> protocol::ByteOrder& { return o.codec.laser_status_byte_order; }),
-      number_option<int>(
+      Kinds::number<int>(
           "--angle-scale", "N",
           "docs/protocol/decisions.md#a4: 0x000012 angles are degrees x N (default 100)", 1, 1000,
           [](SimOptions& o) -> int& { return o.codec.angle_command_scale; }),
-      number_option<uint8_t>(
+      Kinds::number<uint8_t>(
           "--gimbal-system-id", "N",
           "docs/protocol/decisions.md#a3: system id the gimbal answers from (default 3)", 1, 255,
           [](SimOptions& o) -> uint8_t& { return o.codec.gimbal_address.system; }),
-      number_option<double>("--ground-height", "M",
+      Kinds::number<double>("--ground-height", "M",
                             "flat ground this far below the pod (default 30 m)", 1.0, 10000.0,
                             [](SimOptions& o) -> double& { return o.pod.world.ground_height_m; }),
-      number_option<double>(
+      Kinds::number<double>(
           "--velocity-north", "M/S", "the vehicle flies north at this speed (default 0)", -100.0,
           100.0, [](SimOptions& o) -> double& { return o.pod.vehicle.velocity_north_m_s; }),
-      number_option<double>(
+      Kinds::number<double>(
           "--velocity-east", "M/S", "the vehicle flies east at this speed (default 0)", -100.0,
           100.0, [](SimOptions& o) -> double& { return o.pod.vehicle.velocity_east_m_s; }),
-      number_option<double>("--gps-delay", "S",
+      Kinds::number<double>("--gps-delay", "S",
                             "the GPS request leaves this long after its photo (default 0)", 0.0,
                             5.0, [](SimOptions& o) -> double& { return o.gps_request_delay_s; }),
-      number_option<double>(
+      Kinds::number<double>(
           "--hot-object-temp", "DEGC", "temperature of the hot object (default 85)", -40.0, 2000.0,
           [](SimOptions& o) -> double& { return o.pod.world.hot.temperature_degC; }),
-      number_option<double>("--sd-capacity-mb", "MB", "SD card size (default 65536)", 64.0,
+      Kinds::number<double>("--sd-capacity-mb", "MB", "SD card size (default 65536)", 64.0,
                             655350.0,
                             [](SimOptions& o) -> double& { return o.pod.camera.sd.capacity_mb; }),
       {"--sd", "CONDITION",
@@ -134,49 +92,42 @@ const std::vector<OptionSpec>& option_table() {
          o.sd_condition = v;
          return Status::ok();
        }},
-      flag_option("--single-shot-status",
+      Kinds::flag("--single-shot-status",
                   "send photo status frames for single shots too (the document sends none)",
                   [](SimOptions& o) -> bool& { return o.pod.camera.single_shot_status; }),
-      number_option<double>("--corrupt-rate", "P", "probability per byte sent of a flipped bit",
+      Kinds::number<double>("--corrupt-rate", "P", "probability per byte sent of a flipped bit",
                             0.0, 1.0,
                             [](SimOptions& o) -> double& { return o.faults.corrupt_rate; }),
-      number_option<double>("--garbage-rate", "P",
+      Kinds::number<double>("--garbage-rate", "P",
                             "probability per frame of random bytes before it", 0.0, 1.0,
                             [](SimOptions& o) -> double& { return o.faults.garbage_rate; }),
-      number_option<size_t>("--garbage-max", "N", "at most N garbage bytes at a time (default 16)",
+      Kinds::number<size_t>("--garbage-max", "N", "at most N garbage bytes at a time (default 16)",
                             1, 64,
                             [](SimOptions& o) -> size_t& { return o.faults.garbage_max_bytes; }),
-      number_option<double>("--drop-ack-rate", "P", "probability that a request gets no ACK", 0.0,
+      Kinds::number<double>("--drop-ack-rate", "P", "probability that a request gets no ACK", 0.0,
                             1.0, [](SimOptions& o) -> double& { return o.faults.drop_ack_rate; }),
-      number_option<double>("--delay-ack-ms", "MS", "send ACKs this late", 0.0, 60000.0,
+      Kinds::number<double>("--delay-ack-ms", "MS", "send ACKs this late", 0.0, 60000.0,
                             [](SimOptions& o) -> double& { return o.faults.delay_ack_ms; }),
-      number_option<double>("--delay-ack-rate", "P",
+      Kinds::number<double>("--delay-ack-rate", "P",
                             "probability that an ACK is delayed (default 1)", 0.0, 1.0,
                             [](SimOptions& o) -> double& { return o.faults.delay_ack_rate; }),
-      scheduled_option("--silence", "AT:S",
+      Kinds::scheduled("--silence", "AT:S",
                        "send nothing for S seconds, AT seconds after the start",
                        ScheduledFault::Kind::kSilence, 3600),
-      scheduled_option("--disconnect", "AT:S",
+      Kinds::scheduled("--disconnect", "AT:S",
                        "close the link for S seconds, AT seconds after the start",
                        ScheduledFault::Kind::kDisconnect, 3600),
-      scheduled_option("--seq-jump", "AT:N", "skip N sequence numbers, AT seconds after the start",
+      Kinds::scheduled("--seq-jump", "AT:N", "skip N sequence numbers, AT seconds after the start",
                        ScheduledFault::Kind::kSequenceJump, 255),
-      number_option<uint32_t>("--seed", "N", "seed of the fault generator (default 1)", 0,
+      Kinds::number<uint32_t>("--seed", "N", "seed of the fault generator (default 1)", 0,
                               4294967295.0, [](SimOptions& o) -> uint32_t& { return o.seed; }),
-      {"--capture", "PREFIX",
-       "record every byte to PREFIX.tx.bin (sent) and PREFIX.rx.bin (received)",
-       [](SimOptions& o, const std::string& option, const std::string& v) {
-         if (v.empty()) return Status::fail(option + ": the prefix is empty");
-         o.capture_prefix = v;
-         return Status::ok();
-       }},
-      {"--control", "ENDPOINT",
-       "control socket: PORT or tcp:127.0.0.1:PORT (loopback only) or unix:/path (see 'help' on "
-       "it)",
-       [](SimOptions& o, const std::string&, const std::string& v) {
-         o.control_endpoint = v;
-         return Status::ok();
-       }},
+      Kinds::text("--capture", "PREFIX",
+                  "record every byte to PREFIX.tx.bin (sent) and PREFIX.rx.bin (received)",
+                  [](SimOptions& o) -> std::optional<std::string>& { return o.capture_prefix; }),
+      Kinds::text("--control", "ENDPOINT",
+                  "control socket: PORT or tcp:127.0.0.1:PORT (loopback only) or unix:/path (see "
+                  "'help' on it)",
+                  [](SimOptions& o) -> std::optional<std::string>& { return o.control_endpoint; }),
       {"--rtsp-port", "PORT",
        "also serve the pod's video on rtsp://127.0.0.1:PORT/live/single (the pod's own is port "
        "558), rendered from the model: image mode, palette, zoom and gimbal show in the picture; "
@@ -189,9 +140,9 @@ const std::vector<OptionSpec>& option_table() {
          o.rtsp_port = static_cast<int>(*port);
          return Status::ok();
        }},
-      flag_option("--verbose", "print every frame sent and received",
+      Kinds::flag("--verbose", "print every frame sent and received",
                   [](SimOptions& o) -> bool& { return o.verbose; }),
-      flag_option("--help", "this text", [](SimOptions& o) -> bool& { return o.help; }),
+      Kinds::flag("--help", "this text", [](SimOptions& o) -> bool& { return o.help; }),
   };
   return kOptions;
 }

@@ -76,16 +76,12 @@ Outcome ZoomModel::focus(FocusCommand command, const FocusArea& area) {
       break;
     case FocusCommand::kManualNear:
     case FocusCommand::kManualFar:
-      manual_focus_ = true;
-      break;
     case FocusCommand::kStopManual:
-      manual_focus_ = false;
+      manual_focus_ = command != FocusCommand::kStopManual;
       break;
     case FocusCommand::kAutoAfterZoomOn:
-      auto_focus_after_zoom_ = true;
-      break;
     case FocusCommand::kAutoAfterZoomOff:
-      auto_focus_after_zoom_ = false;
+      auto_focus_after_zoom_ = command == FocusCommand::kAutoAfterZoomOn;
       break;
   }
   return Outcome::kOk;

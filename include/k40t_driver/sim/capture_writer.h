@@ -5,6 +5,7 @@
 // them with sent frames would cut frames in two.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <cstdio>
 #include <memory>
@@ -28,20 +29,20 @@ class CaptureWriter {
 
   const std::string& tx_path() const { return tx_path_; }
   const std::string& rx_path() const { return rx_path_; }
-  uint64_t bytes_sent() const;
-  uint64_t bytes_received() const;
+  uint64_t bytes_sent() const { return bytes_sent_; }
+  uint64_t bytes_received() const { return bytes_received_; }
 
  private:
   CaptureWriter(std::string tx_path, std::FILE* tx, std::string rx_path, std::FILE* rx);
-  void write(std::FILE* file, const uint8_t* data, size_t size, uint64_t& counter);
+  void write(std::FILE* file, const uint8_t* data, size_t size, std::atomic<uint64_t>& counter);
 
-  mutable std::mutex mutex_;
+  std::mutex mutex_;  // one write at a time; the counters are read without it
   std::string tx_path_;
   std::FILE* tx_;
   std::string rx_path_;
   std::FILE* rx_;
-  uint64_t bytes_sent_ = 0;
-  uint64_t bytes_received_ = 0;
+  std::atomic<uint64_t> bytes_sent_{0};
+  std::atomic<uint64_t> bytes_received_{0};
 };
 
 }  // namespace k40t::sim

@@ -55,11 +55,6 @@ void FaultyTransport::poll() {
   (void)inner_->open();  // a device that is absent now is retried by the transport itself
 }
 
-bool FaultyTransport::disconnected() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return disconnected_;
-}
-
 ByteFaultStats FaultyTransport::fault_stats() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return stats_;

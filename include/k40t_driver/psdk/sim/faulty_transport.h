@@ -52,7 +52,6 @@ class FaultyTransport : public transport::Transport {
   // callback.
   void disconnect_for(std::chrono::milliseconds duration);
   void poll();
-  bool disconnected() const;
   ByteFaultStats fault_stats() const;
 
  private:
