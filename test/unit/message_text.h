@@ -1,0 +1,64 @@
+// Messages written as "name=value name=value ..." text, for tests whose samples set or check many
+// fields of one message: one readable statement instead of a line per field. Names and spellings
+// are those of protocol/field_assign.h (integers, reals, bools 0/1/true/false, enums by code or by
+// label with '_' for spaces). A value cannot contain a space: set such a text field by hand.
+// A misspelt name, a value that does not read or a word without '=' fails the test.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "field_recorder.h"
+#include "k40t_driver/protocol/field_assign.h"
+
+namespace k40t::testing {
+
+// The words of `text` as name=value pairs, in the order written; a word without '=' fails the test.
+inline FieldValues field_values_from_text(const std::string& text) {
+  FieldValues values;
+  std::istringstream words(text);
+  for (std::string word; words >> word;) {
+    const size_t equals = word.find('=');
+    if (equals == std::string::npos || equals == 0) {
+      ADD_FAILURE() << "'" << word << "' is not name=value in: " << text;
+      continue;
+    }
+    values.emplace_back(word.substr(0, equals), word.substr(equals + 1));
+  }
+  return values;
+}
+
+// The message T with the fields `text` names set, the others at the struct's defaults.
+template <class T>
+T message_from_text(const std::string& text) {
+  protocol::FieldArgs args;
+  for (const auto& [name, value] : field_values_from_text(text)) {
+    if (!args.emplace(name, value).second)
+      ADD_FAILURE() << T::kName << ": field '" << name << "' given twice in: " << text;
+  }
+  Result<T> message = protocol::message_from_args<T>(args);
+  EXPECT_TRUE(message) << message.error();
+  return message ? message.value() : T{};
+}
+
+// Each field `text` names has that value (field_recorder.h's comparison: numbers as numbers,
+// reals within 1e-9 relative, enums by code or label); the fields it does not name are not
+// checked. A name that is not a field of T is a failure.
+template <class T>
+::testing::AssertionResult fields_are(const T& message, const std::string& text) {
+  const FieldRecorder recorded = record_fields(message);
+  std::string differences;
+  for (const auto& [name, expected] : field_values_from_text(text)) {
+    std::string problem = "field '" + name + "' is not a field of " + T::kName;
+    for (const FieldRecorder::Field& field : recorded.fields()) {
+      if (field.name == name) problem = value_difference(field, expected);
+    }
+    if (!problem.empty()) differences += "  " + problem + "\n";
+  }
+  if (differences.empty()) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << T::kName << " fields differ:\n" << differences;
+}
+
+}  // namespace k40t::testing
