@@ -30,17 +30,31 @@ inline FieldValues field_values_from_text(const std::string& text) {
   return values;
 }
 
-// The message T with the fields `text` names set, the others at the struct's defaults.
+// Sets the fields `text` names in `message` (field_assign.h's assigning visitor, which
+// message_from_args applies to a default message), leaving the others as they are.
 template <class T>
-T message_from_text(const std::string& text) {
+void set_fields(T& message, const std::string& text) {
   protocol::FieldArgs args;
   for (const auto& [name, value] : field_values_from_text(text)) {
     if (!args.emplace(name, value).second)
       ADD_FAILURE() << T::kName << ": field '" << name << "' given twice in: " << text;
   }
-  Result<T> message = protocol::message_from_args<T>(args);
-  EXPECT_TRUE(message) << message.error();
-  return message ? message.value() : T{};
+  protocol::detail::ArgAssigner assigner(args);
+  T::fields(message, assigner);
+  EXPECT_TRUE(assigner.status) << T::kName << ": " << assigner.status.message();
+  for (const auto& [name, value] : args) {
+    bool known = false;
+    for (const std::string& field : assigner.names) known = known || field == name;
+    EXPECT_TRUE(known) << "'" << name << "' is not a field of " << T::kName;
+  }
+}
+
+// The message T with the fields `text` names set, the others at the struct's defaults.
+template <class T>
+T message_from_text(const std::string& text) {
+  T message{};
+  set_fields(message, text);
+  return message;
 }
 
 // Each field `text` names has that value (field_recorder.h's comparison: numbers as numbers,
