@@ -12,6 +12,7 @@ namespace {
 
 namespace p = protocol;
 using namespace testing;  // PodHarness, SimPodTest, request_with, ResponseCode
+using k40t::testing::fields_are;
 using k40t::testing::message_from_text;
 using SimCameraRequests = SimPodTest;
 
@@ -183,15 +184,9 @@ TEST_F(SimCameraRequests, SystemRequestsAnswerWithData) {
   EXPECT_EQ(version.version_text(), "2.1.7");
 
   EXPECT_EQ(h.ask(p::GetIpRequest{}).address, "192.168.144.64");
-  p::SetIpRequest set_ip;
-  set_ip.address = "10.1.2.3";
-  set_ip.netmask = "255.255.0.0";
-  set_ip.gateway = "10.1.0.1";
-  EXPECT_EQ(h.send(set_ip), ResponseCode::kOk);
-  const auto ip = h.ask(p::GetIpRequest{});
-  EXPECT_EQ(ip.address, "10.1.2.3");
-  EXPECT_EQ(ip.netmask, "255.255.0.0");
-  EXPECT_EQ(ip.gateway, "10.1.0.1");
+  const char ip[] = "address=10.1.2.3 netmask=255.255.0.0 gateway=10.1.0.1";
+  EXPECT_EQ(h.send(message_from_text<p::SetIpRequest>(ip)), ResponseCode::kOk);
+  EXPECT_TRUE(fields_are(h.ask(p::GetIpRequest{}), ip));
 
   p::TimeSyncRequest sync;
   sync.unix_time_ms = 1741064767089;  // 2025-03-04T05:06:07.089Z
