@@ -96,11 +96,7 @@ const Bytes kAttitude = {0x00, 0x00, 0x80, 0x3f, 0x00, 0x00, 0x00, 0xbf,
                          0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x80, 0x3e};
 
 TEST(PsdkGolden, AttitudePush) {
-  AttitudePush m;
-  m.q0 = 1.0f;
-  m.q1 = -0.5f;
-  m.q2 = 0.0f;
-  m.q3 = 0.25f;
+  const AttitudePush m{{}, 1.0f, -0.5f, 0.0f, 0.25f};  // q0, q1, q2, q3
   EXPECT_EQ(encoded(m), kAttitude);
   const AttitudePush d = decoded<AttitudePush>(kAttitude);
   EXPECT_EQ(d.q1, -0.5f);
