@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <initializer_list>
 #include <sstream>
 #include <string>
 
@@ -55,6 +56,20 @@ T message_from_text(const std::string& text) {
   T message{};
   set_fields(message, text);
   return message;
+}
+
+// Calls check(name, message) for each field of T set to each of `values`, the other fields at
+// their defaults: for range checks that every field must pass.
+template <class T, class Check>
+void for_each_field_set_to(std::initializer_list<const char*> values, Check check) {
+  const FieldRecorder defaults = record_fields(T{});
+  for (const FieldRecorder::Field& field : defaults.fields()) {
+    for (const char* value : values) {
+      T message{};
+      set_fields(message, field.name + "=" + value);
+      check(field.name, message);
+    }
+  }
 }
 
 // Each field `text` names has that value (field_recorder.h's comparison: numbers as numbers,

@@ -211,24 +211,13 @@ TEST(SbusRanges, RangeValues) {
 }
 
 TEST(SbusRanges, EveryChannel) {
-  const NamedField<SbusChannelsRequest, int> fields[] = {
-      K40T_NAMED_FIELD(SbusChannelsRequest, stream_channel),
-      K40T_NAMED_FIELD(SbusChannelsRequest, zoom_channel),
-      K40T_NAMED_FIELD(SbusChannelsRequest, photo_channel),
-      K40T_NAMED_FIELD(SbusChannelsRequest, record_channel),
-      K40T_NAMED_FIELD(SbusChannelsRequest, pitch_channel),
-      K40T_NAMED_FIELD(SbusChannelsRequest, yaw_channel),
-      K40T_NAMED_FIELD(SbusChannelsRequest, centre_channel)};
-  for (const auto& [name, field] : fields) {
-    for (int bad : {0, 17}) {
-      SbusChannelsRequest m;
-      m.*field = bad;
-      expect_range_error(m, name);
-      SbusConfigAck ack;
-      ack.channels.*field = bad;
-      expect_range_error(ack, name);
-    }
-  }
+  for_each_field_set_to<SbusChannelsRequest>(
+      {"0", "17"}, [](const std::string& name, const SbusChannelsRequest& channels) {
+        expect_range_error(channels, name);
+        SbusConfigAck ack;
+        ack.channels = channels;
+        expect_range_error(ack, name);
+      });
   SbusConfigAck ack;
   ack.range.max_value = 5000;
   expect_range_error(ack, "max_value");
