@@ -2,6 +2,8 @@
 // fields of one message: one readable statement instead of a line per field. Names and spellings
 // are those of protocol/field_assign.h (integers, reals, bools 0/1/true/false, enums by code or by
 // label with '_' for spaces). A value cannot contain a space: set such a text field by hand.
+// Labels that differ only in punctuation ("+1" and "-1" both read "1") are ambiguous: set and
+// check such a field by hand.
 // A misspelt name, a value that does not read or a word without '=' fails the test.
 // Works for the pod's messages (T::fields()) and the PSDK's commands with a layout(), whose bit
 // fields go by their own names ("motors_rotating", not "state.motors_rotating").
