@@ -26,12 +26,7 @@
 
 namespace {
 
-using k40t::protocol::Address;
-using k40t::protocol::CrcCoverage;
-using k40t::protocol::FrameHeader;
-using k40t::protocol::FrameParser;
-using k40t::protocol::FrameView;
-using k40t::protocol::MessageId;
+using namespace k40t::protocol;  // frames, their parser and CRC, addresses
 
 // ---- the input ------------------------------------------------------------------------------
 struct Traffic {
@@ -43,16 +38,16 @@ struct Traffic {
 // Payload sizes from docs/protocol/decisions.md#periodic-reports; ACKs from section 3.3
 // and 3.2.5.1.
 constexpr Traffic kTraffic[] = {
-    {0x000002, 20, 10, k40t::protocol::kGimbalAddress},  // gimbal attitude
-    {0x000004, 34, 5, k40t::protocol::kCameraAddress},   // thermal status
-    {0x000005, 15, 5, k40t::protocol::kCameraAddress},   // visible status
-    {0x000001, 7, 2, k40t::protocol::kGimbalAddress},    // gimbal status
-    {0x000003, 16, 1, k40t::protocol::kCameraAddress},   // camera system status
-    {0x000008, 3, 1, k40t::protocol::kCameraAddress},    // upgrade / repair
-    {0x020303, 7, 1, k40t::protocol::kCameraAddress},    // record status
-    {0x020406, 4, 1, k40t::protocol::kCameraAddress},    // periodic laser range
-    {0x010012, 2, 1, k40t::protocol::kGimbalAddress},    // ACK of a gimbal angle command
-    {0x010400, 4, 1, k40t::protocol::kCameraAddress},    // ACK of single ranging
+    {0x000002, 20, 10, kGimbalAddress},  // gimbal attitude
+    {0x000004, 34, 5, kCameraAddress},   // thermal status
+    {0x000005, 15, 5, kCameraAddress},   // visible status
+    {0x000001, 7, 2, kGimbalAddress},    // gimbal status
+    {0x000003, 16, 1, kCameraAddress},   // camera system status
+    {0x000008, 3, 1, kCameraAddress},    // upgrade / repair
+    {0x020303, 7, 1, kCameraAddress},    // record status
+    {0x020406, 4, 1, kCameraAddress},    // periodic laser range
+    {0x010012, 2, 1, kGimbalAddress},    // ACK of a gimbal angle command
+    {0x010400, 4, 1, kCameraAddress},    // ACK of single ranging
 };
 
 struct Stream {
@@ -72,12 +67,11 @@ Stream make_stream(int seconds, double corrupt_fraction) {
         std::vector<uint8_t> payload(t.payload_size);
         for (auto& b : payload) b = static_cast<uint8_t>(rng());
         FrameHeader h;
-        h.destination = k40t::protocol::kHostAddress;
+        h.destination = kHostAddress;
         h.source = t.source;
         h.sequence = sequence[t.source.system]++;
         h.message_id = t.id;
-        auto frame = k40t::protocol::encode_frame(h, payload.data(), payload.size(),
-                                                  CrcCoverage::kHeaderExcluded);
+        auto frame = encode_frame(h, payload.data(), payload.size(), CrcCoverage::kHeaderExcluded);
         s.bytes.insert(s.bytes.end(), frame->data(), frame->data() + frame->size());
         ++s.frames;
       }
@@ -111,15 +105,15 @@ class BaselineParser {
   void step(uint8_t b, const Callback& on_frame) {
     switch (state_) {
       case State::kStx:
-        if (b == k40t::protocol::kStx) {
+        if (b == kStx) {
           frame_[0] = b;
           size_ = 1;
-          crc_ = k40t::protocol::kCrcInit;
+          crc_ = kCrcInit;
           state_ = State::kLen;
         }
         return;
       case State::kLen:
-        if (b > k40t::protocol::kMaxPayloadSize) {
+        if (b > kMaxPayloadSize) {
           state_ = State::kStx;
           return;
         }
@@ -129,12 +123,11 @@ class BaselineParser {
         return;
       case State::kHeader:
         push(b);
-        if (size_ == k40t::protocol::kHeaderSize)
-          state_ = payload_size_ > 0 ? State::kPayload : State::kCrcLow;
+        if (size_ == kHeaderSize) state_ = payload_size_ > 0 ? State::kPayload : State::kCrcLow;
         return;
       case State::kPayload:
         push(b);
-        if (size_ == k40t::protocol::kHeaderSize + payload_size_) state_ = State::kCrcLow;
+        if (size_ == kHeaderSize + payload_size_) state_ = State::kCrcLow;
         return;
       case State::kCrcLow:
         frame_[size_++] = b;
@@ -149,11 +142,11 @@ class BaselineParser {
   }
   void push(uint8_t b) {
     frame_[size_++] = b;
-    k40t::protocol::crc_accumulate_reference(b, &crc_);
+    crc_accumulate_reference(b, &crc_);
   }
 
   State state_ = State::kStx;
-  std::array<uint8_t, k40t::protocol::kMaxFrameSize> frame_{};
+  std::array<uint8_t, kMaxFrameSize> frame_{};
   size_t size_ = 0;
   size_t payload_size_ = 0;
   uint16_t crc_ = 0;
@@ -220,13 +213,12 @@ template <class T>
 void encode_loop(benchmark::State& state, const T& message, Address destination) {
   FrameHeader h;
   h.destination = destination;
-  h.source = k40t::protocol::kHostAddress;
+  h.source = kHostAddress;
   h.message_id = T::kId;
   size_t bytes = 0;
   for (auto _ : state) {
-    auto payload = k40t::protocol::encode_payload(message);
-    auto frame = k40t::protocol::encode_frame(h, payload->data(), payload->size,
-                                              CrcCoverage::kHeaderExcluded);
+    auto payload = encode_payload(message);
+    auto frame = encode_frame(h, payload->data(), payload->size, CrcCoverage::kHeaderExcluded);
     benchmark::DoNotOptimize(frame->data());
     bytes += frame->size();
     ++h.sequence;
@@ -237,19 +229,19 @@ void encode_loop(benchmark::State& state, const T& message, Address destination)
 }
 
 void BM_EncodeGimbalAttitude(benchmark::State& state) {
-  k40t::protocol::GimbalAttitude m;
+  GimbalAttitude m;
   m.joint_yaw_deg = 12.34;
   m.pitch_deg = -45;
   m.yaw_rate_deg_s = 10.5;
-  encode_loop(state, m, k40t::protocol::kHostAddress);
+  encode_loop(state, m, kHostAddress);
 }
 BENCHMARK(BM_EncodeGimbalAttitude);
 
 void BM_EncodeGimbalAngleRequest(benchmark::State& state) {
-  k40t::protocol::GimbalAngleRequest m;
+  GimbalAngleRequest m;
   m.pitch_deg = -45.5;
   m.yaw_deg = 120.25;
-  encode_loop(state, m, k40t::protocol::kGimbalAddress);
+  encode_loop(state, m, kGimbalAddress);
 }
 BENCHMARK(BM_EncodeGimbalAngleRequest);
 

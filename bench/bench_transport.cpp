@@ -15,6 +15,8 @@
 #include <functional>
 #include <mutex>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "../test/unit/transport_test_support.h"  // free ports, scratch dirs, waiting
@@ -38,6 +40,13 @@ std::unique_ptr<Transport> make(const std::string& url) {
   return made ? std::move(made).value() : nullptr;
 }
 
+// "<scheme>-server://127.0.0.1:<free port>" and "<scheme>://" to the same address.
+std::pair<std::string, std::string> loopback_urls(const std::string& scheme, int socket_type) {
+  const std::string address =
+      "127.0.0.1:" + std::to_string(testing::free_loopback_port(socket_type));
+  return {scheme + "-server://" + address, scheme + "://" + address};
+}
+
 // A server that echoes everything and a client that counts what comes back.
 class EchoPair {
  public:
@@ -49,20 +58,12 @@ class EchoPair {
         server_url = "pty://" + dir_.file("pod");
         client_url = "serial://" + dir_.file("pod") + "?baud=115200";
         break;
-      case Link::kUdp: {
-        const std::string address =
-            "127.0.0.1:" + std::to_string(testing::free_loopback_port(SOCK_DGRAM));
-        server_url = "udp-server://" + address;
-        client_url = "udp://" + address;
+      case Link::kUdp:
+        std::tie(server_url, client_url) = loopback_urls("udp", SOCK_DGRAM);
         break;
-      }
-      case Link::kTcp: {
-        const std::string address =
-            "127.0.0.1:" + std::to_string(testing::free_loopback_port(SOCK_STREAM));
-        server_url = "tcp-server://" + address;
-        client_url = "tcp://" + address;
+      case Link::kTcp:
+        std::tie(server_url, client_url) = loopback_urls("tcp", SOCK_STREAM);
         break;
-      }
     }
     server_ = make(server_url);
     client_ = make(client_url);

@@ -7,6 +7,7 @@
 // and times each from the request to its ACK. Prints p50/p90/p99/max; target p99 <= 20 ms.
 //   k40t_skyport_getter_latency [seconds=10]
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -24,6 +25,16 @@ using namespace k40t;
 using namespace k40t::psdk;
 using namespace k40t::driver::skyport;
 using Clock = std::chrono::steady_clock;
+
+// Whether the getter G was answered with an ACK.
+template <class G>
+bool answered(Session& session) {
+  return static_cast<bool>(session.request(G{}));
+}
+// The getters DJI Pilot polls, asked one after the other.
+constexpr std::array<bool (*)(Session&), 6> kPolledGetters = {
+    answered<GetGimbalState>,       answered<GetRecordState>,    answered<GetSdCardInfo>,
+    answered<GetDigitalZoomFactor>, answered<GetShootPhotoMode>, answered<GetWidgetGroupData>};
 
 // A pod whose calibration takes 2 s to answer (a pod call blocked, as during an outage the
 // driver's service waits for its timeout); everything else answers at once.
@@ -112,27 +123,7 @@ int main(int argc, char** argv) {
       std::this_thread::sleep_for(std::chrono::milliseconds(20));  // the job has started
     }
     const auto t0 = Clock::now();
-    bool ok = false;
-    switch (turn++ % 6) {
-      case 0:
-        ok = static_cast<bool>(session.request(GetGimbalState{}));
-        break;
-      case 1:
-        ok = static_cast<bool>(session.request(GetRecordState{}));
-        break;
-      case 2:
-        ok = static_cast<bool>(session.request(GetSdCardInfo{}));
-        break;
-      case 3:
-        ok = static_cast<bool>(session.request(GetDigitalZoomFactor{}));
-        break;
-      case 4:
-        ok = static_cast<bool>(session.request(GetShootPhotoMode{}));
-        break;
-      default:
-        ok = static_cast<bool>(session.request(GetWidgetGroupData{}));
-        break;
-    }
+    const bool ok = kPolledGetters[turn++ % kPolledGetters.size()](session);
     const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     if (ok) {
       latencies_ms.push_back(ms);

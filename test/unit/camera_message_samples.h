@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "k40t_driver/protocol/messages/camera.h"
+#include "message_text.h"
 
 namespace k40t::protocol::camera_samples {
 
@@ -14,20 +15,11 @@ T sample();
 
 template <>
 inline CameraSystemStatus sample() {
-  CameraSystemStatus m;
-  m.capture_mode = CaptureMode::kVideo;
-  m.stream_resolution = ReportedStreamResolution::k720p30;
-  m.encoding = VideoEncoding::kH265;
-  m.image_mode = ImageMode::kVisibleAlt;
-  m.bitrate = StreamBitrate::k12Mbps;
-  m.photo_mode = PhotoMode::kBurst;
-  m.time_lapse_interval_s = 60;
-  m.burst_count = 5;
-  m.sd_state = SdCardState::kFull;
-  m.sd_total_mb = 655350;
-  m.sd_free_mb = 10;
-  m.sd_used_mb = 655340;
-  return m;
+  return testing::message_from_text<CameraSystemStatus>(
+      "capture_mode=video stream_resolution=720p30 encoding=h265 image_mode=visible_alt "
+      "bitrate=12_Mbit/s photo_mode=burst time_lapse_interval_s=60 burst_count=5 "
+      "sd_state=sd_card_full "
+      "sd_total_mb=655350 sd_free_mb=10 sd_used_mb=655340");
 }
 template <>
 inline CameraUpgradeStatus sample() {
@@ -43,21 +35,15 @@ inline PhotoSettingsRequest sample() {
 }
 template <>
 inline TakePhotoRequest sample() {
-  TakePhotoRequest m;
-  m.lens = PhotoLensMode::kInfraredAndVisible;
-  m.action = PhotoAction::kStop;
-  m.folder = "a";
-  m.name = "b c";
+  auto m = testing::message_from_text<TakePhotoRequest>(
+      "lens=infrared_visible action=stop_burst_only folder=a");
+  m.name = "b c";  // by hand: message_text.h splits at spaces
   return m;
 }
 template <>
 inline RecordRequest sample() {
-  RecordRequest m;
-  m.lens = RecordLensMode::kInfrared;
-  m.action = RecordAction::kStop;
-  m.folder = "rec";
-  m.name = "clip-01";
-  return m;
+  return testing::message_from_text<RecordRequest>(
+      "lens=infrared action=stop_recording folder=rec name=clip-01");
 }
 template <>
 inline ZoomRatioRequest sample() {
@@ -145,19 +131,13 @@ inline BoxTrackingRequest sample() {
 }
 template <>
 inline PhotoStatus sample() {
-  PhotoStatus m;
-  m.lens = PhotoLensMode::kInfrared;
-  m.state = PhotoState::kSdFormatError;
-  m.burst_count = 65535;
-  return m;
+  return testing::message_from_text<PhotoStatus>(
+      "lens=infrared state=sd_card_format_error burst_count=65535");
 }
 template <>
 inline RecordStatus sample() {
-  RecordStatus m;
-  m.lens = RecordLensMode::kVisible;
-  m.state = RecordState::kSdFormatError;
-  m.recording_time_s = 3600;
-  return m;
+  return testing::message_from_text<RecordStatus>(
+      "lens=visible state=sd_card_format_error recording_time_s=3600");
 }
 template <>
 inline ZoomStatus sample() {

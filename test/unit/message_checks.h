@@ -21,16 +21,6 @@ template <class... Requests>
 inline constexpr bool acked_plainly = (std::is_same_v<typename Requests::Ack, protocol::PlainAck> &&
                                        ...);
 
-// A field by its name and member pointer, for tests that loop over several fields of one type:
-//   const NamedField<Msg, int> fields[] = {K40T_NAMED_FIELD(Msg, a), K40T_NAMED_FIELD(Msg, b)};
-template <class T, class F>
-struct NamedField {
-  const char* name;
-  F T::*member;
-};
-#define K40T_NAMED_FIELD(T, f) \
-  { #f, &T::f }
-
 template <class T>
 Result<T> decode_bytes(const std::vector<uint8_t>& payload,
                        const protocol::CodecOptions& options = {}) {

@@ -13,6 +13,7 @@
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/messages/camera.h"
 #include "k40t_driver/protocol/parser.h"
+#include "message_text.h"
 
 namespace k40t::protocol {
 namespace {
@@ -22,7 +23,9 @@ using testing::decode_golden;
 using testing::expect_encodes_to;
 using testing::fields_match;
 using testing::GoldenFrame;
+using testing::message_from_text;
 using testing::record_fields;
+using testing::set_fields;
 
 const char kFile[] = "camera.txt";
 
@@ -190,59 +193,34 @@ TEST(CameraGolden, TimeSyncBuiltInCode) {
 }
 
 TEST(CameraGolden, SetIpBuiltInCode) {
-  SetIpRequest m;
-  m.mode = IpMode::kStatic;
-  m.address = "192.168.144.100";
-  m.netmask = "255.255.255.0";
-  m.gateway = "192.168.144.1";
-  expect_encodes_to(m, golden("set_ip"));
+  expect_encodes_to(message_from_text<SetIpRequest>("mode=static address=192.168.144.100 "
+                                                    "netmask=255.255.255.0 gateway=192.168.144.1"),
+                    golden("set_ip"));
 }
 
 TEST(CameraGolden, GpsAnswerBuiltInCodeEchoesTheRequestTime) {
-  CameraGpsRequest request;
-  request.hour = 14;
-  request.minute = 35;
-  request.second = 12;
-  request.millisecond = 250;
-  CameraGpsAck m = CameraGpsAck::answering(request);
-  m.longitude_deg = 113.9465432;
-  m.latitude_deg = 22.5401234;
-  m.relative_height_m = 120.5;
-  m.altitude_m = 156.3;
-  m.yaw_deg = -45.25;
-  m.roll_deg = 1.5;
-  m.pitch_deg = -2.75;
+  CameraGpsAck m = CameraGpsAck::answering(
+      message_from_text<CameraGpsRequest>("hour=14 minute=35 second=12 millisecond=250"));
+  set_fields(m,
+             "longitude_deg=113.9465432 latitude_deg=22.5401234 relative_height_m=120.5 "
+             "altitude_m=156.3 yaw_deg=-45.25 roll_deg=1.5 pitch_deg=-2.75");
   expect_encodes_to(m, golden("camera_gps_request_ack"));
 }
 
 TEST(CameraGolden, TargetGpsRequestBuiltInCode) {
-  TargetGpsRequest m;
-  m.mount_mask = 0x01;
-  m.fix = GpsFixStatus::kRtkFixed;
-  m.utc_time_ms = 1718000000123;
-  m.longitude_deg = 113.9465432;
-  m.latitude_deg = 22.5401234;
-  m.relative_height_m = 120.512;
-  m.altitude_m = 156.3;
-  m.yaw_deg = -45.25;
-  m.roll_deg = 1.5;
-  m.pitch_deg = -2.75;
-  m.airspeed_m_s = 12.34;
-  m.ground_speed_m_s = 11.5;
-  m.heading_deg = 314.75;
-  m.throttle_percent = 55;
-  m.climb_rate_m_s = -1.2;
-  expect_encodes_to(m, golden("target_gps_request"));
+  expect_encodes_to(
+      message_from_text<TargetGpsRequest>(
+          "mount_mask=0x01 fix=rtk_fixed utc_time_ms=1718000000123 longitude_deg=113.9465432 "
+          "latitude_deg=22.5401234 relative_height_m=120.512 altitude_m=156.3 yaw_deg=-45.25 "
+          "roll_deg=1.5 pitch_deg=-2.75 airspeed_m_s=12.34 ground_speed_m_s=11.5 "
+          "heading_deg=314.75 throttle_percent=55 climb_rate_m_s=-1.2"),
+      golden("target_gps_request"));
 }
 
 TEST(CameraGolden, BoxTrackingBuiltInCode) {
-  BoxTrackingRequest m;
-  m.tracking = FeatureSwitch::kOn;
-  m.x_px = 860;
-  m.y_px = 440;
-  m.width_px = 200;
-  m.height_px = 200;
-  expect_encodes_to(m, golden("box_tracking"));
+  expect_encodes_to(message_from_text<BoxTrackingRequest>(
+                        "tracking=on x_px=860 y_px=440 width_px=200 height_px=200"),
+                    golden("box_tracking"));
 }
 
 }  // namespace

@@ -11,11 +11,12 @@
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "message_checks.h"
+#include "message_text.h"
 
 namespace k40t::protocol {
 namespace {
 
-using namespace testing;  // the checks of golden_checks.h and message_checks.h
+using namespace testing;  // the checks of golden_checks.h, message_checks.h, message_text.h
 
 const char kGolden[] = "gimbal_laser_sbus.txt";
 
@@ -205,12 +206,9 @@ TEST(GimbalGolden, DialSpeedIsDegreesPerSecondTimesFive) {
 TEST(GimbalGolden, VersionAck) {
   const auto v = decode_golden<GimbalVersionAck>(golden(kGolden, "gimbal_version_ack", 0));
   EXPECT_EQ(v.code, ResponseCode::kOk);
-  EXPECT_EQ(v.hardware_major, 1);
-  EXPECT_EQ(v.hardware_minor, 2);
-  EXPECT_EQ(v.hardware_patch, 3);
-  EXPECT_EQ(v.software_major, 2);
-  EXPECT_EQ(v.software_minor, 10);
-  EXPECT_EQ(v.software_patch, 7);
+  EXPECT_TRUE(fields_are(v,
+                         "hardware_major=1 hardware_minor=2 hardware_patch=3 "
+                         "software_major=2 software_minor=10 software_patch=7"));
   expect_encodes_to(v, golden(kGolden, "gimbal_version_ack", 0));
 }
 

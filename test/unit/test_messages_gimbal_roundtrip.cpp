@@ -11,11 +11,12 @@
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "message_checks.h"
+#include "message_text.h"
 
 namespace k40t::protocol {
 namespace {
 
-using namespace testing;  // the checks of golden_checks.h and message_checks.h
+using namespace testing;  // the checks of golden_checks.h, message_checks.h, message_text.h
 
 // ---- round trips ----------------------------------------------------------------------------
 CodecOptions unusual_options() {
@@ -99,24 +100,10 @@ TEST(GimbalRanges, Status) {
                      [](auto& m) { m.stabilisation = static_cast<GimbalStabilisationState>(4); });
 }
 
-TEST(GimbalRanges, Attitude) {
-  const NamedField<GimbalAttitude, double> fields[] = {
-      K40T_NAMED_FIELD(GimbalAttitude, joint_yaw_deg),
-      K40T_NAMED_FIELD(GimbalAttitude, joint_roll_deg),
-      K40T_NAMED_FIELD(GimbalAttitude, joint_pitch_deg),
-      K40T_NAMED_FIELD(GimbalAttitude, yaw_deg),
-      K40T_NAMED_FIELD(GimbalAttitude, roll_deg),
-      K40T_NAMED_FIELD(GimbalAttitude, pitch_deg),
-      K40T_NAMED_FIELD(GimbalAttitude, yaw_rate_deg_s),
-      K40T_NAMED_FIELD(GimbalAttitude, pitch_rate_deg_s),
-      K40T_NAMED_FIELD(GimbalAttitude, roll_rate_deg_s)};
-  for (const auto& [name, field] : fields) {
-    GimbalAttitude m;
-    m.*field = 327.68;  // int16 x100 ends at 327.67
-    expect_range_error(m, name);
-    m.*field = -327.69;
-    expect_range_error(m, name);
-  }
+TEST(GimbalRanges, Attitude) {  // every angle and rate: int16 x100 ends at -327.68 and 327.67
+  for_each_field_set_to<GimbalAttitude>(
+      {"327.68", "-327.69"},
+      [](const std::string& name, const GimbalAttitude& m) { expect_range_error(m, name); });
 }
 
 TEST(GimbalRanges, Control) {

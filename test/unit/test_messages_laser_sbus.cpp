@@ -9,11 +9,12 @@
 #include "k40t_driver/protocol/messages/laser.h"
 #include "k40t_driver/protocol/messages/sbus.h"
 #include "message_checks.h"
+#include "message_text.h"
 
 namespace k40t::protocol {
 namespace {
 
-using namespace testing;  // the checks of golden_checks.h and message_checks.h
+using namespace testing;  // the test helpers included above
 
 const char kGolden[] = "gimbal_laser_sbus.txt";
 
@@ -118,19 +119,13 @@ TEST(SbusGolden, RangeRequestIsLittleEndian) {
 }
 
 TEST(SbusGolden, ChannelsAreNumberedFromOne) {
-  SbusChannelsRequest m;
-  m.stream_channel = 9;
-  m.zoom_channel = 10;
-  m.photo_channel = 11;
-  m.record_channel = 12;
-  m.pitch_channel = 2;
-  m.yaw_channel = 1;      // wire 0
-  m.centre_channel = 16;  // wire 15
+  // yaw 1 and centre 16 are 0 and 15 on the wire.
+  const auto m = message_from_text<SbusChannelsRequest>(
+      "stream_channel=9 zoom_channel=10 photo_channel=11 record_channel=12 pitch_channel=2 "
+      "yaw_channel=1 centre_channel=16");
   expect_encodes_to(m, golden(kGolden, "sbus_channels"));
   const auto d = decode_golden<SbusChannelsRequest>(golden(kGolden, "sbus_channels"));
-  EXPECT_EQ(d.yaw_channel, 1);
-  EXPECT_EQ(d.centre_channel, 16);
-  EXPECT_EQ(d.record_channel, 12);
+  EXPECT_TRUE(fields_are(d, "yaw_channel=1 centre_channel=16 record_channel=12"));
 }
 
 TEST(SbusGolden, ConfigRequestAndAck) {
@@ -139,13 +134,9 @@ TEST(SbusGolden, ConfigRequestAndAck) {
   EXPECT_EQ(ack.code, ResponseCode::kOk);
   EXPECT_EQ(ack.range.max_value, 2000);  // 07 D0, big-endian (docs/protocol/decisions.md#a2)
   EXPECT_EQ(ack.range.min_value, 100);
-  EXPECT_EQ(ack.channels.stream_channel, 1);
-  EXPECT_EQ(ack.channels.zoom_channel, 2);
-  EXPECT_EQ(ack.channels.photo_channel, 3);
-  EXPECT_EQ(ack.channels.record_channel, 4);
-  EXPECT_EQ(ack.channels.pitch_channel, 5);
-  EXPECT_EQ(ack.channels.yaw_channel, 6);
-  EXPECT_EQ(ack.channels.centre_channel, 7);
+  EXPECT_TRUE(fields_are(ack.channels,
+                         "stream_channel=1 zoom_channel=2 photo_channel=3 record_channel=4 "
+                         "pitch_channel=5 yaw_channel=6 centre_channel=7"));
   expect_encodes_to(ack, golden(kGolden, "sbus_config_ack"));
 }
 
@@ -182,14 +173,9 @@ TEST(LaserSbusRoundTrip, EveryStruct) {
   SbusRangeRequest range;
   range.max_value = 2047;
   range.min_value = 0;
-  SbusChannelsRequest channels;
-  channels.stream_channel = 16;
-  channels.zoom_channel = 15;
-  channels.photo_channel = 14;
-  channels.record_channel = 13;
-  channels.pitch_channel = 12;
-  channels.yaw_channel = 11;
-  channels.centre_channel = 1;
+  const auto channels = message_from_text<SbusChannelsRequest>(
+      "stream_channel=16 zoom_channel=15 photo_channel=14 record_channel=13 pitch_channel=12 "
+      "yaw_channel=11 centre_channel=1");
   SbusConfigAck config;
   config.code = ResponseCode::kBusy;
   config.range = range;
@@ -225,24 +211,13 @@ TEST(SbusRanges, RangeValues) {
 }
 
 TEST(SbusRanges, EveryChannel) {
-  const NamedField<SbusChannelsRequest, int> fields[] = {
-      K40T_NAMED_FIELD(SbusChannelsRequest, stream_channel),
-      K40T_NAMED_FIELD(SbusChannelsRequest, zoom_channel),
-      K40T_NAMED_FIELD(SbusChannelsRequest, photo_channel),
-      K40T_NAMED_FIELD(SbusChannelsRequest, record_channel),
-      K40T_NAMED_FIELD(SbusChannelsRequest, pitch_channel),
-      K40T_NAMED_FIELD(SbusChannelsRequest, yaw_channel),
-      K40T_NAMED_FIELD(SbusChannelsRequest, centre_channel)};
-  for (const auto& [name, field] : fields) {
-    for (int bad : {0, 17}) {
-      SbusChannelsRequest m;
-      m.*field = bad;
-      expect_range_error(m, name);
-      SbusConfigAck ack;
-      ack.channels.*field = bad;
-      expect_range_error(ack, name);
-    }
-  }
+  for_each_field_set_to<SbusChannelsRequest>(
+      {"0", "17"}, [](const std::string& name, const SbusChannelsRequest& channels) {
+        expect_range_error(channels, name);
+        SbusConfigAck ack;
+        ack.channels = channels;
+        expect_range_error(ack, name);
+      });
   SbusConfigAck ack;
   ack.range.max_value = 5000;
   expect_range_error(ack, "max_value");

@@ -3,9 +3,11 @@
 // and decode them back to the same physical values.
 #include <gtest/gtest.h>
 
+#include <string>
 #include <vector>
 
 #include "k40t_driver/psdk/commands/all.h"
+#include "message_text.h"
 #include "psdk_data_codec.h"
 
 namespace k40t::psdk {
@@ -14,6 +16,8 @@ namespace {
 using test::Bytes;
 using test::decoded;
 using test::encoded;
+using testing::fields_are;
+using testing::message_from_text;
 
 // 3.3.4: double longitude 2.0 rad, double latitude -0.5 rad, int16 12.3 m as 123 (0.1 m),
 // 14 satellites, signal 3 (very strong).
@@ -21,19 +25,10 @@ const Bytes kGps = {0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x40, 0x00, 0x00,
                     0x00, 0x00, 0x00, 0x00, 0xe0, 0xbf, 0x7b, 0x00, 0x0e, 0x03};
 
 TEST(PsdkGolden, GpsPush) {
-  GpsPush m;
-  m.longitude_rad = 2.0;
-  m.latitude_rad = -0.5;
-  m.relative_height_m = 12.3;
-  m.satellites = 14;
-  m.signal = GpsSignal::kVeryStrong;
-  EXPECT_EQ(encoded(m), kGps);
-  const GpsPush d = decoded<GpsPush>(kGps);
-  EXPECT_EQ(d.longitude_rad, 2.0);
-  EXPECT_EQ(d.latitude_rad, -0.5);
-  EXPECT_DOUBLE_EQ(d.relative_height_m, 12.3);
-  EXPECT_EQ(d.satellites, 14);
-  EXPECT_EQ(d.signal, GpsSignal::kVeryStrong);
+  const char fields[] =
+      "longitude_rad=2.0 latitude_rad=-0.5 relative_height_m=12.3 satellites=14 signal=very_strong";
+  EXPECT_EQ(encoded(message_from_text<GpsPush>(fields)), kGps);
+  EXPECT_TRUE(fields_are(decoded<GpsPush>(kGps), fields));
 }
 
 // 3.3.5: byte 1 = bit 1 motors rotating + bits 2-3 = 2 (in the sky) = 0x0A; uint16 123.4 s as
@@ -41,18 +36,10 @@ TEST(PsdkGolden, GpsPush) {
 const Bytes kUavState = {0x0a, 0xd2, 0x04, 0x08};
 
 TEST(PsdkGolden, UavStatePush) {
-  UavStatePush m;
-  m.state.motors_rotating = true;
-  m.state.landing = LandingState::kInTheSky;
-  m.flight_time_s = 123.4;
-  m.drone_type = DroneType::kM210RtkV2;
-  EXPECT_EQ(encoded(m), kUavState);
-  const UavStatePush d = decoded<UavStatePush>(kUavState);
-  EXPECT_FALSE(d.state.compass_abnormal);
-  EXPECT_TRUE(d.state.motors_rotating);
-  EXPECT_EQ(d.state.landing, LandingState::kInTheSky);
-  EXPECT_DOUBLE_EQ(d.flight_time_s, 123.4);
-  EXPECT_EQ(d.drone_type, DroneType::kM210RtkV2);
+  const std::string fields =
+      "motors_rotating=true landing=in_the_sky flight_time_s=123.4 drone_type=M210_RTK_V2";
+  EXPECT_EQ(encoded(message_from_text<UavStatePush>(fields)), kUavState);
+  EXPECT_TRUE(fields_are(decoded<UavStatePush>(kUavState), fields + " compass_abnormal=false"));
 }
 
 // 3.3.1: 42 bytes. baseband 1, max bandwidth 20, reserved 0, connection bits 0 (RC) + 3 (app)
@@ -64,31 +51,19 @@ const Bytes kBandwidth = {0x01, 0x14, 0x00, 0x09, 0xe8, 0x03, 0x00, 0x00, 0xd0, 
                           0x00, 0x00, 0x01, 0x00, 0x01, 0x00, 0x01, 0x00, 0x00};
 
 TEST(PsdkGolden, LinkBandwidthPush) {
-  LinkBandwidthPush m;
-  m.image_link_normal = true;
-  m.max_image_link_bandwidth = 20;
-  m.connection.remote_controller_connected = true;
-  m.connection.app_connected = true;
-  m.msdk_uplink_max_bytes_s = 1000;
-  m.msdk_downlink_max_bytes_s = 2000;
-  m.network_max_kbit_s = 8000;
-  m.msdk_flags.msdk_uplink_within_limit = true;
-  m.msdk_flags.network_within_limit = true;
-  m.msdk_uplink_bytes_s = 100;
-  m.msdk_downlink_bytes_s = 200;
-  m.network_video_kbit_s = 4000;
-  m.network_data_kbit_s = 16;
-  m.osdk_uplink_max_bytes_s = 65536;
-  m.osdk_flags.osdk_uplink_within_limit = true;
-  m.osdk_uplink_bytes_s = 256;
+  const auto m = message_from_text<LinkBandwidthPush>(
+      "image_link_normal=true max_image_link_bandwidth=20 remote_controller_connected=true "
+      "app_connected=true msdk_uplink_max_bytes_s=1000 msdk_downlink_max_bytes_s=2000 "
+      "network_max_kbit_s=8000 msdk_uplink_within_limit=true network_within_limit=true "
+      "msdk_uplink_bytes_s=100 msdk_downlink_bytes_s=200 network_video_kbit_s=4000 "
+      "network_data_kbit_s=16 osdk_uplink_max_bytes_s=65536 osdk_uplink_within_limit=true "
+      "osdk_uplink_bytes_s=256");
   ASSERT_EQ(kBandwidth.size(), 42u);
   EXPECT_EQ(encoded(m), kBandwidth);
-  const LinkBandwidthPush d = decoded<LinkBandwidthPush>(kBandwidth);
-  EXPECT_TRUE(d.connection.app_connected);
-  EXPECT_FALSE(d.connection.image_downlink_connected);
-  EXPECT_FALSE(d.msdk_flags.msdk_downlink_within_limit);
-  EXPECT_EQ(d.osdk_uplink_max_bytes_s, 65536u);
-  EXPECT_EQ(d.osdk_uplink_bytes_s, 256u);
+  EXPECT_TRUE(fields_are(decoded<LinkBandwidthPush>(kBandwidth),
+                         "app_connected=true image_downlink_connected=false "
+                         "msdk_downlink_within_limit=false osdk_uplink_max_bytes_s=65536 "
+                         "osdk_uplink_bytes_s=256"));
 }
 
 // 3.3.2: floats 1.0, -0.5, 0.0, 0.25.
@@ -96,11 +71,7 @@ const Bytes kAttitude = {0x00, 0x00, 0x80, 0x3f, 0x00, 0x00, 0x00, 0xbf,
                          0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x80, 0x3e};
 
 TEST(PsdkGolden, AttitudePush) {
-  AttitudePush m;
-  m.q0 = 1.0f;
-  m.q1 = -0.5f;
-  m.q2 = 0.0f;
-  m.q3 = 0.25f;
+  const AttitudePush m{{}, 1.0f, -0.5f, 0.0f, 0.25f};  // q0, q1, q2, q3
   EXPECT_EQ(encoded(m), kAttitude);
   const AttitudePush d = decoded<AttitudePush>(kAttitude);
   EXPECT_EQ(d.q1, -0.5f);
@@ -151,19 +122,12 @@ const Bytes kSdCard = {0x00, 0x09, 0x01, 0x40, 0x77, 0x00, 0x00, 0x00, 0x04, 0x0
                        0x00, 0xf4, 0x01, 0x00, 0x00, 0x10, 0x0e, 0x00, 0x00};
 
 TEST(PsdkGolden, SdCardInfoAck) {
-  SdCardInfoAck m;
-  m.state.inserted = true;
-  m.state.formatted = true;
-  m.state.has_error = true;
-  m.capacity_mb = 30528;
-  m.remaining_mb = 1024;
-  m.remaining_shots = 500;
-  m.remaining_record_time_s = 3600;
-  EXPECT_EQ(encoded(m), kSdCard);
-  const SdCardInfoAck d = decoded<SdCardInfoAck>(kSdCard);
-  EXPECT_TRUE(d.state.has_error);
-  EXPECT_FALSE(d.state.full);
-  EXPECT_EQ(d.capacity_mb, 30528u);
+  EXPECT_EQ(encoded(message_from_text<SdCardInfoAck>(
+                "inserted=true formatted=true has_error=true capacity_mb=30528 remaining_mb=1024 "
+                "remaining_shots=500 remaining_record_time_s=3600")),
+            kSdCard);
+  EXPECT_TRUE(
+      fields_are(decoded<SdCardInfoAck>(kSdCard), "has_error=true full=false capacity_mb=30528"));
 }
 
 // 3.4.13: column 11 in bits 0-3, row 7 in bits 4-7.

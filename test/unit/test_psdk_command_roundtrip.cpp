@@ -171,12 +171,18 @@ WidgetGroupDataAck sample<WidgetGroupDataAck>() {
   m.widgets[2] = {WidgetType::kIntegerInputBox, 2, -123456};
   return m;
 }
-template <>
-GetPosition sample<GetPosition>() {
-  GetPosition m;
-  m.count = 5;
+// The header both position lists share: `count` points of task 9, from 2024-06-30 23:59:58.
+template <class T>
+T position_list(uint8_t count) {
+  T m;
+  m.count = count;
   m.task_index = 9;
   m.base_time = {2024, 6, 30, 23, 59, 58};
+  return m;
+}
+template <>
+GetPosition sample<GetPosition>() {
+  GetPosition m = position_list<GetPosition>(5);
   for (size_t i = 0; i < 5; ++i) {
     m.points[i].event.event_index = static_cast<uint16_t>(8191 - i);
     m.points[i].event.target_point_index = static_cast<uint8_t>(7 - i);
@@ -186,10 +192,7 @@ GetPosition sample<GetPosition>() {
 }
 template <>
 GetPositionAck sample<GetPositionAck>() {
-  GetPositionAck m;
-  m.count = 4;
-  m.task_index = 9;
-  m.base_time = {2024, 6, 30, 23, 59, 58};
+  GetPositionAck m = position_list<GetPositionAck>(4);
   for (size_t i = 0; i < 4; ++i) {
     TargetPosition& p = m.points[i];
     p.event = {static_cast<uint16_t>(100 + i), static_cast<uint8_t>(i)};

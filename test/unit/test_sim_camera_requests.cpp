@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "k40t_driver/protocol/messages/camera.h"
+#include "message_text.h"
 #include "sim_pod_harness.h"
 
 namespace k40t::sim {
@@ -11,6 +12,8 @@ namespace {
 
 namespace p = protocol;
 using namespace testing;  // PodHarness, SimPodTest, request_with, ResponseCode
+using k40t::testing::fields_are;
+using k40t::testing::message_from_text;
 using SimCameraRequests = SimPodTest;
 
 p::TakePhotoRequest photo(p::PhotoAction action = p::PhotoAction::kStart) {
@@ -181,15 +184,9 @@ TEST_F(SimCameraRequests, SystemRequestsAnswerWithData) {
   EXPECT_EQ(version.version_text(), "2.1.7");
 
   EXPECT_EQ(h.ask(p::GetIpRequest{}).address, "192.168.144.64");
-  p::SetIpRequest set_ip;
-  set_ip.address = "10.1.2.3";
-  set_ip.netmask = "255.255.0.0";
-  set_ip.gateway = "10.1.0.1";
-  EXPECT_EQ(h.send(set_ip), ResponseCode::kOk);
-  const auto ip = h.ask(p::GetIpRequest{});
-  EXPECT_EQ(ip.address, "10.1.2.3");
-  EXPECT_EQ(ip.netmask, "255.255.0.0");
-  EXPECT_EQ(ip.gateway, "10.1.0.1");
+  const char ip[] = "address=10.1.2.3 netmask=255.255.0.0 gateway=10.1.0.1";
+  EXPECT_EQ(h.send(message_from_text<p::SetIpRequest>(ip)), ResponseCode::kOk);
+  EXPECT_TRUE(fields_are(h.ask(p::GetIpRequest{}), ip));
 
   p::TimeSyncRequest sync;
   sync.unix_time_ms = 1741064767089;  // 2025-03-04T05:06:07.089Z
@@ -205,12 +202,9 @@ TEST_F(SimCameraRequests, SystemRequestsAnswerWithData) {
 }
 
 TEST_F(SimCameraRequests, TargetPositionFollowsTheLaser) {
-  p::TargetGpsRequest request;
-  request.latitude_deg = 47.0;
-  request.longitude_deg = 8.0;
-  request.relative_height_m = 30;
-  request.altitude_m = 530;
-  request.utc_time_ms = 1741064767089;
+  const auto request = message_from_text<p::TargetGpsRequest>(
+      "latitude_deg=47.0 longitude_deg=8.0 relative_height_m=30 altitude_m=530 "
+      "utc_time_ms=1741064767089");
   // Gimbal level: the laser sees the horizon, no return.
   EXPECT_EQ(h.ask(request).code, ResponseCode::kFailure);
   ASSERT_EQ(h.pod.gimbal().command_angles(-90.0, std::nullopt), Outcome::kOk);
@@ -224,11 +218,8 @@ TEST_F(SimCameraRequests, TargetPositionFollowsTheLaser) {
 }
 
 TEST_F(SimCameraRequests, AiAndTrackingRules) {
-  p::BoxTrackingRequest track;
-  track.x_px = 900;
-  track.y_px = 500;
-  track.width_px = 100;
-  track.height_px = 80;
+  const auto track =
+      message_from_text<p::BoxTrackingRequest>("x_px=900 y_px=500 width_px=100 height_px=80");
   EXPECT_EQ(h.send(track), ResponseCode::kFailure);  // AI off
   p::AiRecognitionRequest ai;
   ai.recognition = p::FeatureSwitch::kOn;

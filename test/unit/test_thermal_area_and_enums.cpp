@@ -17,12 +17,7 @@ using testing::defined_codes;
 using testing::expect_range_error;
 
 ThermalAreaRequest area(uint16_t w, uint16_t h, uint16_t cx, uint16_t cy) {
-  ThermalAreaRequest a;
-  a.width_px = w;
-  a.height_px = h;
-  a.center_x_px = cx;
-  a.center_y_px = cy;
-  return a;
+  return {w, h, cx, cy};  // width_px, height_px, center_x_px, center_y_px
 }
 
 TEST(ThermalAreaRequest, RectangleMustStayInsideTheMeasurableArea) {  // note of 3.2.2.11

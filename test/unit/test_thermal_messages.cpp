@@ -8,60 +8,34 @@
 #include "golden_checks.h"
 #include "k40t_driver/protocol/messages/thermal.h"
 #include "message_checks.h"
+#include "message_text.h"
 #include "request_with.h"
 
 namespace k40t::protocol {
 namespace {
 
-using namespace testing;  // the checks of golden_checks.h, message_checks.h, request_with.h
+using namespace testing;  // the test helpers included above
 
 const char kGolden[] = "thermal_visible.txt";
 
 // ---- golden frames ------------------------------------------------------------------------
 
 TEST(ThermalGolden, StatusReport) {  // 3.2.1.2
-  ThermalStatus m;
-  m.max_degC = 52.3;
-  m.min_degC = -12.5;
-  m.center_degC = 20.0;
-  m.point_degC = 36.6;
-  m.average_degC = 18.4;
-  m.max_x_px = 400;
-  m.max_y_px = 300;
-  m.min_x_px = 1200;
-  m.min_y_px = 1000;
-  m.center_x_px = 800;
-  m.center_y_px = 528;
-  m.point_x_px = 960;
-  m.point_y_px = 544;
-  m.high_alarm = true;
-  m.threshold_alarm = true;
-  expect_matches_golden(m, kGolden);
+  expect_matches_golden(
+      message_from_text<ThermalStatus>(
+          "max_degC=52.3 min_degC=-12.5 center_degC=20.0 point_degC=36.6 average_degC=18.4 "
+          "max_x_px=400 max_y_px=300 min_x_px=1200 min_y_px=1000 center_x_px=800 "
+          "center_y_px=528 point_x_px=960 point_y_px=544 high_alarm=true threshold_alarm=true"),
+      kGolden);
 }
 
 ThermalSettingsAck golden_settings() {  // 3.2.2.1, the comment of the golden frame
-  ThermalSettingsAck m;
-  m.palette = Palette::kIronRed;
-  m.measurement_on = true;
-  m.measurement_type = ThermalMeasurementType::kArea;
-  m.core_type = ThermalCoreType::kRadiometric;
-  m.zoom_x = 2;
-  m.sharpness = 50;
-  m.gain_mode = ThermalGainMode::kAuto;
-  m.brightness = 60;
-  m.contrast = 70;
-  m.denoise_on = true;
-  m.denoise_level = 30;
-  m.enhancement_on = true;
-  m.enhancement_level = 3;
-  m.high_alarm_on = true;
-  m.high_alarm_degC = 120.0;
-  m.difference_alarm_on = true;
-  m.difference_alarm_degC = 15.5;
-  m.threshold_alarm_on = true;
-  m.threshold_reference_degC = -20.0;
-  m.threshold_float_degC = 5.0;
-  return m;
+  return message_from_text<ThermalSettingsAck>(
+      "palette=iron_red measurement_on=true measurement_type=area core_type=radiometric "
+      "zoom_x=2 sharpness=50 gain_mode=auto brightness=60 contrast=70 denoise_on=true "
+      "denoise_level=30 enhancement_on=true enhancement_level=3 high_alarm_on=true "
+      "high_alarm_degC=120.0 difference_alarm_on=true difference_alarm_degC=15.5 "
+      "threshold_alarm_on=true threshold_reference_degC=-20.0 threshold_float_degC=5.0");
 }
 
 TEST(ThermalGolden, ReadSettingsRequestAndAck) {  // 3.2.2.1

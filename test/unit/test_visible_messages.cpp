@@ -9,50 +9,32 @@
 #include "golden_checks.h"
 #include "k40t_driver/protocol/messages/visible.h"
 #include "message_checks.h"
+#include "message_text.h"
 #include "request_with.h"
 
 namespace k40t::protocol {
 namespace {
 
-using namespace testing;  // the checks of golden_checks.h, message_checks.h, request_with.h
+using namespace testing;  // the test helpers included above
 
 const char kGolden[] = "thermal_visible.txt";
 
 // ---- golden frames ------------------------------------------------------------------------
 
 TEST(VisibleGolden, StatusReport) {  // 3.2.1.3
-  VisibleStatus m;
-  m.zooming = true;
-  m.focal_length_mm = 24.5;
-  m.zoom_x = 12.5;
-  m.ev = ExposureValue::kPlus1;
-  m.iso_db = 12.0;
-  m.shutter_us = 1000;
-  m.ae_lock_on = false;
-  m.focusing = false;
-  m.precise_shot_focal_length_mm = 24.5;
+  VisibleStatus m = message_from_text<VisibleStatus>(
+      "zooming=true focal_length_mm=24.5 zoom_x=12.5 iso_db=12.0 shutter_us=1000 "
+      "ae_lock_on=false focusing=false precise_shot_focal_length_mm=24.5");
+  m.ev = ExposureValue::kPlus1;  // by hand: the labels "+1" and "-1" are both "1" as text
   expect_matches_golden(m, kGolden);
 }
 
 VisibleSettingsAck golden_settings() {  // 3.2.3.1, the comment of the golden frame
-  VisibleSettingsAck m;
-  m.photo_resolution = PhotoResolution::k8000x6000;
-  m.video_resolution = VideoResolution::k3840x2160;
-  m.video_bitrate_code = 2;
-  m.white_balance = WhiteBalance::kDaylight;
-  m.ev = ExposureValue::kZero;
-  m.iso = Iso::k400;
-  m.shutter = Shutter::k1_6000;
-  m.zoom_fine_tune = 50;
-  m.backlight_on = true;
-  m.backlight_value = 40;
-  m.strong_light_on = false;
-  m.strong_light_value = 0;
-  m.ae_lock_on = true;
-  m.watermark_on = true;
-  m.anti_flicker = AntiFlicker::k50Hz;
-  m.metering = MeteringMode::kAverage;
-  return m;
+  return message_from_text<VisibleSettingsAck>(
+      "photo_resolution=8000x6000 video_resolution=3840x2160 video_bitrate_code=2 "
+      "white_balance=daylight ev=0 iso=iso_400 shutter=1/6000 zoom_fine_tune=50 "
+      "backlight_on=true backlight_value=40 strong_light_on=false strong_light_value=0 "
+      "ae_lock_on=true watermark_on=true anti_flicker=50hz metering=average");
 }
 
 TEST(VisibleGolden, ReadSettingsRequestAndAck) {  // 3.2.3.1

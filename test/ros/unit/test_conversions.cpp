@@ -8,6 +8,7 @@
 #include <tf2/LinearMath/Quaternion.h>
 #include <tf2/LinearMath/Vector3.h>
 
+#include "../../unit/message_text.h"  // test/unit/message_text.h
 #include "k40t_driver/ros/conversions.h"
 #include "k40t_driver/ros/geo_glue.h"
 
@@ -116,14 +117,9 @@ TEST(LaserTarget, NavSatFixCarriesTheReportsCovariance) {
 }
 
 TEST(ThermalStats, DegreesCoordinatesAndAlarms) {
-  protocol::ThermalStatus t;
-  t.max_degC = 85.3;
-  t.min_degC = -12.5;
-  t.center_degC = 20.1;
-  t.max_x_px = 700;
-  t.max_y_px = 500;
-  t.point_x_px = 960;
-  t.high_alarm = true;
+  const auto t = k40t::testing::message_from_text<protocol::ThermalStatus>(
+      "max_degC=85.3 min_degC=-12.5 center_degC=20.1 max_x_px=700 max_y_px=500 point_x_px=960 "
+      "high_alarm=true");
   const k40t_driver::ThermalStats m = to_msg(t, ros::Time(3), FrameIds());
   EXPECT_FLOAT_EQ(m.max_degC, 85.3f);
   EXPECT_FLOAT_EQ(m.min_degC, -12.5f);

@@ -11,11 +11,14 @@
 #include <set>
 #include <sstream>
 
+#include "../../unit/message_text.h"  // test/unit/message_text.h
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/ros/setting_binding.h"
 
 namespace k40t::driver {
 namespace {
+
+using k40t::testing::message_from_text;
 
 std::vector<std::string> cfg_parameters() {
   std::vector<std::string> names;
@@ -61,41 +64,22 @@ TEST(SettingTable, EveryBindingCoversACfgParameterAndNamesCatalogueMessages) {
 
 // Reports whose every setting differs from the cfg defaults.
 struct OddReports {
-  protocol::ThermalSettingsAck thermal;
-  protocol::VisibleSettingsAck visible;
-  protocol::CameraSystemStatus camera;
+  protocol::ThermalSettingsAck thermal = message_from_text<protocol::ThermalSettingsAck>(
+      "palette=iron_red zoom_x=3 measurement_on=false gain_mode=low sharpness=7 brightness=7 "
+      "contrast=7 denoise_on=true enhancement_on=true denoise_level=9 enhancement_level=9 "
+      "high_alarm_on=true low_alarm_on=true difference_alarm_on=true high_alarm_degC=33.0 "
+      "low_alarm_degC=33.0 difference_alarm_degC=33.0 threshold_alarm_on=true "
+      "threshold_reference_degC=11.0 threshold_float_degC=11.0");
+  protocol::VisibleSettingsAck visible = message_from_text<protocol::VisibleSettingsAck>(
+      "photo_resolution=8000x6000 video_resolution=3840x2160 white_balance=dusk iso=iso_800 "
+      "shutter=1/500 backlight_on=true strong_light_on=true ae_lock_on=true watermark_on=true "
+      "backlight_value=13 strong_light_value=13 anti_flicker=60hz metering=average");
+  protocol::CameraSystemStatus camera = message_from_text<protocol::CameraSystemStatus>(
+      "capture_mode=video stream_resolution=720p30 encoding=h265 image_mode=split "
+      "bitrate=12_Mbit/s photo_mode=timelapse time_lapse_interval_s=30 burst_count=5");
   protocol::GimbalStatus gimbal;
   OddReports() {
-    thermal.palette = protocol::Palette::kIronRed;
-    thermal.zoom_x = 3;
-    thermal.measurement_on = false;
-    thermal.gain_mode = protocol::ThermalGainMode::kLow;
-    thermal.sharpness = thermal.brightness = thermal.contrast = 7;
-    thermal.denoise_on = thermal.enhancement_on = true;
-    thermal.denoise_level = thermal.enhancement_level = 9;
-    thermal.high_alarm_on = thermal.low_alarm_on = thermal.difference_alarm_on = true;
-    thermal.high_alarm_degC = thermal.low_alarm_degC = thermal.difference_alarm_degC = 33.0;
-    thermal.threshold_alarm_on = true;
-    thermal.threshold_reference_degC = thermal.threshold_float_degC = 11.0;
-    visible.photo_resolution = protocol::PhotoResolution::k8000x6000;
-    visible.video_resolution = protocol::VideoResolution::k3840x2160;
-    visible.white_balance = protocol::WhiteBalance::kDusk;
-    visible.ev = protocol::ExposureValue::kPlus2;
-    visible.iso = protocol::Iso::k800;
-    visible.shutter = protocol::Shutter::k1_500;
-    visible.backlight_on = visible.strong_light_on = visible.ae_lock_on = true;
-    visible.watermark_on = true;
-    visible.backlight_value = visible.strong_light_value = 13;
-    visible.anti_flicker = protocol::AntiFlicker::k60Hz;
-    visible.metering = protocol::MeteringMode::kAverage;
-    camera.capture_mode = protocol::CaptureMode::kVideo;
-    camera.stream_resolution = protocol::ReportedStreamResolution::k720p30;
-    camera.encoding = protocol::VideoEncoding::kH265;
-    camera.image_mode = protocol::ImageMode::kSplit;
-    camera.bitrate = protocol::StreamBitrate::k12Mbps;
-    camera.photo_mode = protocol::PhotoMode::kTimeLapse;
-    camera.time_lapse_interval_s = 30;
-    camera.burst_count = 5;
+    visible.ev = protocol::ExposureValue::kPlus2;  // by hand: "+2" and "-2" are both "2" as text
     gimbal.stabilisation = protocol::GimbalStabilisationState::kStabilising;
   }
   SettingReports all() const { return {&thermal, &visible, &camera, &gimbal}; }

@@ -21,12 +21,7 @@ const ros::Time kStamp(1000, 500);
 constexpr uint32_t kNewYear2026 = 20454u * 86400u;  // 1767225600
 
 DateTime new_year_2026(uint8_t second) {
-  DateTime t;
-  t.year = 2026;
-  t.month = 1;
-  t.day = 1;
-  t.second = second;
-  return t;
+  return {2026, 1, 1, 0, 0, second};  // year, month, day, hour, minute, second
 }
 
 // Quaternions q and -q are the same rotation.
@@ -43,13 +38,7 @@ TEST(SkyportPushConversions, DateTimeToUnixTime) {
   const ros::Time t = unix_time(new_year_2026(1), 250000);
   EXPECT_EQ(t.sec, kNewYear2026 + 1);
   EXPECT_EQ(t.nsec, 250000000u);
-  DateTime before_1970;
-  before_1970.year = 1969;
-  before_1970.month = 12;
-  before_1970.day = 31;
-  before_1970.hour = 23;
-  before_1970.minute = 59;
-  before_1970.second = 59;
+  const DateTime before_1970{1969, 12, 31, 23, 59, 59};
   EXPECT_EQ(unix_time(before_1970, 0).sec, 0u);  // -1 s is clamped, not wrapped to 2106
 }
 
