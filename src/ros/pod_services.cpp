@@ -99,6 +99,15 @@ void PodServices::serve_request(const std::string& name, Build build) {
   });
 }
 
+template <class Srv, class Req, class Answer>
+void PodServices::serve_answer(const std::string& name, Answer answer) {
+  serve<Srv>(name, [this, answer](auto&, auto& res) {
+    if (const std::optional<typename Req::Ack> ack = typed_ack(driver_, Req{}, res)) {
+      answer(*ack, res);
+    }
+  });
+}
+
 template <class Req>
 void PodServices::serve_trigger(const std::string& name, Req request) {
   serve<std_srvs::Trigger>(
@@ -225,12 +234,10 @@ void PodServices::advertise_system() {
     res.gimbal_software = v.gimbal_software;
     res.camera = v.camera;
   });
-  serve<k40t_driver::GetIp>("get_ip", [this](auto&, auto& res) {
-    const std::optional<p::GetIpAck> ack = typed_ack(driver_, p::GetIpRequest{}, res);
-    if (!ack) return;
-    res.address = ack->address;
-    res.netmask = ack->netmask;
-    res.gateway = ack->gateway;
+  serve_answer<k40t_driver::GetIp, p::GetIpRequest>("get_ip", [](const auto& ack, auto& res) {
+    res.address = ack.address;
+    res.netmask = ack.netmask;
+    res.gateway = ack.gateway;
   });
   serve_request<k40t_driver::SetIp, p::SetIpRequest>("set_ip", [](auto& req, auto& r) {
     r.mode = req.dhcp ? p::IpMode::kDhcp : p::IpMode::kStatic;
@@ -241,12 +248,11 @@ void PodServices::advertise_system() {
   serve_trigger("format_sd", p::FormatSdRequest{});
   serve_trigger("factory_reset", p::FactoryResetRequest{});
   serve_trigger("shutdown", p::ShutdownRequest{});
-  serve<k40t_driver::GetSbus>("sbus/get", [this](auto&, auto& res) {
-    const std::optional<p::SbusConfigAck> ack = typed_ack(driver_, p::SbusConfigRequest{}, res);
-    if (!ack) return;
-    for_each_sbus_field(ack->range, ack->channels, res,
-                        [](const auto& pod, auto& ros) { ros = pod; });
-  });
+  serve_answer<k40t_driver::GetSbus, p::SbusConfigRequest>(
+      "sbus/get", [](const auto& ack, auto& res) {
+        for_each_sbus_field(ack.range, ack.channels, res,
+                            [](const auto& pod, auto& ros) { ros = pod; });
+      });
   serve<k40t_driver::SetSbus>("sbus/set", [this](auto& req, auto& res) {
     p::SbusRangeRequest range;
     p::SbusChannelsRequest channels;
