@@ -43,14 +43,6 @@ class OperationServer {
   using FeedbackMsg = typename Action::_action_feedback_type::_feedback_type;
   using AckHandler = std::function<void(const session::AckResult&)>;
 
- private:
-  template <class Msg, class = void>
-  struct HasStatus : std::false_type {};
-  template <class Msg>
-  struct HasStatus<Msg, std::void_t<decltype(std::declval<Msg&>().status)>> : std::true_type {};
-  static constexpr bool kFeedbackHasStatus = HasStatus<FeedbackMsg>::value;
-
- public:
   struct Binding {
     std::function<Result<Op>(const Goal&, double now_s)> create;  // validates; nothing sent
     std::function<void(const Op&, AckHandler)> send;              // the request, asynchronously
@@ -87,6 +79,13 @@ class OperationServer {
   }
 
  private:
+  // Whether the action's Feedback has a `status` (the tracker's text goes there).
+  template <class Msg, class = void>
+  struct HasStatus : std::false_type {};
+  template <class Msg>
+  struct HasStatus<Msg, std::void_t<decltype(std::declval<Msg&>().status)>> : std::true_type {};
+  static constexpr bool kFeedbackHasStatus = HasStatus<FeedbackMsg>::value;
+
   using Shared = operations::SharedOperation<Op>;
 
   std::shared_ptr<Shared> active() const {
