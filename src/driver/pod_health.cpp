@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <initializer_list>
+#include <utility>
 
 namespace k40t::driver {
 
@@ -33,6 +34,22 @@ std::string names_where(std::initializer_list<Flag> flags, bool set) {
     if (flag.set == set) list += list.empty() ? flag.name : std::string(", ") + flag.name;
   }
   return list;
+}
+
+// One way a check can go wrong: when `found`, it gives the check's level and summary.
+struct Problem {
+  bool found;
+  HealthLevel level;
+  std::string summary;
+};
+
+// The first problem found, in the order given, decides the check; none: OK with `ok_summary`.
+void set_first_problem(HealthCheck& check, std::initializer_list<Problem> problems,
+                       const char* ok_summary) {
+  for (const Problem& problem : problems) {
+    if (problem.found) return check.set(problem.level, problem.summary);
+  }
+  check.set(HealthLevel::kOk, ok_summary);
 }
 
 // The check `judge(report, check)` gives, or a warning while no `what` report has come.
@@ -82,34 +99,38 @@ HealthCheck link_health(const DriverStats& s, const LinkContext& context) {
   check.add("last error", s.session.link.last_error);
   check.add("seconds since last frame", silent);
   check.add("crc coverage", coverage_name(s.crc_coverage));
-  check.add("bytes received", parser.bytes_received);
-  check.add("bytes sent", s.session.link.bytes_sent);
-  check.add("frames received", parser.frames_good);
-  check.add("frames sent", s.session.frames_sent);
-  check.add("checksum errors", parser.checksum_errors);
-  check.add("length errors", parser.length_errors);
-  check.add("bytes discarded", parser.bytes_discarded);
-  check.add("unknown ids", parser.unknown_ids);
-  check.add("sequence gaps", parser.sequence_gaps);
-  check.add("frames lost", parser.frames_lost);
-  check.add("frames repeated", parser.frames_repeated);
-  check.add("decode errors", s.session.decode_errors);
-  check.add("requests", s.session.requests);
-  check.add("acks", s.session.acks);
-  check.add("nacks", s.session.nacks);
-  check.add("ack timeouts", s.session.ack_timeouts);
-  check.add("retries", s.session.retries);
-  check.add("late acks", s.session.late_acks);
-  check.add("connects", s.session.link.connects);
-  check.add("disconnects", s.session.link.disconnects);
-  check.add("pod online events", s.pod_online_events);
-  check.add("time syncs sent", s.time_syncs_sent);
-  check.add("gps requests answered", s.gps_requests_answered);
-  check.add("gps requests without fix", s.gps_requests_unanswerable);
-  check.add("gps requests time-matched", s.gps_requests_time_matched);
-  check.add("gps requests outside the history", s.gps_requests_out_of_history);
+  // The counters of the parser, the link, the session and the driver.
+  const std::pair<const char*, uint64_t> counters[] = {
+      {"bytes received", parser.bytes_received},
+      {"bytes sent", s.session.link.bytes_sent},
+      {"frames received", parser.frames_good},
+      {"frames sent", s.session.frames_sent},
+      {"checksum errors", parser.checksum_errors},
+      {"length errors", parser.length_errors},
+      {"bytes discarded", parser.bytes_discarded},
+      {"unknown ids", parser.unknown_ids},
+      {"sequence gaps", parser.sequence_gaps},
+      {"frames lost", parser.frames_lost},
+      {"frames repeated", parser.frames_repeated},
+      {"decode errors", s.session.decode_errors},
+      {"requests", s.session.requests},
+      {"acks", s.session.acks},
+      {"nacks", s.session.nacks},
+      {"ack timeouts", s.session.ack_timeouts},
+      {"retries", s.session.retries},
+      {"late acks", s.session.late_acks},
+      {"connects", s.session.link.connects},
+      {"disconnects", s.session.link.disconnects},
+      {"pod online events", s.pod_online_events},
+      {"time syncs sent", s.time_syncs_sent},
+      {"gps requests answered", s.gps_requests_answered},
+      {"gps requests without fix", s.gps_requests_unanswerable},
+      {"gps requests time-matched", s.gps_requests_time_matched},
+      {"gps requests outside the history", s.gps_requests_out_of_history},
+      {"cmd_rate dead-man stops", s.deadman_stops},
+  };
+  for (const auto& [name, count] : counters) check.add(name, count);
   check.add("last geotag gap to a fix (s)", s.last_geotag_gap_s);
-  check.add("cmd_rate dead-man stops", s.deadman_stops);
   return check;
 }
 
@@ -124,15 +145,12 @@ HealthCheck self_test_health(const std::optional<p::GimbalStatus>& gimbal) {
     check.add("gimbal link", name_or(g.gimbal_link, "unknown"));
     check.add("camera link", name_or(g.camera_link, "unknown"));
     check.add("upgrade", name_or(g.upgrade, "unknown"));
-    if (!failed.empty()) {
-      check.set(HealthLevel::kError, "self-test failed: " + failed);
-    } else if (!links_ok) {
-      check.set(HealthLevel::kError, "gimbal or camera connection abnormal");
-    } else if (g.upgrade != p::GimbalUpgradeState::kNormal) {
-      check.set(HealthLevel::kWarn, "firmware upgrade not completed");
-    } else {
-      check.set(HealthLevel::kOk, "all sensors passed");
-    }
+    set_first_problem(check,
+                      {{!failed.empty(), HealthLevel::kError, "self-test failed: " + failed},
+                       {!links_ok, HealthLevel::kError, "gimbal or camera connection abnormal"},
+                       {g.upgrade != p::GimbalUpgradeState::kNormal, HealthLevel::kWarn,
+                        "firmware upgrade not completed"}},
+                      "all sensors passed");
   });
 }
 
@@ -177,25 +195,20 @@ HealthCheck alarms_health(const std::optional<p::ThermalStatus>& thermal) {
     const std::string active = names_where(alarms, true);
     check.add("max degC", t.max_degC);
     check.add("min degC", t.min_degC);
-    if (active.empty()) {
-      check.set(HealthLevel::kOk, "no alarm");
-    } else {
-      check.set(HealthLevel::kWarn, "alarm: " + active);
-    }
+    set_first_problem(check, {{!active.empty(), HealthLevel::kWarn, "alarm: " + active}},
+                      "no alarm");
   });
 }
 
 HealthCheck settings_health(const SettingsState& s) {
   HealthCheck check;
-  if (s.reads == 0) {
-    check.set(HealthLevel::kWarn, "settings not read from the pod yet");
-  } else if (!s.read_ok) {
-    check.set(HealthLevel::kWarn, "settings read-back incomplete: " + s.read_message);
-  } else if (!s.last_refusal.empty()) {
-    check.set(HealthLevel::kWarn, "last change refused and reverted: " + s.last_refusal);
-  } else {
-    check.set(HealthLevel::kOk, "in sync with the pod");
-  }
+  set_first_problem(
+      check,
+      {{s.reads == 0, HealthLevel::kWarn, "settings not read from the pod yet"},
+       {!s.read_ok, HealthLevel::kWarn, "settings read-back incomplete: " + s.read_message},
+       {!s.last_refusal.empty(), HealthLevel::kWarn,
+        "last change refused and reverted: " + s.last_refusal}},
+      "in sync with the pod");
   check.add("read-backs", s.reads);
   check.add("last read-back", s.read_message);
   check.add("changes applied", s.changes_applied);

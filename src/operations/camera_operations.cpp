@@ -73,24 +73,23 @@ Result<ZoomTo> ZoomTo::create(double ratio_x, double timeout_s, double now_s) {
   request.zoom_x = ratio_x;
   const Status valid = request.validate();
   if (!valid) return valid;
-  const TimeoutChoice timeout = choose_timeout(timeout_s, kDefaultTimeoutS);
-  if (!timeout.ok) return Status::fail(timeout.error);
-  return ZoomTo(request, timeout.seconds, now_s);
+  return with_timeout(timeout_s, kDefaultTimeoutS,
+                      [&](double seconds) { return ZoomTo(request, seconds, now_s); });
 }
 
 ZoomTo::ZoomTo(const p::ZoomRatioRequest& request, double timeout_s, double now_s)
-    : request_(request), tracker_("zoom", "zoom status 0x020304 'done'", timeout_s, now_s) {}
+    : TrackedOperation("zoom", "zoom status 0x020304 'done'", timeout_s, now_s),
+      request_(request) {}
 
 // ---- SD format -------------------------------------------------------------------------------
 
 Result<SdFormat> SdFormat::create(double timeout_s, double now_s) {
-  const TimeoutChoice timeout = choose_timeout(timeout_s, kDefaultTimeoutS);
-  if (!timeout.ok) return Status::fail(timeout.error);
-  return SdFormat(timeout.seconds, now_s);
+  return with_timeout(timeout_s, kDefaultTimeoutS,
+                      [&](double seconds) { return SdFormat(seconds, now_s); });
 }
 
 SdFormat::SdFormat(double timeout_s, double now_s)
-    : tracker_("SD format", "SD format status 0x02030D 'done'", timeout_s, now_s) {}
+    : TrackedOperation("SD format", "SD format status 0x02030D 'done'", timeout_s, now_s) {}
 
 // ---- precise re-shoot ------------------------------------------------------------------------
 
@@ -132,31 +131,31 @@ Result<PreciseReshoot> PreciseReshoot::create(const PreciseReshootGoal& goal,
                                               double now_s) {
   Result<p::PreciseReshootRequest> request = reshoot_request(goal.args, latest_visible);
   if (!request) return request.status();
-  const TimeoutChoice timeout = choose_timeout(goal.timeout_s, kDefaultTimeoutS);
-  if (!timeout.ok) return Status::fail(timeout.error);
-  return PreciseReshoot(request.value(), timeout.seconds, now_s);
+  return with_timeout(goal.timeout_s, kDefaultTimeoutS, [&](double seconds) {
+    return PreciseReshoot(request.value(), seconds, now_s);
+  });
 }
 
 PreciseReshoot::PreciseReshoot(const p::PreciseReshootRequest& request, double timeout_s,
                                double now_s)
-    : request_(request),
-      tracker_("precise re-shoot", "precise re-shoot status 0x020307 'done'", timeout_s, now_s) {}
+    : TrackedOperation("precise re-shoot", "precise re-shoot status 0x020307 'done'", timeout_s,
+                       now_s),
+      request_(request) {}
 
 // ---- TF-card upgrade -------------------------------------------------------------------------
 
 Result<TfUpgrade> TfUpgrade::create(double timeout_s, double now_s) {
-  const TimeoutChoice timeout = choose_timeout(timeout_s, kDefaultTimeoutS);
-  if (!timeout.ok) return Status::fail(timeout.error);
-  return TfUpgrade(timeout.seconds, now_s);
+  return with_timeout(timeout_s, kDefaultTimeoutS,
+                      [&](double seconds) { return TfUpgrade(seconds, now_s); });
 }
 
 TfUpgrade::TfUpgrade(double timeout_s, double now_s)
-    : tracker_("TF-card upgrade", "TF-card upgrade status 0x02030C 'succeeded'", timeout_s, now_s) {
-}
+    : TrackedOperation("TF-card upgrade", "TF-card upgrade status 0x02030C 'succeeded'", timeout_s,
+                       now_s) {}
 
 void TfUpgrade::on_progress(const p::CameraUpgradeStatus& status) {
   // 0x000008 also reports calibrations ("repairing"); only "upgrading" is this operation's.
-  if (status.state != p::CameraUpgradeState::kUpgrading || tracker_.done()) return;
+  if (status.state != p::CameraUpgradeState::kUpgrading || tracker().done()) return;
   progress_percent_ = status.progress_percent;
 }
 

@@ -54,18 +54,18 @@ Result<GimbalMove> GimbalMove::create(const GimbalMoveGoal& goal, double now_s) 
     return Status::fail("field 'tolerance' must be 0 (the default, 0.5 deg) or 0..pi rad, got " +
                         std::to_string(goal.tolerance_rad));
   }
-  const TimeoutChoice timeout = choose_timeout(goal.timeout_s, kDefaultTimeoutS);
-  if (!timeout.ok) return Status::fail(timeout.error);
   const double tolerance = goal.tolerance_rad == 0 ? kDefaultToleranceRad : goal.tolerance_rad;
-  return GimbalMove(goal, request.value(), tolerance, timeout.seconds, now_s);
+  return with_timeout(goal.timeout_s, kDefaultTimeoutS, [&](double seconds) {
+    return GimbalMove(goal, request.value(), tolerance, seconds, now_s);
+  });
 }
 
 GimbalMove::GimbalMove(const GimbalMoveGoal& goal, const p::GimbalAngleRequest& request,
                        double tolerance_rad, double timeout_s, double now_s)
-    : goal_(goal),
+    : TrackedOperation("gimbal move", "both joints within tolerance in 0x000002", timeout_s, now_s),
+      goal_(goal),
       request_(request),
-      tolerance_rad_(tolerance_rad),
-      tracker_("gimbal move", "both joints within tolerance in 0x000002", timeout_s, now_s) {}
+      tolerance_rad_(tolerance_rad) {}
 
 void GimbalMove::on_attitude(const p::GimbalAttitude& attitude) {
   joints_ = rep103_joints(attitude);
@@ -77,7 +77,7 @@ void GimbalMove::on_attitude(const p::GimbalAttitude& attitude) {
   Step step;
   step.text = text;
   if (error_rad_ <= tolerance_rad_) step.phase = Phase::kSucceeded;
-  tracker_.report(step);
+  tracker().report(step);
 }
 
 Result<CalibrationKind> calibration_kind(int kind) {
@@ -111,13 +111,14 @@ std::optional<Step> calibration_step(const p::CameraUpgradeStatus& status) {
 Result<GimbalCalibration> GimbalCalibration::create(int kind, double timeout_s, double now_s) {
   Result<CalibrationKind> which = calibration_kind(kind);
   if (!which) return which.status();
-  const TimeoutChoice timeout = choose_timeout(timeout_s, kDefaultTimeoutS);
-  if (!timeout.ok) return Status::fail(timeout.error);
-  return GimbalCalibration(which.value(), timeout.seconds, now_s);
+  return with_timeout(timeout_s, kDefaultTimeoutS, [&](double seconds) {
+    return GimbalCalibration(which.value(), seconds, now_s);
+  });
 }
 
 GimbalCalibration::GimbalCalibration(CalibrationKind kind, double timeout_s, double now_s)
-    : kind_(kind), tracker_(calibration_name(kind), "0x000008 'succeeded'", timeout_s, now_s) {}
+    : TrackedOperation(calibration_name(kind), "0x000008 'succeeded'", timeout_s, now_s),
+      kind_(kind) {}
 
 void GimbalCalibration::on_status(const p::CameraUpgradeStatus& status) {
   const std::optional<Step> step = calibration_step(status);
@@ -126,7 +127,7 @@ void GimbalCalibration::on_status(const p::CameraUpgradeStatus& status) {
       status.state == p::CameraUpgradeState::kSucceeded) {
     progress_percent_ = status.progress_percent;
   }
-  tracker_.report(*step);
+  tracker().report(*step);
 }
 
 }  // namespace k40t::operations

@@ -23,6 +23,16 @@ std::string PodActions::stop_with(const Req& request, const std::string& what) {
   return stopped.ok() ? what + " stopped" : what + " not stopped: " + stopped.message;
 }
 
+template <class Action, class Op, class Req, class Feedback>
+std::unique_ptr<OperationServer<Action, Op>> PodActions::timeout_only_action(
+    ros::NodeHandle& nh, const std::string& name, const Req& request, Feedback feedback) {
+  typename OperationServer<Action, Op>::Binding binding;
+  binding.create = [](const auto& goal, double now_s) { return Op::create(goal.timeout, now_s); };
+  binding.send = sends(request);
+  binding.feedback = std::move(feedback);
+  return std::make_unique<OperationServer<Action, Op>>(nh, name, std::move(binding));
+}
+
 PodActions::PodActions(ros::NodeHandle nh, PodDriver& driver) : driver_(driver) {
   create_gimbal_actions(nh);
   create_camera_actions(nh);
@@ -63,7 +73,7 @@ void PodActions::create_gimbal_actions(ros::NodeHandle& nh) {
     g.timeout_s = goal.timeout;
     return ops::GimbalMove::create(g, now_s);
   };
-  move.send = [this](const ops::GimbalMove& op, auto done) { send(op.request(), done); };
+  move.send = sends_its_request();
   move.feedback = [](const ops::GimbalMove& op, k40t_driver::GimbalMoveToFeedback& feedback) {
     const ops::JointAngles joints = op.joints().value_or(ops::JointAngles{kNaN, kNaN, kNaN});
     feedback.pitch = joints.pitch_rad;
@@ -98,9 +108,7 @@ void PodActions::create_gimbal_actions(ros::NodeHandle& nh) {
   calibrate.feedback = [](const ops::GimbalCalibration& op,
                           k40t_driver::GimbalCalibrateFeedback& feedback) {
     feedback.progress = static_cast<int8_t>(op.progress_percent());
-    feedback.status = op.tracker().status_text();
   };
-  calibrate.result = [](const ops::GimbalCalibration&, k40t_driver::GimbalCalibrateResult&) {};
   calibrate_ = std::make_unique<CalibrationServer>(nh, "gimbal/calibrate", std::move(calibrate));
 }
 
@@ -110,10 +118,9 @@ void PodActions::create_camera_actions(ros::NodeHandle& nh) {
   zoom.create = [](const k40t_driver::ZoomToGoal& goal, double now_s) {
     return ops::ZoomTo::create(goal.ratio, goal.timeout, now_s);
   };
-  zoom.send = [this](const ops::ZoomTo& op, auto done) { send(op.request(), done); };
+  zoom.send = sends_its_request();
   zoom.feedback = [](const ops::ZoomTo& op, k40t_driver::ZoomToFeedback& feedback) {
     feedback.ratio = op.ratio_x().value_or(kNaN);
-    feedback.status = op.tracker().status_text();
   };
   zoom.result = [](const ops::ZoomTo& op, k40t_driver::ZoomToResult& result) {
     result.ratio = op.ratio_x().value_or(kNaN);
@@ -139,43 +146,21 @@ void PodActions::create_camera_actions(ros::NodeHandle& nh) {
     std::lock_guard<std::mutex> lock(visible_mutex_);
     return ops::PreciseReshoot::create(g, latest_visible_, now_s);
   };
-  reshoot.send = [this](const ops::PreciseReshoot& op, auto done) { send(op.request(), done); };
-  reshoot.feedback = [](const ops::PreciseReshoot& op,
-                        k40t_driver::PreciseReshootFeedback& feedback) {
-    feedback.status = op.tracker().status_text();
-  };
-  reshoot.result = [](const ops::PreciseReshoot&, k40t_driver::PreciseReshootResult&) {};
+  reshoot.send = sends_its_request();
   reshoot_ = std::make_unique<ReshootServer>(nh, "precise_reshoot", std::move(reshoot));
 }
 
 void PodActions::create_maintenance_actions(ros::NodeHandle& nh) {
-  using FormatServer = OperationServer<k40t_driver::FormatSdAction, ops::SdFormat>;
-  FormatServer::Binding format;
-  format.create = [](const k40t_driver::FormatSdGoal& goal, double now_s) {
-    return ops::SdFormat::create(goal.timeout, now_s);
-  };
-  format.send = [this](const ops::SdFormat&, auto done) { send(p::FormatSdRequest{}, done); };
-  format.feedback = [](const ops::SdFormat& op, k40t_driver::FormatSdFeedback& feedback) {
-    feedback.status = op.tracker().status_text();
-    feedback.reports = static_cast<uint32_t>(op.tracker().reports());
-  };
-  format.result = [](const ops::SdFormat&, k40t_driver::FormatSdResult&) {};
-  format_ = std::make_unique<FormatServer>(nh, "format_sd", std::move(format));
-
-  using UpgradeServer = OperationServer<k40t_driver::TfUpgradeAction, ops::TfUpgrade>;
-  UpgradeServer::Binding upgrade;
-  upgrade.create = [](const k40t_driver::TfUpgradeGoal& goal, double now_s) {
-    return ops::TfUpgrade::create(goal.timeout, now_s);
-  };
-  upgrade.send = [this](const ops::TfUpgrade&, auto done) {
-    send(p::TfCardUpgradeRequest{}, done);
-  };
-  upgrade.feedback = [](const ops::TfUpgrade& op, k40t_driver::TfUpgradeFeedback& feedback) {
-    feedback.status = op.tracker().status_text();
-    feedback.progress = static_cast<int8_t>(op.progress_percent());
-  };
-  upgrade.result = [](const ops::TfUpgrade&, k40t_driver::TfUpgradeResult&) {};
-  upgrade_ = std::make_unique<UpgradeServer>(nh, "tf_upgrade", std::move(upgrade));
+  format_ = timeout_only_action<k40t_driver::FormatSdAction, ops::SdFormat>(
+      nh, "format_sd", p::FormatSdRequest{},
+      [](const ops::SdFormat& op, k40t_driver::FormatSdFeedback& feedback) {
+        feedback.reports = static_cast<uint32_t>(op.tracker().reports());
+      });
+  upgrade_ = timeout_only_action<k40t_driver::TfUpgradeAction, ops::TfUpgrade>(
+      nh, "tf_upgrade", p::TfCardUpgradeRequest{},
+      [](const ops::TfUpgrade& op, k40t_driver::TfUpgradeFeedback& feedback) {
+        feedback.progress = static_cast<int8_t>(op.progress_percent());
+      });
 }
 
 void PodActions::subscribe_status() {

@@ -67,11 +67,45 @@ std::optional<typename Req::Ack> typed_ack(PodDriver& driver, const Req& request
   return std::nullopt;
 }
 
+// sbus/get's response and sbus/set's request carry the fields of the SBUS range and channel
+// messages (0x000500, 0x000501) under their names: one list, copied either way by
+// `copy(pod_field, ros_field)`.
+template <class Range, class Channels, class Ros, class Copy>
+void for_each_sbus_field(Range& range, Channels& channels, Ros& ros, Copy copy) {
+  copy(range.max_value, ros.max_value);
+  copy(range.min_value, ros.min_value);
+  copy(channels.stream_channel, ros.stream_channel);
+  copy(channels.zoom_channel, ros.zoom_channel);
+  copy(channels.photo_channel, ros.photo_channel);
+  copy(channels.record_channel, ros.record_channel);
+  copy(channels.pitch_channel, ros.pitch_channel);
+  copy(channels.yaw_channel, ros.yaw_channel);
+  copy(channels.centre_channel, ros.centre_channel);
+}
+
 }  // namespace
 
 template <class Srv, class Handler>
 void PodServices::serve(const std::string& name, Handler handler) {
   advertise_service<Srv>(nh_, servers_, name, std::move(handler));
+}
+
+template <class Srv, class Req, class Build>
+void PodServices::serve_request(const std::string& name, Build build) {
+  serve<Srv>(name, [this, build](auto& req, auto& res) {
+    Req r;
+    build(req, r);
+    fill(res, driver_.request(r));
+  });
+}
+
+template <class Srv, class Req, class Answer>
+void PodServices::serve_answer(const std::string& name, Answer answer) {
+  serve<Srv>(name, [this, answer](auto&, auto& res) {
+    if (const std::optional<typename Req::Ack> ack = typed_ack(driver_, Req{}, res)) {
+      answer(*ack, res);
+    }
+  });
 }
 
 template <class Req>
@@ -90,24 +124,16 @@ PodServices::PodServices(ros::NodeHandle nh, PodDriver& driver) : nh_(nh), drive
 }
 
 void PodServices::advertise_camera() {
-  serve<k40t_driver::SetZoom>("set_zoom", [this](auto& req, auto& res) {
-    p::ZoomRatioRequest r;
-    r.zoom_x = req.ratio;
-    fill(res, driver_.request(r));
-  });
-  serve<k40t_driver::Zoom>("zoom", [this](auto& req, auto& res) {
-    p::ContinuousZoomRequest r;
-    r.command = static_cast<p::ZoomCommand>(req.action);
-    fill(res, driver_.request(r));
-  });
-  serve<k40t_driver::Focus>("focus", [this](auto& req, auto& res) {
-    p::FocusRequest r;
+  serve_request<k40t_driver::SetZoom, p::ZoomRatioRequest>(
+      "set_zoom", [](auto& req, auto& r) { r.zoom_x = req.ratio; });
+  serve_request<k40t_driver::Zoom, p::ContinuousZoomRequest>(
+      "zoom", [](auto& req, auto& r) { r.command = static_cast<p::ZoomCommand>(req.action); });
+  serve_request<k40t_driver::Focus, p::FocusRequest>("focus", [](auto& req, auto& r) {
     r.command = static_cast<p::FocusCommand>(req.mode);
     r.area_left_px = req.x1;
     r.area_top_px = req.y1;
     r.area_right_px = req.x2;
     r.area_bottom_px = req.y2;
-    fill(res, driver_.request(r));
   });
   serve<k40t_driver::TakePhoto>("take_photo", [this](auto& req, auto& res) {
     const p::PhotoAction action = req.stop ? p::PhotoAction::kStop : p::PhotoAction::kStart;
@@ -128,14 +154,12 @@ void PodServices::advertise_camera() {
     std::copy(req.classes.begin(), req.classes.end(), r.classes.begin());
     fill(res, driver_.request(r));
   });
-  serve<k40t_driver::Track>("ai/track", [this](auto& req, auto& res) {
-    p::BoxTrackingRequest r;
+  serve_request<k40t_driver::Track, p::BoxTrackingRequest>("ai/track", [](auto& req, auto& r) {
     r.tracking = req.enable ? p::FeatureSwitch::kOn : p::FeatureSwitch::kOff;
     r.x_px = req.x;
     r.y_px = req.y;
     r.width_px = req.width;
     r.height_px = req.height;
-    fill(res, driver_.request(r));
   });
 }
 
@@ -156,14 +180,13 @@ void PodServices::advertise_gimbal() {
   serve_trigger("gimbal/servo_off", p::GimbalServoOffRequest{});
   serve_trigger("gimbal/use_flight_controller_attitude",
                 p::GimbalUseFlightControllerAttitudeRequest{});
-  serve<k40t_driver::PointAt>("gimbal/point_at", [this](auto& req, auto& res) {
-    p::GimbalPointAtRequest r;
-    r.lens = static_cast<p::GimbalAimLens>(req.lens);
-    r.zoom_x = req.zoom;
-    r.x_px = req.x;
-    r.y_px = req.y;
-    fill(res, driver_.request(r));
-  });
+  serve_request<k40t_driver::PointAt, p::GimbalPointAtRequest>(
+      "gimbal/point_at", [](auto& req, auto& r) {
+        r.lens = static_cast<p::GimbalAimLens>(req.lens);
+        r.zoom_x = req.zoom;
+        r.x_px = req.x;
+        r.y_px = req.y;
+      });
   serve<k40t_driver::Calibrate>("gimbal/calibrate", [this](auto& req, auto& res) {
     Result<operations::CalibrationKind> kind = operations::calibration_kind(req.kind);
     if (!kind) return fail(res, kind.error());
@@ -179,20 +202,18 @@ void PodServices::advertise_gimbal() {
 }
 
 void PodServices::advertise_thermal_and_laser() {
-  serve<k40t_driver::SetSpot>("thermal/set_spot", [this](auto& req, auto& res) {
-    p::ThermalSpotRequest r;
-    r.x_px = req.x;
-    r.y_px = req.y;
-    fill(res, driver_.request(r));
-  });
-  serve<k40t_driver::SetArea>("thermal/set_area", [this](auto& req, auto& res) {
-    p::ThermalAreaRequest r;
-    r.width_px = req.width;
-    r.height_px = req.height;
-    r.center_x_px = req.center_x;
-    r.center_y_px = req.center_y;
-    fill(res, driver_.request(r));
-  });
+  serve_request<k40t_driver::SetSpot, p::ThermalSpotRequest>("thermal/set_spot",
+                                                             [](auto& req, auto& r) {
+                                                               r.x_px = req.x;
+                                                               r.y_px = req.y;
+                                                             });
+  serve_request<k40t_driver::SetArea, p::ThermalAreaRequest>("thermal/set_area",
+                                                             [](auto& req, auto& r) {
+                                                               r.width_px = req.width;
+                                                               r.height_px = req.height;
+                                                               r.center_x_px = req.center_x;
+                                                               r.center_y_px = req.center_y;
+                                                             });
   serve<k40t_driver::MeasureRange>("laser/measure", [this](auto&, auto& res) {
     const std::optional<p::LaserRangeAck> ack = typed_ack(driver_, p::LaserRangeRequest{}, res);
     if (!ack) {
@@ -213,49 +234,29 @@ void PodServices::advertise_system() {
     res.gimbal_software = v.gimbal_software;
     res.camera = v.camera;
   });
-  serve<k40t_driver::GetIp>("get_ip", [this](auto&, auto& res) {
-    const std::optional<p::GetIpAck> ack = typed_ack(driver_, p::GetIpRequest{}, res);
-    if (!ack) return;
-    res.address = ack->address;
-    res.netmask = ack->netmask;
-    res.gateway = ack->gateway;
+  serve_answer<k40t_driver::GetIp, p::GetIpRequest>("get_ip", [](const auto& ack, auto& res) {
+    res.address = ack.address;
+    res.netmask = ack.netmask;
+    res.gateway = ack.gateway;
   });
-  serve<k40t_driver::SetIp>("set_ip", [this](auto& req, auto& res) {
-    p::SetIpRequest r;
+  serve_request<k40t_driver::SetIp, p::SetIpRequest>("set_ip", [](auto& req, auto& r) {
     r.mode = req.dhcp ? p::IpMode::kDhcp : p::IpMode::kStatic;
     r.address = req.address.empty() ? "0.0.0.0" : req.address;
     r.netmask = req.netmask.empty() ? "0.0.0.0" : req.netmask;
     r.gateway = req.gateway.empty() ? "0.0.0.0" : req.gateway;
-    fill(res, driver_.request(r));
   });
   serve_trigger("format_sd", p::FormatSdRequest{});
   serve_trigger("factory_reset", p::FactoryResetRequest{});
   serve_trigger("shutdown", p::ShutdownRequest{});
-  serve<k40t_driver::GetSbus>("sbus/get", [this](auto&, auto& res) {
-    const std::optional<p::SbusConfigAck> ack = typed_ack(driver_, p::SbusConfigRequest{}, res);
-    if (!ack) return;
-    res.max_value = ack->range.max_value;
-    res.min_value = ack->range.min_value;
-    res.stream_channel = ack->channels.stream_channel;
-    res.zoom_channel = ack->channels.zoom_channel;
-    res.photo_channel = ack->channels.photo_channel;
-    res.record_channel = ack->channels.record_channel;
-    res.pitch_channel = ack->channels.pitch_channel;
-    res.yaw_channel = ack->channels.yaw_channel;
-    res.centre_channel = ack->channels.centre_channel;
-  });
+  serve_answer<k40t_driver::GetSbus, p::SbusConfigRequest>(
+      "sbus/get", [](const auto& ack, auto& res) {
+        for_each_sbus_field(ack.range, ack.channels, res,
+                            [](const auto& pod, auto& ros) { ros = pod; });
+      });
   serve<k40t_driver::SetSbus>("sbus/set", [this](auto& req, auto& res) {
     p::SbusRangeRequest range;
-    range.max_value = req.max_value;
-    range.min_value = req.min_value;
     p::SbusChannelsRequest channels;
-    channels.stream_channel = req.stream_channel;
-    channels.zoom_channel = req.zoom_channel;
-    channels.photo_channel = req.photo_channel;
-    channels.record_channel = req.record_channel;
-    channels.pitch_channel = req.pitch_channel;
-    channels.yaw_channel = req.yaw_channel;
-    channels.centre_channel = req.centre_channel;
+    for_each_sbus_field(range, channels, req, [](auto& pod, const auto& ros) { pod = ros; });
     const SbusWriteOutcome outcome = write_sbus(driver_, range, channels);
     res.success = outcome.success;
     res.message = outcome.message;

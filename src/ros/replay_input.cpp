@@ -2,16 +2,16 @@
 
 namespace k40t::driver {
 
-ReplayInput::ReplayInput(ros::NodeHandle nh, PodDriver& driver) : driver_(driver) {
+ros::Subscriber subscribe_replay_input(ros::NodeHandle nh, PodDriver& driver) {
   // A deep queue: rosbag play does not wait for us, and a dropped frame is a missing message.
-  subscriber_ = nh.subscribe("raw/rx", 10000, &ReplayInput::on_frame, this,
-                             ros::TransportHints().tcpNoDelay());
-}
-
-void ReplayInput::on_frame(const k40t_driver::Frame::ConstPtr& frame) {
-  if (frame->direction != k40t_driver::Frame::RX) return;
-  driver_.replay_frame(frame->data.data(), frame->data.size(),
-                       static_cast<StampNs>(frame->stamp.toNSec()));
+  return nh.subscribe<k40t_driver::Frame>(
+      "raw/rx", 10000,
+      [&driver](const k40t_driver::Frame::ConstPtr& frame) {
+        if (frame->direction != k40t_driver::Frame::RX) return;
+        driver.replay_frame(frame->data.data(), frame->data.size(),
+                            static_cast<StampNs>(frame->stamp.toNSec()));
+      },
+      ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
 }
 
 }  // namespace k40t::driver

@@ -23,7 +23,7 @@ RosPod::RosPod(ros::NodeHandle nh, ros::NodeHandle private_nh, const RosPodConfi
   // Every handler is registered before the link starts.
   topics_ = std::make_unique<TopicPublisher>(nh, *driver_, config_);
   if (config_.driver.replay) {
-    replay_ = std::make_unique<ReplayInput>(nh, *driver_);
+    replay_ = subscribe_replay_input(nh, *driver_);
   } else {
     settings_ = std::make_unique<SettingsSync>(private_nh, *driver_);
     commands_ = std::make_unique<CommandInput>(nh, *driver_);

@@ -10,7 +10,7 @@ TopicPublisher::TopicPublisher(ros::NodeHandle nh, PodDriver& driver, const RosP
   RosTopicSink sink(nh);
   advertise_decoded_topics(sink, driver, config);
 
-  // Raw frames. In replay mode raw/rx is the input (ReplayInput), not an output.
+  // Raw frames. In replay mode raw/rx is the input (replay_input.h), not an output.
   if (!driver.replay()) {
     raw_rx_ = nh.advertise<k40t_driver::Frame>("raw/rx", 100);
     raw_tx_ = nh.advertise<k40t_driver::Frame>("raw/tx", 100);

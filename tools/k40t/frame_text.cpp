@@ -4,22 +4,21 @@
 
 #include "input.h"
 #include "json_sink.h"
+#include "k40t_driver/codec/enum_names.h"
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/field_assign.h"
 
 namespace k40t::tool {
 
 const char* kind_name(protocol::MessageId id) {
-  switch (protocol::kind_of(id)) {
-    case protocol::MessageKind::kRequestOrReport:
-      return protocol::is_periodic_report(id) ? "report" : "request";
-    case protocol::MessageKind::kAck:
-      return "ack";
-    case protocol::MessageKind::kStatus:
-      return "status";
-    default:
-      return "other";
+  using protocol::MessageKind;
+  const MessageKind kind = protocol::kind_of(id);
+  if (kind == MessageKind::kRequestOrReport) {
+    return protocol::is_periodic_report(id) ? "report" : "request";
   }
+  static constexpr EnumName<MessageKind> kNames[] = {{MessageKind::kAck, "ack"},
+                                                     {MessageKind::kStatus, "status"}};
+  return name_in(kNames, kind, "other");
 }
 
 std::string address_text(protocol::Address address) {

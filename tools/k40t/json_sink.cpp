@@ -54,12 +54,13 @@ void JsonWriter::close(char bracket) {
   need_comma_ = true;
 }
 
-void JsonWriter::key(const char* name) {
+JsonWriter& JsonWriter::key(const char* name) {
   separate();
   out_ += '"';
   out_ += json_escape(name);
   out_ += "\":";
   need_comma_ = false;  // the value follows without a comma
+  return *this;
 }
 
 void JsonWriter::string(const std::string& value) {
@@ -100,35 +101,10 @@ void JsonWriter::real(double value) {
   out_ += buffer;
 }
 
-void JsonFieldSink::integer(const char* name, int64_t value) {
-  out_.key(name);
-  out_.integer(value);
-}
-
-void JsonFieldSink::unsigned_integer(const char* name, uint64_t value) {
-  out_.key(name);
-  out_.unsigned_integer(value);
-}
-
-void JsonFieldSink::real(const char* name, double value) {
-  out_.key(name);
-  out_.real(value);
-}
-
-void JsonFieldSink::boolean(const char* name, bool value) {
-  out_.key(name);
-  out_.boolean(value);
-}
-
-void JsonFieldSink::text(const char* name, const std::string& value) {
-  out_.member(name, value);
-}
-
 void JsonFieldSink::enumeration(const char* name, int64_t code, const char* label) {
   out_.key(name);
   out_.begin_object();
-  out_.key("code");
-  out_.integer(code);
+  out_.key("code").integer(code);
   out_.key("name");
   if (label != nullptr) {
     out_.string(label);

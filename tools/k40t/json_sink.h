@@ -16,7 +16,8 @@ class JsonWriter {
   void end_object() { close('}'); }
   void begin_array() { open('['); }
   void end_array() { close(']'); }
-  void key(const char* name);
+  // Returns the writer, so that the value can follow in the same expression.
+  JsonWriter& key(const char* name);
   void string(const std::string& value);
   void null();
   void boolean(bool value);
@@ -50,11 +51,13 @@ std::string json_escape(const std::string& text);
 class JsonFieldSink : public protocol::FieldSink {
  public:
   explicit JsonFieldSink(JsonWriter& out) : out_(out) {}
-  void integer(const char* name, int64_t value) override;
-  void unsigned_integer(const char* name, uint64_t value) override;
-  void real(const char* name, double value) override;
-  void boolean(const char* name, bool value) override;
-  void text(const char* name, const std::string& value) override;
+  void integer(const char* name, int64_t value) override { out_.key(name).integer(value); }
+  void unsigned_integer(const char* name, uint64_t value) override {
+    out_.key(name).unsigned_integer(value);
+  }
+  void real(const char* name, double value) override { out_.key(name).real(value); }
+  void boolean(const char* name, bool value) override { out_.key(name).boolean(value); }
+  void text(const char* name, const std::string& value) override { out_.member(name, value); }
   void enumeration(const char* name, int64_t code, const char* label) override;
   void bytes(const char* name, const uint8_t* data, size_t size) override;
 

@@ -26,41 +26,35 @@ Step reshoot_step(const protocol::PreciseReshootStatus& status);    // 0x020307
 Step tf_upgrade_step(const protocol::TfCardUpgradeStatus& status);  // 0x02030C
 
 // 0x000304, ended by 0x020304 "done"; the ratio comes from 0x000005 (5 Hz).
-class ZoomTo {
+class ZoomTo : public TrackedOperation {
  public:
   static constexpr double kDefaultTimeoutS = 15;  // 1x -> 160x takes about 4 s
 
   static Result<ZoomTo> create(double ratio_x, double timeout_s, double now_s);
   const protocol::ZoomRatioRequest& request() const { return request_; }
-  void on_status(const protocol::ZoomStatus& status) { tracker_.report(zoom_step(status)); }
+  void on_status(const protocol::ZoomStatus& status) { tracker().report(zoom_step(status)); }
   void on_visible(const protocol::VisibleStatus& status) { ratio_x_ = status.zoom_x; }
   std::optional<double> ratio_x() const { return ratio_x_; }
-  OperationTracker& tracker() { return tracker_; }
-  const OperationTracker& tracker() const { return tracker_; }
 
  private:
   ZoomTo(const protocol::ZoomRatioRequest& request, double timeout_s, double now_s);
   protocol::ZoomRatioRequest request_;
-  OperationTracker tracker_;
   std::optional<double> ratio_x_;
 };
 
 // 0x00030D, ended by 0x02030D "done" (5 Hz while formatting). The frame carries no percentage:
 // progress is the state, the frames seen and the time.
-class SdFormat {
+class SdFormat : public TrackedOperation {
  public:
   static constexpr double kDefaultTimeoutS = 60;
 
   static Result<SdFormat> create(double timeout_s, double now_s);
   void on_status(const protocol::SdFormatStatus& status) {
-    tracker_.report(sd_format_step(status));
+    tracker().report(sd_format_step(status));
   }
-  OperationTracker& tracker() { return tracker_; }
-  const OperationTracker& tracker() const { return tracker_; }
 
  private:
   SdFormat(double timeout_s, double now_s);
-  OperationTracker tracker_;
 };
 
 // A precise re-shoot in physical units, shared by the precise_reshoot service and action. 0 for
@@ -87,7 +81,7 @@ struct PreciseReshootGoal {
 };
 
 // 0x000307, ended by 0x020307 "done" (state 0) or a failure state.
-class PreciseReshoot {
+class PreciseReshoot : public TrackedOperation {
  public:
   static constexpr double kDefaultTimeoutS = 30;  // waits for the zoom, then one photo
 
@@ -97,35 +91,29 @@ class PreciseReshoot {
                                        double now_s);
   const protocol::PreciseReshootRequest& request() const { return request_; }
   void on_status(const protocol::PreciseReshootStatus& status) {
-    tracker_.report(reshoot_step(status));
+    tracker().report(reshoot_step(status));
   }
-  OperationTracker& tracker() { return tracker_; }
-  const OperationTracker& tracker() const { return tracker_; }
 
  private:
   PreciseReshoot(const protocol::PreciseReshootRequest& request, double timeout_s, double now_s);
   protocol::PreciseReshootRequest request_;
-  OperationTracker tracker_;
 };
 
 // 0x00030C, ended by 0x02030C "succeeded"/"failed"; the percentage comes from 0x000008
 // "upgrading" (1 Hz).
-class TfUpgrade {
+class TfUpgrade : public TrackedOperation {
  public:
   static constexpr double kDefaultTimeoutS = 600;  // a firmware upgrade may take minutes
 
   static Result<TfUpgrade> create(double timeout_s, double now_s);
   void on_status(const protocol::TfCardUpgradeStatus& status) {
-    tracker_.report(tf_upgrade_step(status));
+    tracker().report(tf_upgrade_step(status));
   }
   void on_progress(const protocol::CameraUpgradeStatus& status);
   int progress_percent() const { return progress_percent_; }  // -1: none reported yet
-  OperationTracker& tracker() { return tracker_; }
-  const OperationTracker& tracker() const { return tracker_; }
 
  private:
   TfUpgrade(double timeout_s, double now_s);
-  OperationTracker tracker_;
   int progress_percent_ = -1;
 };
 

@@ -33,7 +33,7 @@ struct GimbalMoveGoal {
 };
 
 // Succeeds when a 0x000002 report puts both joints within the tolerance of the target.
-class GimbalMove {
+class GimbalMove : public TrackedOperation {
  public:
   static constexpr double kDefaultToleranceRad = 0.5 * M_PI / 180;  // 0.5 deg
   // The longest move, 360 deg of yaw, takes 18 s at the default dial speed of 20 deg/s; 30 s
@@ -44,8 +44,6 @@ class GimbalMove {
 
   const protocol::GimbalAngleRequest& request() const { return request_; }
   void on_attitude(const protocol::GimbalAttitude& attitude);
-  OperationTracker& tracker() { return tracker_; }
-  const OperationTracker& tracker() const { return tracker_; }
   const std::optional<JointAngles>& joints() const { return joints_; }
   double error_rad() const { return error_rad_; }  // largest axis error of the last report
   double tolerance_rad() const { return tolerance_rad_; }
@@ -57,7 +55,6 @@ class GimbalMove {
   GimbalMoveGoal goal_;
   protocol::GimbalAngleRequest request_;
   double tolerance_rad_;
-  OperationTracker tracker_;
   std::optional<JointAngles> joints_;
   double error_rad_ = -1;
 };
@@ -72,7 +69,7 @@ Result<CalibrationKind> calibration_kind(int kind);
 // belong to a TF-card upgrade and are ignored.
 std::optional<Step> calibration_step(const protocol::CameraUpgradeStatus& status);
 
-class GimbalCalibration {
+class GimbalCalibration : public TrackedOperation {
  public:
   static constexpr double kDefaultTimeoutS = 60;  // the calibrations take seconds (drift ~5 s)
 
@@ -81,14 +78,11 @@ class GimbalCalibration {
   CalibrationKind kind() const { return kind_; }
   void on_status(const protocol::CameraUpgradeStatus& status);
   int progress_percent() const { return progress_percent_; }  // -1: none reported yet
-  OperationTracker& tracker() { return tracker_; }
-  const OperationTracker& tracker() const { return tracker_; }
 
  private:
   GimbalCalibration(CalibrationKind kind, double timeout_s, double now_s);
 
   CalibrationKind kind_;
-  OperationTracker tracker_;
   int progress_percent_ = -1;
 };
 

@@ -14,6 +14,9 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
+
+#include "k40t_driver/protocol/result.h"
 
 namespace k40t::operations {
 
@@ -79,5 +82,30 @@ struct TimeoutChoice {
   std::string error;
 };
 TimeoutChoice choose_timeout(double requested_s, double default_s);
+
+// What every long operation shares: the OperationTracker made from its name and what ends it
+// (see OperationTracker's constructor), which the ROS glue reads through tracker().
+class TrackedOperation {
+ public:
+  OperationTracker& tracker() { return tracker_; }
+  const OperationTracker& tracker() const { return tracker_; }
+
+ protected:
+  TrackedOperation(std::string what, std::string awaited, double timeout_s, double now_s)
+      : tracker_(std::move(what), std::move(awaited), timeout_s, now_s) {}
+
+  // For create(): `make(seconds)` with the timeout the goal asks for (choose_timeout), or the
+  // timeout's error.
+  template <class Make>
+  static auto with_timeout(double requested_s, double default_s, Make make)
+      -> Result<decltype(make(0.0))> {
+    const TimeoutChoice timeout = choose_timeout(requested_s, default_s);
+    if (!timeout.ok) return Status::fail(timeout.error);
+    return make(timeout.seconds);
+  }
+
+ private:
+  OperationTracker tracker_;
+};
 
 }  // namespace k40t::operations

@@ -9,6 +9,7 @@
 
 #include <nodelet/nodelet.h>
 #include <ros/ros.h>
+#include <pluginlib/class_list_macros.hpp>
 
 #include "k40t_driver/ros/stop_signals.h"
 
@@ -41,6 +42,18 @@ class ComponentNodelet : public nodelet::Nodelet {
   Callbacks callbacks_;
   std::unique_ptr<Component> component_;
 };
+
+// Declares the nodelet class Namespace::Name hosting Component (its constructor gives `what` and
+// Callbacks::`callbacks`) and exports it to pluginlib as nodelet_plugins.xml names it. At global
+// scope, once per nodelet source file.
+#define K40T_COMPONENT_NODELET(Namespace, Name, Component, what, callbacks)  \
+  namespace Namespace {                                                      \
+  class Name : public ::k40t::driver::ComponentNodelet<Component> {          \
+   public:                                                                   \
+    Name() : ComponentNodelet(what, ::k40t::driver::Callbacks::callbacks) {} \
+  };                                                                         \
+  }                                                                          \
+  PLUGINLIB_EXPORT_CLASS(Namespace::Name, nodelet::Nodelet)
 
 // The whole main() of a standalone node named `node_name`.
 template <class Component>

@@ -4,8 +4,9 @@
 // every frame or ACK fed to it, then SUCCEEDED, ABORTED (refused goal with nothing sent, NACK,
 // failure state, timeout) or PREEMPTED (cancel; the binding's stop() stops what the pod can stop).
 //
-// Every action's Result has `success`, `message` and `elapsed`, every Feedback `elapsed`; the
-// binding fills the rest.
+// Every action's Result has `success`, `message` and `elapsed`, every Feedback `elapsed`, and a
+// Feedback's `status`, where it has one, is the tracker's latest status text; the binding fills
+// the rest.
 //
 // Threads: a SimpleActionServer with an execute callback runs each goal on its own thread. The
 // server is built with autostart=false and started by start(); shutdown() ends a running goal
@@ -18,6 +19,8 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include <actionlib/server/simple_action_server.h>
 #include <ros/node_handle.h>
@@ -43,7 +46,8 @@ class OperationServer {
   struct Binding {
     std::function<Result<Op>(const Goal&, double now_s)> create;  // validates; nothing sent
     std::function<void(const Op&, AckHandler)> send;              // the request, asynchronously
-    std::function<void(const Op&, FeedbackMsg&)> feedback;        // the operation's figures
+    // The operation's figures; either may be empty where the message has no more fields.
+    std::function<void(const Op&, FeedbackMsg&)> feedback;
     std::function<void(const Op&, ResultMsg&)> result;
     // Stops the pod on cancel and timeout and says how; empty where the pod cannot stop.
     std::function<std::string()> stop;
@@ -75,6 +79,13 @@ class OperationServer {
   }
 
  private:
+  // Whether the action's Feedback has a `status` (the tracker's text goes there).
+  template <class Msg, class = void>
+  struct HasStatus : std::false_type {};
+  template <class Msg>
+  struct HasStatus<Msg, std::void_t<decltype(std::declval<Msg&>().status)>> : std::true_type {};
+  static constexpr bool kFeedbackHasStatus = HasStatus<FeedbackMsg>::value;
+
   using Shared = operations::SharedOperation<Op>;
 
   std::shared_ptr<Shared> active() const {
@@ -137,7 +148,8 @@ class OperationServer {
       if (seen != published) {  // a status frame, an ACK: whatever fed the operation
         FeedbackMsg feedback;
         op.inspect([&](Op& o) {
-          binding_.feedback(o, feedback);
+          if constexpr (kFeedbackHasStatus) feedback.status = o.tracker().status_text();
+          if (binding_.feedback) binding_.feedback(o, feedback);
           return 0;
         });
         feedback.elapsed = now_s - start_s;
@@ -153,7 +165,7 @@ class OperationServer {
     using operations::Phase;
     ResultMsg result;
     const Phase phase = op.inspect([&](Op& o) {
-      binding_.result(o, result);
+      if (binding_.result) binding_.result(o, result);
       result.message = o.tracker().reason();
       return o.tracker().phase();
     });

@@ -46,6 +46,20 @@ class PodActions {
   // Sends `request` asynchronously; the ACK goes to `done`.
   template <class Req>
   void send(const Req& request, std::function<void(const session::AckResult&)> done);
+  // A binding's send: always `request` / the operation's own request().
+  template <class Req>
+  auto sends(Req request) {
+    return [this, request](const auto&, auto done) { send(request, done); };
+  }
+  auto sends_its_request() {
+    return [this](const auto& op, auto done) { send(op.request(), done); };
+  }
+  // The server of an action whose goal is only its timeout and whose request is always `request`.
+  template <class Action, class Op, class Req, class Feedback>
+  std::unique_ptr<OperationServer<Action, Op>> timeout_only_action(ros::NodeHandle& nh,
+                                                                   const std::string& name,
+                                                                   const Req& request,
+                                                                   Feedback feedback);
   // Sends a stopping request and says whether the pod took it, for a cancel's message.
   template <class Req>
   std::string stop_with(const Req& request, const std::string& what);

@@ -23,6 +23,14 @@ class PodServices {
   // "succeeds" at the ROS level so the caller gets the message.
   template <class Srv, class Handler>
   void serve(const std::string& name, Handler handler);
+  // A service that sends one pod request: `build(request, r)` fills the Req r from the service's
+  // request; the response gets the ACK.
+  template <class Srv, class Req, class Build>
+  void serve_request(const std::string& name, Build build);
+  // A service that asks the pod one argument-less Req: `answer(ack, response)` fills the response
+  // from the typed ACK, when the pod answered and the answer reads (typed_ack() says why not).
+  template <class Srv, class Req, class Answer>
+  void serve_answer(const std::string& name, Answer answer);
   // The same for a std_srvs/Trigger service that sends one argument-less request.
   template <class Req>
   void serve_trigger(const std::string& name, Req request);

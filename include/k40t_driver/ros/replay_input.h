@@ -11,15 +11,7 @@
 
 namespace k40t::driver {
 
-class ReplayInput {
- public:
-  ReplayInput(ros::NodeHandle nh, PodDriver& driver);
-
- private:
-  void on_frame(const k40t_driver::Frame::ConstPtr& frame);
-
-  PodDriver& driver_;
-  ros::Subscriber subscriber_;
-};
+// The subscription; it holds `driver`, which must outlive it.
+ros::Subscriber subscribe_replay_input(ros::NodeHandle nh, PodDriver& driver);
 
 }  // namespace k40t::driver

@@ -49,7 +49,7 @@ class RosPod {
   std::unique_ptr<SettingsServices> settings_services_;
   std::unique_ptr<JobServices> job_services_;
   std::unique_ptr<CommandInput> commands_;
-  std::unique_ptr<ReplayInput> replay_;
+  ros::Subscriber replay_;  // replay mode's input (raw/rx)
   std::unique_ptr<TargetLocator> locator_;
   std::unique_ptr<PodActions> actions_;  // live mode; shut down before the driver stops
 };

@@ -73,7 +73,7 @@ class PodDecoder {
   }
 
   void received(const k40t_driver::Frame& frame, const ros::Time& receive_time) {
-    if (frame.direction != k40t_driver::Frame::RX) return;  // as ReplayInput
+    if (frame.direction != k40t_driver::Frame::RX) return;  // as the replay input
     sink_.set_receive_time(receive_time);
     const StampNs stamp = static_cast<StampNs>(frame.stamp.toNSec());
     if (static_tf_) {

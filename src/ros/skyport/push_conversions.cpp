@@ -98,24 +98,12 @@ sensor_msgs::NavSatFix raw_gps_fix(const RawGpsPush& p, const ros::Time& stamp,
   return fix;
 }
 
-geometry_msgs::TwistStamped raw_gps_velocity(const RawGpsPush& p, const ros::Time& stamp,
-                                             const std::string& frame) {
-  return enu_velocity(stamp, frame, p.velocity_north_cm_s, p.velocity_east_cm_s,
-                      p.velocity_down_cm_s);
-}
-
 sensor_msgs::NavSatFix rtk_fix(const RawRtkPush& p, const ros::Time& stamp,
                                const std::string& frame) {
   const int8_t status = p.position_type == 0    ? sensor_msgs::NavSatStatus::STATUS_NO_FIX
                         : p.position_type >= 50 ? sensor_msgs::NavSatStatus::STATUS_GBAS_FIX
                                                 : sensor_msgs::NavSatStatus::STATUS_FIX;
   return fix_message(stamp, frame, p.latitude_deg, p.longitude_deg, p.height_m, status);
-}
-
-geometry_msgs::TwistStamped rtk_velocity(const RawRtkPush& p, const ros::Time& stamp,
-                                         const std::string& frame) {
-  return enu_velocity(stamp, frame, p.velocity_north_cm_s, p.velocity_east_cm_s,
-                      p.velocity_down_cm_s);
 }
 
 k40t_driver::UavState uav_state(const UavStatePush& p, const ros::Time& stamp) {

@@ -35,13 +35,25 @@ RosPodPort::RosPodPort(ros::NodeHandle nh, std::string reconfigure, double servi
       timeout_(service_timeout_s),
       tracker_(std::move(events)) {
   cmd_rate_ = nh_.advertise<geometry_msgs::Twist>("gimbal/cmd_rate", 1);
-  joints_ = nh_.subscribe("joint_states", 1, &RosPodPort::on_joints, this);
   attitude_ = nh_.subscribe("gimbal/attitude", 1, &RosPodPort::on_attitude, this);
   camera_ = nh_.subscribe("camera/status", 1, &RosPodPort::on_camera, this);
-  visible_ = nh_.subscribe("visible/status", 1, &RosPodPort::on_visible, this);
   record_ = nh_.subscribe("record/status", 1, &RosPodPort::on_record, this);
-  photo_ = nh_.subscribe("photo/status", 10, &RosPodPort::on_photo, this);
-  upgrade_ = nh_.subscribe("camera/upgrade_status", 10, &RosPodPort::on_upgrade, this);
+  // The reports passed on as they are.
+  joints_ = nh_.subscribe<sensor_msgs::JointState>(
+      "joint_states", 1, [this](const sensor_msgs::JointState::ConstPtr& msg) {
+        tracker_.joints(msg->name, msg->position, msg->velocity, ros_now_s());
+      });
+  visible_ = nh_.subscribe<k40t_driver::VisibleStatus>(
+      "visible/status", 1, [this](const k40t_driver::VisibleStatus::ConstPtr& msg) {
+        tracker_.visible(msg->zoom_ratio, msg->focal_length_mm, ros_now_s());
+      });
+  photo_ = nh_.subscribe<k40t_driver::PhotoStatus>(
+      "photo/status", 10,
+      [this](const k40t_driver::PhotoStatus::ConstPtr& msg) { tracker_.photo(msg->state); });
+  upgrade_ = nh_.subscribe<k40t_driver::CameraUpgradeStatus>(
+      "camera/upgrade_status", 10, [this](const k40t_driver::CameraUpgradeStatus::ConstPtr& msg) {
+        tracker_.repair(msg->state, msg->progress_percent);
+      });
 }
 
 template <class Srv>
@@ -210,10 +222,6 @@ PodSnapshot RosPodPort::snapshot() const {
   return tracker_.snapshot(ros_now_s());
 }
 
-void RosPodPort::on_joints(const sensor_msgs::JointState::ConstPtr& msg) {
-  tracker_.joints(msg->name, msg->position, msg->velocity, ros_now_s());
-}
-
 void RosPodPort::on_attitude(const geometry_msgs::QuaternionStamped::ConstPtr& msg) {
   // The driver builds it as Rz(yaw) Ry(pitch) Rx(roll) of the pod's attitude angles (REP 103).
   double roll = 0, pitch = 0, yaw = 0;
@@ -233,18 +241,6 @@ void RosPodPort::on_camera(const k40t_driver::CameraStatus::ConstPtr& msg) {
   report.sd_total_mb = msg->sd_total_mb;
   report.sd_free_mb = msg->sd_free_mb;
   tracker_.camera(report, ros_now_s());
-}
-
-void RosPodPort::on_visible(const k40t_driver::VisibleStatus::ConstPtr& msg) {
-  tracker_.visible(msg->zoom_ratio, msg->focal_length_mm, ros_now_s());
-}
-
-void RosPodPort::on_photo(const k40t_driver::PhotoStatus::ConstPtr& msg) {
-  tracker_.photo(msg->state);
-}
-
-void RosPodPort::on_upgrade(const k40t_driver::CameraUpgradeStatus::ConstPtr& msg) {
-  tracker_.repair(msg->state, msg->progress_percent);
 }
 
 void RosPodPort::on_record(const k40t_driver::RecordStatus::ConstPtr& msg) {

@@ -2,6 +2,8 @@
 // 500 ms rule (pps_rule.h), and the pod fed from them (feed_pod).
 #include <chrono>
 #include <optional>
+#include <string>
+#include <utility>
 
 #include <ros/console.h>
 #include <std_msgs/Float32.h>
@@ -15,6 +17,14 @@
 namespace k40t::driver::skyport {
 
 using namespace psdk;
+
+template <class Push, class Convert>
+void SkyportRos::forward(ros::Publisher& publisher, const std::string& topic, Convert convert) {
+  using Msg = decltype(convert(std::declval<const Push&>(), ros::Time()));
+  publisher = nh_.advertise<Msg>(topic, 10);
+  session_->handle<Push>(
+      [&publisher, convert](const Push& p) { publisher.publish(convert(p, ros::Time::now())); });
+}
 
 void SkyportRos::register_pushes() {
   session_->handle<AttitudePush>([this](const AttitudePush& p) {
@@ -45,8 +55,7 @@ void SkyportRos::register_pushes() {
   session_->handle<RawGpsPush>(
       receiver("raw_gps", raw_gps_, raw_gps_velocity_, raw_gps_fix, raw_gps_velocity));
   session_->handle<RawRtkPush>(receiver("rtk", rtk_, rtk_velocity_, rtk_fix, rtk_velocity));
-  session_->handle<UavStatePush>(
-      [this](const UavStatePush& p) { uav_state_.publish(uav_state(p, ros::Time::now())); });
+  forward<UavStatePush>(uav_state_, "skyport/uav_state", uav_state);
   // 3.3.1 in either length: 42 bytes (document) or 33 (DJI's V1.0.0, no OSDK fields; P31).
   session_->on_command(LinkBandwidthPush::key(),
                        [this](const IncomingCommand& in) -> std::optional<Data> {
@@ -60,11 +69,8 @@ void SkyportRos::register_pushes() {
                          link_.publish(link_bandwidth(push.value(), ros::Time::now()));
                          return std::nullopt;
                        });
-  session_->handle<BarometricAltitudePush>([this](const BarometricAltitudePush& p) {
-    baro_.publish(barometric_altitude(p, ros::Time::now()));
-  });
-  session_->handle<AppDateTimePush>(
-      [this](const AppDateTimePush& p) { app_time_.publish(app_time(p, ros::Time::now())); });
+  forward<BarometricAltitudePush>(baro_, "skyport/barometric_altitude", barometric_altitude);
+  forward<AppDateTimePush>(app_time_, "skyport/app_time", app_time);
   session_->handle<UtcTimePush>([this](const UtcTimePush& p) {
     // Sent once per PPS pulse: the UTC time of the pulse, received just after it. A field out of
     // range (a microsecond beyond 999999 would overflow the stamp) drops the push.

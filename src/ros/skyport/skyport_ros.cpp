@@ -117,10 +117,7 @@ void SkyportRos::advertise() {
   rtk_velocity_ = nh_.advertise<geometry_msgs::TwistStamped>("skyport/rtk/velocity", 10);
   battery_ = nh_.advertise<sensor_msgs::BatteryState>("skyport/battery", 10);
   power_off_ = nh_.advertise<std_msgs::Bool>("skyport/power_off_warning", 1, true);
-  uav_state_ = nh_.advertise<k40t_driver::UavState>("skyport/uav_state", 10);
   link_ = nh_.advertise<k40t_driver::LinkBandwidth>("skyport/link_bandwidth", 10);
-  baro_ = nh_.advertise<k40t_driver::BarometricAltitude>("skyport/barometric_altitude", 10);
-  app_time_ = nh_.advertise<sensor_msgs::TimeReference>("skyport/app_time", 10);
   utc_time_ = nh_.advertise<sensor_msgs::TimeReference>("skyport/utc_time", 10);
   other_payload_ = nh_.advertise<k40t_driver::OtherPayload>("skyport/other_payload", 10, true);
   from_mobile_ = nh_.advertise<std_msgs::UInt8MultiArray>("skyport/transparent/from_mobile", 10);

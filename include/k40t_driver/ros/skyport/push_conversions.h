@@ -56,14 +56,19 @@ sensor_msgs::NavSatFix gps_fix(const psdk::GpsPush& p, const ros::Time& stamp,
 // 3.3.8: fixed from fix state 3 (3D) on; the accuracies (mm) as a diagonal covariance.
 sensor_msgs::NavSatFix raw_gps_fix(const psdk::RawGpsPush& p, const ros::Time& stamp,
                                    const std::string& frame);
-geometry_msgs::TwistStamped raw_gps_velocity(const psdk::RawGpsPush& p, const ros::Time& stamp,
-                                             const std::string& frame);
 // 3.3.9: position type 0 no solution, 50 (narrow integer, DJI's numbering) and above RTK fixed
 // (GBAS), anything else a fix.
 sensor_msgs::NavSatFix rtk_fix(const psdk::RawRtkPush& p, const ros::Time& stamp,
                                const std::string& frame);
-geometry_msgs::TwistStamped rtk_velocity(const psdk::RawRtkPush& p, const ros::Time& stamp,
-                                         const std::string& frame);
+// 3.3.8, 3.3.9: a receiver's NED velocity (cm/s), which both pushes carry in the same fields.
+template <class ReceiverPush>
+geometry_msgs::TwistStamped receiver_velocity(const ReceiverPush& p, const ros::Time& stamp,
+                                              const std::string& frame) {
+  return enu_velocity(stamp, frame, p.velocity_north_cm_s, p.velocity_east_cm_s,
+                      p.velocity_down_cm_s);
+}
+inline constexpr auto raw_gps_velocity = &receiver_velocity<psdk::RawGpsPush>;
+inline constexpr auto rtk_velocity = &receiver_velocity<psdk::RawRtkPush>;
 
 k40t_driver::UavState uav_state(const psdk::UavStatePush& p, const ros::Time& stamp);
 // 3.3.1 in either length; `osdk_uplink_bytes_s` is 0 when the push had no OSDK fields.

@@ -62,13 +62,9 @@ class RosPodPort : public PodPort {
   template <class Srv>
   bool client(const std::string& name, ros::ServiceClient& out, std::string& why);
   PodCall reconfigure_int(const std::string& name, int value);
-  void on_joints(const sensor_msgs::JointState::ConstPtr& msg);
   void on_attitude(const geometry_msgs::QuaternionStamped::ConstPtr& msg);
   void on_camera(const k40t_driver::CameraStatus::ConstPtr& msg);
-  void on_visible(const k40t_driver::VisibleStatus::ConstPtr& msg);
   void on_record(const k40t_driver::RecordStatus::ConstPtr& msg);
-  void on_photo(const k40t_driver::PhotoStatus::ConstPtr& msg);
-  void on_upgrade(const k40t_driver::CameraUpgradeStatus::ConstPtr& msg);
 
   ros::NodeHandle nh_;
   std::string reconfigure_;

@@ -10,6 +10,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <string>
 
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <ros/node_handle.h>
@@ -40,6 +41,9 @@ class SkyportRos {
              std::unique_ptr<psdk::Session> session);
   void advertise();
   void register_pushes();
+  // A push published on `topic`, into `publisher`, as `convert(push, now)` gives it.
+  template <class Push, class Convert>
+  void forward(ros::Publisher& publisher, const std::string& topic, Convert convert);
   void register_transparent();
   // ~handled_commands: the dispatch table's keys ("0x03/0x0A"), for the golden-frame coverage
   // check of the rostest (test_skyport.py).
