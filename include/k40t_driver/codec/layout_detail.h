@@ -116,12 +116,6 @@ struct BitUnpacker {
   }
 };
 
-// The integer form of check_range for a range given in a tag.
-inline Status check_int(const char* name, int64_t value, const wire::Limits& limits) {
-  return protocol::check_range(name, value, static_cast<int64_t>(limits.lo),
-                               static_cast<int64_t>(limits.hi), limits.unit);
-}
-
 // The value of a CodecOptions member a field takes (the defaults when no options were given).
 inline int option(const CodecOptions* options, int CodecOptions::*member) {
   static const CodecOptions kDefaults{};
