@@ -5,14 +5,14 @@ file(GLOB_RECURSE K40T_CORE_SOURCES CONFIGURE_DEPENDS
   ${PROJECT_SOURCE_DIR}/src/transport/*.cpp
   ${PROJECT_SOURCE_DIR}/src/session/*.cpp
   ${PROJECT_SOURCE_DIR}/src/operations/*.cpp)  # ROS-free logic of the driver's actions
-# Boost.Preprocessor (header-only, in the compiler's default include path): codec/field_list.h
-# declares a message's members and layout from one list of fields.
+# Boost.Preprocessor (header-only): codec/field_list.h declares a message's members and layout from
+# one list of fields.
 find_package(Boost 1.71 REQUIRED)
 add_library(k40t_core STATIC ${K40T_CORE_SOURCES})
 target_include_directories(k40t_core PUBLIC ${PROJECT_SOURCE_DIR}/include)
 include(${CMAKE_CURRENT_LIST_DIR}/cfg_enum_names.cmake)  # the enum names of cfg/setting_enums.txt
 target_include_directories(k40t_core PRIVATE ${K40T_GENERATED_INCLUDE})
-target_link_libraries(k40t_core PUBLIC Threads::Threads util)
+target_link_libraries(k40t_core PUBLIC Threads::Threads util Boost::headers)
 set_target_properties(k40t_core PROPERTIES POSITION_INDEPENDENT_CODE ON)
 
 # Geodesy (src/geo/): GeographicLib for geodetic <-> ECEF <-> ENU, PROJ with proj-data's EGM96

@@ -127,10 +127,10 @@ HealthCheck link_health(const DriverStats& s, const LinkContext& context) {
       {"gps requests without fix", s.gps_requests_unanswerable},
       {"gps requests time-matched", s.gps_requests_time_matched},
       {"gps requests outside the history", s.gps_requests_out_of_history},
-      {"cmd_rate dead-man stops", s.deadman_stops},
   };
   for (const auto& [name, count] : counters) check.add(name, count);
   check.add("last geotag gap to a fix (s)", s.last_geotag_gap_s);
+  check.add("cmd_rate dead-man stops", s.deadman_stops);
   return check;
 }
 

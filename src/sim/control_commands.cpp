@@ -219,8 +219,8 @@ std::string run_flight_data(const Args&, const Numbers&, ControlTarget& target) 
 }
 
 const std::vector<Command>& commands() {
-  const NumberArg kRate{"RATE", 0, 1};
-  const NumberArg kSeconds{"SECONDS", 0, 3600};
+  static const NumberArg kRate{"RATE", 0, 1};
+  static const NumberArg kSeconds{"SECONDS", 0, 3600};
   static const std::vector<Command> kCommands = {
       {"help", 0, 0, run_help},
       {"status", 0, 0, run_status},

@@ -11,11 +11,6 @@ namespace k40t::sim {
 
 namespace {
 
-Result<double> parse_number(const std::string& option, const std::string& text, double lo,
-                            double hi) {
-  return parse_number_in(text, option, lo, hi);
-}
-
 using OptionSpec = sim::OptionSpec<SimOptions>;
 using Kinds = OptionKinds<SimOptions>;
 
@@ -133,7 +128,7 @@ const std::vector<OptionSpec>& option_table() {
        "558), rendered from the model: image mode, palette, zoom and gimbal show in the picture; "
        "0 picks a free port",
        [](SimOptions& o, const std::string& option, const std::string& v) {
-         const auto port = parse_number(option, v, 0, 65535);
+         const auto port = parse_number_in(v, option, 0, 65535);
          if (!port) return port.status();
          if (*port != std::floor(*port))
            return Status::fail(option + ": '" + v + "' is not a port number");
@@ -155,9 +150,9 @@ Result<ScheduledFault> parse_scheduled_fault(const std::string& option, const st
   const size_t colon = text.find(':');
   if (colon == std::string::npos)
     return Status::fail(option + ": expected AT:AMOUNT (seconds:value), got '" + text + "'");
-  const auto at = parse_number(option + " AT", text.substr(0, colon), 0, 86400);
+  const auto at = parse_number_in(text.substr(0, colon), option + " AT", 0, 86400);
   if (!at) return at.status();
-  const auto amount = parse_number(option + " AMOUNT", text.substr(colon + 1), 0, max_amount);
+  const auto amount = parse_number_in(text.substr(colon + 1), option + " AMOUNT", 0, max_amount);
   if (!amount) return amount.status();
   ScheduledFault fault;
   fault.kind = kind;

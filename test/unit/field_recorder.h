@@ -9,9 +9,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "k40t_driver/codec/layout.h"
 #include "k40t_driver/protocol/field_assign.h"
 #include "k40t_driver/protocol/field_visit.h"
 
@@ -93,10 +95,32 @@ class FieldRecorder : public protocol::FieldSink {
   std::vector<Field> fields_;
 };
 
+namespace detail {
+template <class T, class V, class = void>
+struct HasFields : std::false_type {};
+template <class T, class V>
+struct HasFields<T, V, std::void_t<decltype(T::fields(std::declval<T&>(), std::declval<V&>()))>>
+    : std::true_type {};
+}  // namespace detail
+
+// v(name, field) for every field of `message`: the pod's fields(), or the flattened fields of a
+// PSDK layout() (the same FieldLister the pod's fields() is made of).
+template <class T, class V>
+void visit_named_fields(T& message, V& v) {
+  using Message = std::remove_const_t<T>;
+  if constexpr (detail::HasFields<Message, V>::value) {
+    Message::fields(message, v);
+  } else {
+    Message::layout(message, codec::FieldLister<V>(v));
+  }
+}
+
+// Every field of `message` with its value: a pod message's or a PSDK command's.
 template <class T>
 FieldRecorder record_fields(const T& message) {
   FieldRecorder recorder;
-  protocol::visit_fields(message, recorder);
+  protocol::detail::SinkAdapter adapter{recorder};
+  visit_named_fields(message, adapter);
   return recorder;
 }
 

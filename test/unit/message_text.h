@@ -37,35 +37,6 @@ inline FieldValues field_values_from_text(const std::string& text) {
   return values;
 }
 
-namespace detail {
-template <class T, class V, class = void>
-struct HasFields : std::false_type {};
-template <class T, class V>
-struct HasFields<T, V, std::void_t<decltype(T::fields(std::declval<T&>(), std::declval<V&>()))>>
-    : std::true_type {};
-}  // namespace detail
-
-// v(name, field) for every field of `message`: the pod's fields(), or the flattened fields of a
-// PSDK layout() (the same FieldLister the pod's fields() is made of).
-template <class T, class V>
-void visit_named_fields(T& message, V& v) {
-  using Message = std::remove_const_t<T>;
-  if constexpr (detail::HasFields<Message, V>::value) {
-    Message::fields(message, v);
-  } else {
-    Message::layout(message, codec::FieldLister<V>(v));
-  }
-}
-
-// Every field of `message` with its value (field_recorder.h's record_fields, PSDK commands too).
-template <class T>
-FieldRecorder recorded_fields(const T& message) {
-  FieldRecorder recorder;
-  protocol::detail::SinkAdapter adapter{recorder};
-  visit_named_fields(message, adapter);
-  return recorder;
-}
-
 // Sets the fields `text` names in `message` (field_assign.h's assigning visitor, which
 // message_from_args applies to a default message), leaving the others as they are.
 template <class T>
@@ -97,7 +68,7 @@ T message_from_text(const std::string& text) {
 // their defaults: for range checks that every field must pass.
 template <class T, class Check>
 void for_each_field_set_to(std::initializer_list<const char*> values, Check check) {
-  const FieldRecorder defaults = recorded_fields(T{});
+  const FieldRecorder defaults = record_fields(T{});
   for (const FieldRecorder::Field& field : defaults.fields()) {
     for (const char* value : values) {
       T message{};
@@ -112,7 +83,7 @@ void for_each_field_set_to(std::initializer_list<const char*> values, Check chec
 // checked. A name that is not a field of T is a failure.
 template <class T>
 ::testing::AssertionResult fields_are(const T& message, const std::string& text) {
-  const FieldRecorder recorded = recorded_fields(message);
+  const FieldRecorder recorded = record_fields(message);
   std::string differences;
   for (const auto& [name, expected] : field_values_from_text(text)) {
     std::string problem = "field '" + name + "' is not a field of " + T::kName;

@@ -1,9 +1,9 @@
 // A message whose wire form is its fields in order declares each field once, as one entry
 //   (type, name, wire kind)  or  (type, name, wire kind, initial value)
 // that gives both the member and its line in layout(); without an initial value the member is
-// value-initialised (0, false, the enum's 0, an empty struct). A reserved gap is the entry
-//   (reserved, wire::Reserved{n})
-// with a layout line and no member. protocol/message_layout.h and
+// value-initialised: 0, false, the enum's 0, or a struct member's own defaults. An entry of two,
+//   (reserved, wire::Reserved{n})   or   (start, wire::fixed(0x00, "start setting"))
+// is a layout line with no member: a reserved gap or a fixed byte. protocol/message_layout.h and
 // psdk/layout.h wrap it for their families:
 //   K40T_FIELDS((uint8_t, percentage, wire::u8),
 //               (float, q0, wire::f32, 1.0f));
@@ -14,9 +14,11 @@
 //     v("percentage", s.percentage, wire::u8);
 //     v("q0", s.q0, wire::f32);
 //   }
-// A message with a field shared with other messages or a rule across fields keeps
-// a written-out layout(). The preprocessor splits entries at top-level commas only, so a type or
-// a kind with a comma outside parentheses (std::array<T, N>) needs an alias.
+// A message writes layout() out where one entry cannot say it: bits of several members in one
+// byte (wire::bit_group), a group of fields shared with other messages (a function that visits
+// them), a field whose check reads another field (wire::ruled, wire::directed), or a type or kind
+// with a comma outside parentheses (std::array<T, N>): the preprocessor splits entries at every
+// such comma. Rules between fields in `Status extra_checks() const` go with either form.
 #pragma once
 
 #include <boost/preprocessor/cat.hpp>

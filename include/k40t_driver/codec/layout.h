@@ -15,6 +15,9 @@
 // Fields are in physical units; the tag says how they are carried.
 //
 // HOW TO CONVERT A POD MESSAGE (protocol/messages/*.h):
+//   0. A message that is a plain list of fields declares each once with `K40T_FIELDS(...)`
+//      (codec/field_list.h: members and layout() from one list); the steps below hold for its
+//      entries too. A message that needs more than one field per entry writes layout() out.
 //   1. Replace validate/encode/decode/fields with `K40T_MESSAGE_LAYOUT()`
 //   (protocol/message_layout.h)
 //      and one layout() as above. Field names are the old fields() names, in wire order.

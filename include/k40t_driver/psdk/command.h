@@ -186,10 +186,12 @@ constexpr bool is_ack_v = T::kPacket == PacketType::kAck;
 // layout's one size, or the bounds a struct without a layout gives.
 template <class T>
 std::pair<size_t, size_t> body_size_bounds() {
-  if constexpr (detail::HasLayout<T>::value)
-    return {detail::layout_size<T>(), detail::layout_size<T>()};
-  else
+  if constexpr (detail::HasLayout<T>::value) {
+    const size_t size = detail::layout_size<T>();
+    return {size, size};
+  } else {
     return {T::kMinBodySize, T::kMaxBodySize};
+  }
 }
 template <class T>
 size_t min_body_size() {

@@ -55,6 +55,7 @@ struct StreamEncodingRequest : ByteSettingRequest<StreamEncodingRequest, Setting
 // are used by area auto focus (4) only and must then span a non-empty box.
 struct FocusRequest {
   K40T_POD_REQUEST(0x000313, "focus", "3.2.4.18", 10, 9);
+  // Outside area focus the corners are ignored by the pod but must still fit the stream.
   K40T_FIELDS((FocusCommand, command, wire::u8, FocusCommand::kAuto),
               (uint16_t, area_left_px, kStreamColumn), (uint16_t, area_top_px, kStreamRow),
               (uint16_t, area_right_px, kStreamColumn), (uint16_t, area_bottom_px, kStreamRow),

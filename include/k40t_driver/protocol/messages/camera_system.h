@@ -46,6 +46,7 @@ struct FormatSdRequest : CommandRequest<0x01> {
 // first. Sent every 10 s right after a pulse on the RTC_IO pin when that pin is wired.
 struct TimeSyncRequest {
   K40T_POD_REQUEST(0x00030E, "time_sync", "3.2.4.13", 16, 16);
+  // Time zones run from UTC-12 (720 minutes west) to UTC+14 (840 minutes east).
   K40T_FIELDS((int64_t, unix_time_ms, wire::i64),
               (int32_t, tz_minutes_west,
                wire::i32.range(-840, 720, "min")),  // minutes west of Greenwich: UTC+8 is -480
