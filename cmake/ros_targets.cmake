@@ -68,6 +68,8 @@ install(FILES bench/bench_nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE
 install(DIRECTORY launch config urdf rviz DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 # The launch files' URDF generator ($(find k40t_driver)/scripts/k40t_urdf.py: prefixed frames).
 install(PROGRAMS scripts/k40t_urdf.py DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/scripts)
+# replay.launch's player (pkg="k40t_driver" type="k40t_replay_play.py"): rosbag play, then the launch ends.
+catkin_install_python(PROGRAMS scripts/k40t_replay_play.py DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 # rostest programs, run by scripts/run_tests.sh through test/ros/*.test:
 #   test/ros/unit/*.cpp  gtest of what needs ROS types (conversions, the settings table...), one

@@ -8,6 +8,10 @@ source "$K40T_DEVEL/setup.bash"
 [ "$k40t_nounset" = 1 ] && set -u
 unset k40t_nounset
 export ROS_PACKAGE_PATH="$K40T_ROOT:${ROS_PACKAGE_PATH:-}"
+# Debian's ROS sets no ROS_ROOT, but roslib.manifest (roswtf's package checks, run from a package
+# directory) reads os.environ['ROS_ROOT'] unguarded and roswtf wants an existing directory named
+# "ros": /etc/ros is Debian's ROS configuration directory (ROS_ETC_DIR) and holds no packages.
+export ROS_ROOT="${ROS_ROOT:-/etc/ros}"
 # The ROS-free programs (k40t, k40t_sim, skyport_sim, k40t_video_sim) by their bare names, as the
 # docs use them.
 export PATH="$PATH:$K40T_BUILD/core/bin"
