@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "k40t_driver/video/opencv_log_scope.h"
 #include "k40t_driver/video/rtsp_probe.h"
 #include "k40t_driver/video/stall_guard.h"
 
@@ -75,8 +76,10 @@ Result<std::shared_ptr<cv::VideoCapture>> open_capture(const CaptureOptions& opt
       opened = open_ffmpeg(*capture, options);
     } else if (options.low_latency) {
       if (Status s = register_stall_guard(); !s) return s;
+      OpenCvLogScope live_stream;  // no duration, no position: not a warning (opencv_log_scope.h)
       opened = capture->open(gstreamer_pipeline(options), cv::CAP_GSTREAMER);
     } else {
+      OpenCvLogScope live_stream;
       opened = capture->open(options.url, cv::CAP_GSTREAMER);
     }
   } catch (const cv::Exception& e) {

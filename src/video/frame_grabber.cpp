@@ -10,6 +10,7 @@
 
 #include "k40t_driver/transport/backoff.h"
 #include "k40t_driver/video/capture_open.h"
+#include "k40t_driver/video/opencv_log_scope.h"
 
 namespace k40t::video {
 
@@ -101,7 +102,11 @@ struct FrameGrabber::State {
         return StreamEnd::kFailed;
       }
       if (!pixels.u) pixels = pixels.clone();  // pointing into the back-end's own buffer
-      const double pts = capture.get(cv::CAP_PROP_POS_MSEC);
+      double pts = 0;
+      {
+        OpenCvLogScope live_stream;  // the "may be unreliable" note is about seeking files
+        pts = capture.get(cv::CAP_PROP_POS_MSEC);
+      }
       publish(std::move(pixels), received_us, pts > 0 ? std::optional<double>(pts) : std::nullopt);
       any = true;
     }

@@ -51,20 +51,27 @@ class Report:
               flush=True)
 
 
-def driver_up(session, timeout=40.0):
-    """Waits until the driver's joint_states flow on the session's master."""
-    code, _ = session.run("rostopic", "echo", "-n", "1", NS + "/joint_states", timeout=timeout)
-    return code == 0
+def driver_up(session, ns=NS, timeout=60.0):
+    """Waits until the driver's joint_states flow on the session's master (rostopic fails at once
+    while roslaunch is still starting the master: try again until the deadline)."""
+    deadline = time.time() + timeout
+    while time.time() < deadline and session.process.poll() is None:
+        try:
+            if session.run("rostopic", "echo", "-n", "1", ns + "/joint_states",
+                           timeout=deadline - time.time())[0] == 0:
+                return True
+        except subprocess.TimeoutExpired:
+            return False
+        time.sleep(0.5)
+    return False
 
 
-def quiet_start(report, launch_file, args):
+def quiet_start(report, launch_file, args, namespaces=(NS,)):
     """Starts launch_file, watches QUIET_S s once the driver is up, fails on any bad line."""
     started = time.time()
     session = LaunchSession(launch_file, args)
     try:
-        up = driver_up(session) if launch_file != "two_pods.launch" else all(
-            session.run("rostopic", "echo", "-n", "1", "/%s/joint_states" % ns, timeout=40)[0] == 0
-            for ns in ("pod_a", "pod_b"))
+        up = all(driver_up(session, ns) for ns in namespaces)
         time.sleep(QUIET_S)
         until = time.time()
         bad = session.bad_lines(until)
@@ -78,18 +85,23 @@ def quiet_start(report, launch_file, args):
     report.add("quiet start: %s %s" % (launch_file, " ".join(args)), started, failure)
 
 
-def child_pids(pid):
-    """Pids of the processes whose parent is pid (from /proc)."""
-    children = []
+def descendants(pid):
+    """Pids of pid's children, grandchildren... (from /proc): `rosbag record` is a Python wrapper
+    whose child /usr/lib/rosbag/record does the writing, and a power cut stops both."""
+    parents = {}
     for entry in os.listdir("/proc"):
         if entry.isdigit():
             try:
                 with open("/proc/%s/stat" % entry) as f:
-                    if int(f.read().rsplit(")", 1)[1].split()[1]) == pid:
-                        children.append(int(entry))
+                    parents[int(entry)] = int(f.read().rsplit(")", 1)[1].split()[1])
             except (OSError, IndexError, ValueError):
                 pass
-    return children
+    found, frontier = [], [pid]
+    while frontier:
+        children = [p for p, parent in parents.items() if parent in frontier]
+        found += children
+        frontier = children
+    return found
 
 
 def decoded_topics_published(session):
@@ -98,7 +110,10 @@ def decoded_topics_published(session):
     publishers, subscribers, _ = master.getSystemState()
     subscribed = {topic: nodes for topic, nodes in subscribers}
     driven = [t for t, nodes in publishers if NS + "/driver" in nodes and t != "/rosout"]
-    return [t for t in driven if not any(n in t for n in NOT_DECODED)], subscribed
+    # actionlib's own topics (goal status, feedback, result of the actions) are not decoded topics.
+    actions = set(t.rsplit("/", 1)[0] for t in driven if t.endswith("/feedback"))
+    return [t for t in driven if not any(n in t for n in NOT_DECODED)
+            and t.rsplit("/", 1)[0] not in actions], subscribed
 
 
 def roswtf(report, session):
@@ -121,12 +136,22 @@ def aggregator(report, session):
                None if code == 0 else "no /diagnostics_agg message within 30 s:\n" + out)
 
 
+def recorder_subscribed(session):
+    """True once a k40t_record node is subscribed to raw/rx: the recording has begun."""
+    _, subscribed = decoded_topics_published(session)
+    return any("k40t_record" in n for n in subscribed.get(NS + "/raw/rx", []))
+
+
 def cut_recording(report, session, bag):
-    """record.launch beside the driver, SIGKILLed after RECORD_S s; returns the kill time."""
-    started = time.time()
+    """record.launch beside the driver, SIGKILLed RECORD_S s after it subscribed; returns the
+    times (s) it began recording and was killed."""
+    t0 = time.time()
     record = subprocess.Popen(["roslaunch", "k40t_driver", "record.launch", "bag:=" + bag],
                               env=session.env, stdout=subprocess.DEVNULL, stderr=subprocess.STDOUT,
                               start_new_session=True)
+    while not recorder_subscribed(session) and time.time() < t0 + 30:
+        time.sleep(0.05)
+    started = time.time()
     time.sleep(RECORD_S / 2)
     topics, subscribed = decoded_topics_published(session)
     recorders = set(n for nodes in subscribed.values() for n in nodes if "k40t_record" in n)
@@ -134,16 +159,18 @@ def cut_recording(report, session, bag):
     time.sleep(max(0.0, started + RECORD_S - time.time()))
     # The power cut: the recorder and its roslaunch die at once, nothing gets to close the bag.
     killed = time.time()
-    for pid in child_pids(record.pid):
-        os.kill(pid, signal.SIGKILL)
-    os.killpg(record.pid, signal.SIGKILL)
+    for pid in [record.pid] + descendants(record.pid):
+        try:
+            os.kill(pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
     record.wait()
     failure = None
     if not recorders:
-        failure = "no k40t_record node subscribed to anything"
+        failure = "no k40t_record node subscribed within 30 s"
     elif missing:
         failure = "record.launch does not record the decoded topics %s" % " ".join(missing)
-    report.add("record.launch records every decoded topic", started, failure)
+    report.add("record.launch records every decoded topic", t0, failure)
     return started, killed
 
 
@@ -164,7 +191,7 @@ def recover(report, bag, started, killed):
         kept = rx[-1] - rx[0] if rx else 0.0
         print("  cut bag: recorder killed %.1f s after its start; raw/rx kept %.2f s (%d frames), "
               "the last %.2f s before the kill lost" % (killed - started, kept, len(rx), lost))
-        if lost > MAX_LOSS_S or kept < RECORD_S - MAX_LOSS_S - 1.0:
+        if lost > MAX_LOSS_S or kept < RECORD_S - MAX_LOSS_S:
             failure = ("killed after %.1f s, the reindexed bag keeps %.2f s of raw/rx and loses its "
                        "last %.2f s (at most %.1f s may be lost)" % (killed - started, kept, lost, MAX_LOSS_S))
     report.add("a recording killed with SIGKILL keeps raw/rx up to 1 s before the kill", t0, failure)
@@ -256,7 +283,8 @@ def main():
               threading.Thread(target=quiet_start, args=(report, "demo.launch", [
                   "sim_link:=%s/demo" % tmp, "sim_rtsp_port:=%d" % free_port()])),
               threading.Thread(target=quiet_start, args=(report, "two_pods.launch", [
-                  "video:=false", "a_sim_link:=%s/a" % tmp, "b_sim_link:=%s/b" % tmp]))]
+                  "video:=false", "a_sim_link:=%s/a" % tmp, "b_sim_link:=%s/b" % tmp],
+                                                           ("/pod_a", "/pod_b")))]
     for check in checks:
         check.start()
     for check in checks:

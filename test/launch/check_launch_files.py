@@ -23,11 +23,11 @@ VARIANTS = {
                     ["video:=true"], ["sim:=true", "video:=true", "manager:=/pod_manager"]],
     "skyport.launch": [["sim:=true"], ["app_key_file:=/etc/k40t/app_key", "encryption:=false"],
                        ["sim:=true", "app_name:=a", "app_id:=1", "developer_account:=d"]],
-    "sim.launch": [["manager:=/pod_manager"], ["video:=true"]],
+    "sim.launch": [["manager:=/pod_manager"], ["video:=true"], ["aggregate:=false"]],
     "video.launch": [["manager:=/pod_manager", "backend:=ffmpeg"]],
     "demo.launch": [["video:=false"], ["frame_prefix:=pod_a_", "mount_frame:=base_link", "manager:=manager"]],
     "two_pods.launch": [["video:=false", "aggregate:=false", "respawn:=false"]],
-    "record.launch": [["raw_only:=true", "duration:=5"]],
+    "record.launch": [["raw_only:=true", "duration:=5", "chunk_kb:=768"]],
     "replay.launch": [["sim_time:=true", "rate:=2.0"], ["ns:=pod_b", "frame_prefix:=pod_b_"]],
     "latency.launch": [["in_manager:=true"]],
 }

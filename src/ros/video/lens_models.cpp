@@ -1,6 +1,13 @@
 #include "k40t_driver/ros/video/lens_models.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <map>
+#include <optional>
+#include <string>
+#include <sys/stat.h>
+
+#include <ros/console.h>
 
 namespace k40t::driver {
 
@@ -30,6 +37,44 @@ video::Intrinsics from_message(const sensor_msgs::CameraInfo& info) {
   return in;
 }
 
+// camera_info_manager's file for an empty URL: ${ROS_HOME}/camera_info/<camera name>.yaml.
+std::string default_calibration_file(const std::string& camera_name) {
+  const char* ros_home = std::getenv("ROS_HOME");
+  const char* home = std::getenv("HOME");
+  const std::string dir = ros_home ? ros_home : std::string(home ? home : "") + "/.ros";
+  return dir + "/camera_info/" + camera_name + ".yaml";
+}
+
+bool file_exists(const std::string& path) {
+  struct stat info {};
+  return ::stat(path.c_str(), &info) == 0;
+}
+
+// Raises camera_info_manager's logger to ERROR until destroyed. Only used when no URL is set and
+// no calibration was ever saved: then the nominal pinhole is the documented model
+// (docs/video.md), and the manager's "Camera calibration file ... not found" on every start is not
+// a warning. A URL the user set that points nowhere still warns.
+class QuietCameraInfoManager {
+ public:
+  QuietCameraInfoManager() {
+    std::map<std::string, ros::console::levels::Level> levels;
+    ros::console::get_loggers(levels);
+    const auto it = levels.find(kLogger);
+    previous_ = it != levels.end() ? it->second : ros::console::levels::Info;
+    set(ros::console::levels::Error);
+  }
+  ~QuietCameraInfoManager() { set(previous_); }
+  QuietCameraInfoManager(const QuietCameraInfoManager&) = delete;
+  QuietCameraInfoManager& operator=(const QuietCameraInfoManager&) = delete;
+
+ private:
+  static constexpr const char* kLogger = ROSCONSOLE_ROOT_LOGGER_NAME ".camera_info_manager";
+  static void set(ros::console::levels::Level level) {
+    if (ros::console::set_logger_level(kLogger, level)) ros::console::notifyLoggerLevelsChanged();
+  }
+  ros::console::levels::Level previous_;
+};
+
 }  // namespace
 
 LensModels::LensModels(const ros::NodeHandle& private_nh, const VideoConfig& config)
@@ -37,8 +82,16 @@ LensModels::LensModels(const ros::NodeHandle& private_nh, const VideoConfig& con
   for (video::Lens lens : kLenses) {
     const std::string name = video::to_string(lens);
     ros::NodeHandle lens_nh(private_nh, name);
-    managers_[static_cast<size_t>(lens)] = std::make_unique<camera_info_manager::CameraInfoManager>(
-        lens_nh, config.frame_prefix + name, config.calibration_urls[static_cast<size_t>(lens)]);
+    const std::string camera_name = config.frame_prefix + name;
+    const std::string& url = config.calibration_urls[static_cast<size_t>(lens)];
+    std::optional<QuietCameraInfoManager> quiet;
+    if (url.empty() && !file_exists(default_calibration_file(camera_name))) {
+      quiet.emplace();
+      ROS_INFO("%s: no calibration saved (%s), nominal pinhole until one is", camera_name.c_str(),
+               default_calibration_file(camera_name).c_str());
+    }
+    managers_[static_cast<size_t>(lens)] =
+        std::make_unique<camera_info_manager::CameraInfoManager>(lens_nh, camera_name, url);
   }
 }
 
