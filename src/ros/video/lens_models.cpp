@@ -1,11 +1,11 @@
 #include "k40t_driver/ros/video/lens_models.h"
 
+#include <sys/stat.h>
 #include <algorithm>
 #include <cstdlib>
 #include <map>
 #include <optional>
 #include <string>
-#include <sys/stat.h>
 
 #include <ros/console.h>
 
