@@ -14,6 +14,7 @@
 
 #include <array>
 #include <memory>
+#include <string>
 
 #include <camera_info_manager/camera_info_manager.h>
 #include <ros/node_handle.h>
@@ -39,6 +40,7 @@ class LensModels {
   std::array<sensor_msgs::CameraInfo, 2> split_panels(cv::Size frame, const ZoomState& zoom) const;
 
  private:
+  bool calibrated(video::Lens lens) const;
   video::Intrinsics at_1x(video::Lens lens, cv::Size frame) const;
   // The lens's intrinsics for an `image`-sized picture at the zoom the pod reports.
   video::Intrinsics zoomed(video::Lens lens, cv::Size image, const ZoomState& zoom) const;
@@ -46,6 +48,8 @@ class LensModels {
 
   const VideoConfig& config_;
   std::array<std::unique_ptr<camera_info_manager::CameraInfoManager>, 3> managers_;
+  // Per lens: where camera_info_manager looks when no URL is set (empty: a URL is set).
+  std::array<std::string, 3> default_files_;
 };
 
 }  // namespace k40t::driver
