@@ -81,7 +81,7 @@ if(CATKIN_ENABLE_TESTING)
   file(GLOB K40T_ROS_UNIT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/test/ros/unit/*.cpp)
   if(K40T_ROS_UNIT_SOURCES)
     add_executable(k40t_ros_unit_tests ${K40T_ROS_UNIT_SOURCES})
-    target_link_libraries(k40t_ros_unit_tests PRIVATE k40t_pod_nodelet k40t_skyport_nodelet k40t_ros_bag GTest::gtest
+    target_link_libraries(k40t_ros_unit_tests PRIVATE k40t_pod_nodelet k40t_video_nodelet k40t_skyport_nodelet k40t_ros_bag GTest::gtest
                                                       GTest::gtest_main)
     # The settings table's test checks docs/ros_interface.md and cfg/ against the table.
     target_compile_definitions(k40t_ros_unit_tests PRIVATE
