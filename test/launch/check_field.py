@@ -151,6 +151,16 @@ def cut_recording(report, session, bag):
                               start_new_session=True)
     while not recorder_subscribed(session) and time.time() < t0 + 30:
         time.sleep(0.05)
+    # Recording has begun when the first chunk reaches the file (the bag's header comes first).
+    active = bag + ".active"
+    header_only = None
+    while time.time() < t0 + 40:
+        size = os.path.getsize(active) if os.path.exists(active) else None
+        if header_only is None:
+            header_only = size
+        elif size is not None and size > header_only:
+            break
+        time.sleep(0.02)
     started = time.time()
     time.sleep(RECORD_S / 2)
     topics, subscribed = decoded_topics_published(session)
@@ -243,8 +253,14 @@ def sim_session(report):
             return
         # The recording runs its RECORD_S s while the other checks use the same running driver.
         recording = {}
-        recorder = threading.Thread(target=lambda: recording.update(
-            times=cut_recording(report, session, bag)))
+
+        def record():
+            try:
+                recording["times"] = cut_recording(report, session, bag)
+            except Exception as e:  # reported as this check's failure, the others still run
+                report.add("record.launch records every decoded topic", started, "raised %r" % e)
+
+        recorder = threading.Thread(target=record)
         recorder.start()
         aggregator(report, session)
         roswtf(report, session)
@@ -255,7 +271,7 @@ def sim_session(report):
                    "a normal run printed:\n" + "\n".join(bad) if bad else None)
     finally:
         session.stop()
-    if recover(report, bag, *recording["times"]):
+    if "times" in recording and recover(report, bag, *recording["times"]):
         decode_cut_bag(report, bag, tmp)
         replay_ends_cleanly(report, bag)
     shutil.rmtree(tmp, ignore_errors=True)
