@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "k40t_driver/transport/backoff.h"
+#include "k40t_driver/transport/thread_name.h"
 #include "k40t_driver/video/capture_open.h"
 
 namespace k40t::video {
@@ -109,6 +110,7 @@ struct FrameGrabber::State {
   }
 
   void run() {
+    transport::name_this_thread("k40t_vgrab");
     transport::Backoff backoff(reconnect);
     bool ever_opened = false;
     while (is_running()) {
