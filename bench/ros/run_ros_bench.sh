@@ -28,6 +28,8 @@ launch() {  # launch FILE ARGS...: roslaunch in the background on our port; sets
 }
 stop() { kill -INT "$launch_pid" 2>/dev/null; wait "$launch_pid" 2>/dev/null; }
 
+# Tail latencies follow the machine's load: print it beside them.
+echo "== load average at the start: $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc) cores"
 if wanted latency; then
 echo "== latency: byte on the pty -> joint_states"
 launch "$K40T_ROOT/bench/ros/latency.launch" in_manager:=false link:=/tmp/k40t_bench_pty_$$ output:="$out/latency.txt"

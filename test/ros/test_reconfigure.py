@@ -10,6 +10,7 @@ import sys
 import time
 import unittest
 
+import rospy
 import rostest
 from dynamic_reconfigure.client import Client as ReconfigureClient
 
@@ -184,6 +185,14 @@ class Reconfigure(unittest.TestCase):
         self.assertTrue(self.client.update_configuration({"thermal_contrast": 41})["last_refusal"])
         self.assertEqual(self.client.update_configuration({"thermal_contrast": 42})["last_refusal"], "")
         self.assertTrue(wait_until(lambda: self.diagnostics.value("settings", "last refusal") == "", 3.0))
+
+    def test_parameter_server_follows_the_configuration(self):
+        # Written after the answer (served_config.h), changed parameters only.
+        response = service("set_palette", SetPalette)(palette=9)
+        self.assertTrue(response.success, response.message)
+        self.assertTrue(wait_until(lambda: rospy.get_param(name("driver/palette")) == 9, 3.0))
+        self.client.update_configuration({"thermal_sharpness": 33})
+        self.assertTrue(wait_until(lambda: rospy.get_param(name("driver/thermal_sharpness")) == 33, 3.0))
 
     def test_last_refusal_is_read_only(self):
         before = self.client.get_configuration(timeout=5.0)["last_refusal"]
