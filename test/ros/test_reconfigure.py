@@ -7,6 +7,7 @@ import ast
 import os
 import re
 import sys
+import threading
 import time
 import unittest
 
@@ -193,6 +194,37 @@ class Reconfigure(unittest.TestCase):
         self.assertTrue(wait_until(lambda: rospy.get_param(name("driver/palette")) == 9, 3.0))
         self.client.update_configuration({"thermal_sharpness": 33})
         self.assertTrue(wait_until(lambda: rospy.get_param(name("driver/thermal_sharpness")) == 33, 3.0))
+
+    def test_service_writes_and_reconfigure_requests_do_not_undo_each_other(self):
+        # set_palette in a loop while reconfigure changes the sharpness: a request built on a
+        # configuration the service had not published yet would send an old palette back.
+        set_palette = service("set_palette", SetPalette)
+        stop = threading.Event()
+        palettes = []
+
+        def hammer():
+            while not stop.is_set():
+                palettes.append(1 + len(palettes) % 20)
+                set_palette(palette=palettes[-1])
+
+        thread = threading.Thread(target=hammer)
+        thread.start()
+        requests, deadline = 0, time.time() + 5.0
+        try:  # until both sides have made 30 calls
+            while (requests < 30 or len(palettes) < 30) and time.time() < deadline:
+                value = 20 + requests % 60
+                config = self.client.update_configuration({"thermal_sharpness": value})
+                self.assertEqual(config["thermal_sharpness"], value)
+                requests += 1
+        finally:
+            stop.set()
+            thread.join()
+        self.assertGreaterEqual(len(palettes), 30, "the service loop did not overlap the requests")
+        expected = (palettes[-1], value)
+        config = self.client.get_configuration(timeout=5.0)
+        self.assertEqual((config["palette"], config["thermal_sharpness"]), expected)
+        pod = self.read_from_pod()
+        self.assertEqual((pod["palette"], pod["thermal_sharpness"]), expected)
 
     def test_last_refusal_is_read_only(self):
         before = self.client.get_configuration(timeout=5.0)["last_refusal"]
