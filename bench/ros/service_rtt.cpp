@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
       "ms\n",
       ms.size(), at(0.5), at(0.99), ms.back());
   std::printf(
-      "  wire time of request + ACK at %.0f baud: %.3f ms; p99 - wire = %.3f ms (target <= 3 ms); "
+      "  wire time of request + ACK at %.0f baud: %.3f ms; p99 - wire = %.3f ms (target <= 2 ms); "
       "failures %d\n",
       baud, wire_ms, at(0.99) - wire_ms, failures);
   return 0;

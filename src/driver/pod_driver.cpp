@@ -8,6 +8,7 @@
 #include "k40t_driver/protocol/messages/camera_system.h"
 #include "k40t_driver/protocol/messages/flight_controller.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
+#include "k40t_driver/transport/thread_name.h"
 
 namespace k40t::driver {
 
@@ -280,6 +281,7 @@ void PodDriver::send_laser_target_request() {
 }
 
 void PodDriver::timer_loop() {
+  transport::name_this_thread("k40t_timer");
   const bool syncing = options_.time_sync_period_s > 0;
   const bool targeting = options_.laser_target_period_s > 0;
   SteadyClock::time_point next_sync = SteadyClock::now() + seconds(options_.time_sync_period_s);
@@ -311,6 +313,7 @@ void PodDriver::timer_loop() {
 }
 
 void PodDriver::online_loop() {
+  transport::name_this_thread("k40t_online");
   std::unique_lock<std::mutex> lock(mutex_);
   while (!stopping_) {
     wake_.wait(lock, [&] { return stopping_ || online_pending_; });

@@ -5,6 +5,7 @@
 #include <future>
 
 #include "k40t_driver/psdk/catalogue.h"
+#include "k40t_driver/transport/thread_name.h"
 
 namespace k40t::psdk {
 
@@ -270,6 +271,7 @@ AckResult Session::request_raw(CommandKey key, const uint8_t* data, size_t size)
 }
 
 void Session::timer_loop() {
+  transport::name_this_thread("k40t_psdk_tmr");
   std::unique_lock<std::mutex> lock(timer_mutex_);
   while (!stopping_) {
     const auto next = pending_.next_deadline();

@@ -2,6 +2,8 @@
 
 #include <ros/console.h>
 
+#include "k40t_driver/transport/thread_name.h"
+
 namespace k40t::driver {
 
 Result<std::unique_ptr<RosPod>> RosPod::create(ros::NodeHandle nh, ros::NodeHandle private_nh) {
@@ -27,6 +29,8 @@ RosPod::RosPod(ros::NodeHandle nh, ros::NodeHandle private_nh, const RosPodConfi
   } else {
     settings_ = std::make_unique<SettingsSync>(private_nh, *driver_);
     commands_ = std::make_unique<CommandInput>(nh, *driver_);
+    // Each action server's goal thread is created with it: named for `top -H`.
+    const transport::ThreadNameScope goal_threads("k40t_goal");
     actions_ = std::make_unique<PodActions>(nh, *driver_);
   }
   diagnostics_ =

@@ -3,6 +3,7 @@
 #include "k40t_driver/ros/setting_binding.h"
 
 #include <cstdio>
+#include <sstream>
 
 #include <dynamic_reconfigure/config_tools.h>
 
@@ -72,6 +73,49 @@ std::vector<std::string> parameters_of(const SettingBinding& binding) {
     }
   }
   return names;
+}
+
+namespace {
+
+// The value of parameter `name` in `params` (the ints or doubles of a message), or nullptr.
+template <class Param>
+const Param* param_named(const std::vector<Param>& params, const std::string& name) {
+  for (const Param& p : params) {
+    if (p.name == name) return &p;
+  }
+  return nullptr;
+}
+
+template <class Param>
+void add_if_outside(std::string& out, const std::string& name, const std::vector<Param>& next,
+                    const std::vector<Param>& current, const std::vector<Param>& lo,
+                    const std::vector<Param>& hi) {
+  const Param* n = param_named(next, name);
+  const Param* c = param_named(current, name);
+  const Param* l = param_named(lo, name);
+  const Param* h = param_named(hi, name);
+  if (!n || !c || !l || !h || n->value == c->value) return;
+  if (l->value <= n->value && n->value <= h->value) return;
+  std::ostringstream text;
+  text << name << " " << n->value << " is outside " << l->value << ".." << h->value;
+  out += (out.empty() ? "" : "; ") + text.str();
+}
+
+}  // namespace
+
+std::string outside_cfg_range(const Config& next, const Config& current,
+                              const std::vector<std::string>& names) {
+  dynamic_reconfigure::Config n, c, lo, hi;
+  next.__toMessage__(n);
+  current.__toMessage__(c);
+  Config::__getMin__().__toMessage__(lo);
+  Config::__getMax__().__toMessage__(hi);
+  std::string out;
+  for (const std::string& name : names) {
+    add_if_outside(out, name, n.ints, c.ints, lo.ints, hi.ints);
+    add_if_outside(out, name, n.doubles, c.doubles, lo.doubles, hi.doubles);
+  }
+  return out;
 }
 
 namespace {

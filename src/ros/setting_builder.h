@@ -3,7 +3,7 @@
 //   one_field<p::ThermalSharpnessRequest>("thermal_sharpness", &Req::sharpness,
 //   &C::thermal_sharpness)
 //       .reads(&p::ThermalSettingsAck::sharpness)
-// gives the binding, its clamp rule, its request id and its read-back together; a setting of
+// gives the binding, its request id and its read-back together; a setting of
 // several parameters lists them as fields<Req>(name, from(&Req::a, &C::a), ...).reads(&Ack::a,
 // ...), or writes its request and read-back out with group() and reads_with().
 #pragma once
@@ -15,16 +15,6 @@
 #include "k40t_driver/ros/setting_binding.h"
 
 namespace k40t::driver::setting_table {
-
-// `next` is `current` moved into the cfg range [lo, hi] by dynamic_reconfigure's clamp: current
-// was outside it and next is the nearest bound.
-template <class T>
-bool clamped_from(const T& next, const T& current, const T& lo, const T& hi) {
-  if (next == current) return true;
-  if (current < lo) return next == lo;
-  if (hi < current) return next == hi;
-  return false;
-}
 
 // A table entry under construction; converts to the finished SettingBinding.
 class Entry {
@@ -71,11 +61,6 @@ Entry group(std::string name, Build build, Members... members) {
   b.differs = [=](const Config& a, const Config& c) { return ((a.*members != c.*members) || ...); };
   b.copy = [=](Config& to, const Config& from) { ((to.*members = from.*members), ...); };
   b.apply = [build](PodDriver& driver, const Config& c) { return driver.request(build(c)); };
-  b.only_clamped = [=](const Config& next, const Config& current) {
-    const Config& lo = Config::__getMin__();
-    const Config& hi = Config::__getMax__();
-    return (clamped_from(next.*members, current.*members, lo.*members, hi.*members) && ...);
-  };
   return Entry(std::move(b));
 }
 

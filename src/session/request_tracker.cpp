@@ -7,6 +7,7 @@
 
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/messages/ack.h"
+#include "k40t_driver/transport/thread_name.h"
 
 namespace k40t::session {
 
@@ -122,6 +123,7 @@ RequestTracker::Counters RequestTracker::counters() const {
 }
 
 void RequestTracker::run() {
+  transport::name_this_thread("k40t_sess");
   std::unique_lock<std::mutex> lock(mutex_);
   while (!stopping_) {
     const Clock::time_point now = Clock::now();

@@ -1,5 +1,7 @@
 #include "k40t_driver/skyport/job_queue.h"
 
+#include "k40t_driver/transport/thread_name.h"
+
 namespace k40t::driver::skyport {
 
 JobQueue::JobQueue(size_t capacity) : capacity_(capacity) {
@@ -36,6 +38,7 @@ void JobQueue::stop() {
 }
 
 void JobQueue::run() {
+  transport::name_this_thread("k40t_sky_job");
   std::unique_lock<std::mutex> lock(mutex_);
   while (true) {
     wake_.wait(lock, [this] { return stopping_ || !jobs_.empty(); });

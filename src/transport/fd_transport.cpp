@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "k40t_driver/transport/backoff.h"
+#include "k40t_driver/transport/thread_name.h"
 
 namespace k40t::transport {
 namespace {
@@ -103,6 +104,7 @@ void FdTransport::detach() {
 }
 
 void FdTransport::run() {
+  name_this_thread("k40t_io");
   io_thread_id_.store(std::this_thread::get_id());
   const Waiter waiter(stop_);
   Backoff backoff(policy_);

@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "k40t_driver/transport/backoff.h"
+#include "k40t_driver/transport/thread_name.h"
 #include "k40t_driver/video/capture_open.h"
 #include "k40t_driver/video/opencv_log_scope.h"
 
@@ -114,6 +115,7 @@ struct FrameGrabber::State {
   }
 
   void run() {
+    transport::name_this_thread("k40t_vgrab");
     transport::Backoff backoff(reconnect);
     bool ever_opened = false;
     while (is_running()) {

@@ -9,6 +9,8 @@
 #include <mutex>
 #include <thread>
 
+#include "k40t_driver/transport/thread_name.h"
+
 namespace k40t::video {
 
 namespace {
@@ -98,6 +100,7 @@ void end_stream(StallGuard* self) {
 // if it goes quiet while PLAYING. The thread holds a reference on the element, so the element
 // outlives it even if a push never returns.
 void watch_loop(StallGuard* self) {
+  transport::name_this_thread("k40t_vstall");
   constexpr auto kPoll = std::chrono::milliseconds(100);
   Watch* watch = self->watch;
   std::unique_lock<std::mutex> lock(watch->mutex);

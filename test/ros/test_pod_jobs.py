@@ -197,7 +197,7 @@ class PodJobs(unittest.TestCase):
             self.call_ok("read_settings", Trigger)
             self.assertTrue(self.config_becomes(photo_resolution=0x16), "the pod's value was not published as is")
             since = time.time()
-            config = self.client.update_configuration({"palette": 4})  # dynamic_reconfigure clamps it all
+            config = self.client.update_configuration({"palette": 4})  # nothing clamps the rest (served_config.h)
             self.assertEqual(config["photo_resolution"], 0x16)
             self.assertEqual(config["palette"], 4)
             time.sleep(0.3)

@@ -1,26 +1,31 @@
 #!/usr/bin/python3
 """dynamic_reconfigure against the simulated pod: every parameter round-trips (set, then read
 back from the pod after a reconnect), a refused change is reverted, and the pod's own settings
-become the configuration on connect."""
+become the configuration on connect. A value outside its cfg range is refused, not clamped and
+sent; the reply, the read-only last_refusal and the settings diagnostic tell the truth (issue 24)."""
 import ast
 import os
 import re
 import sys
+import threading
 import time
 import unittest
 
+import rospy
 import rostest
 from dynamic_reconfigure.client import Client as ReconfigureClient
 
-from k40t_driver.srv import Send
+from std_srvs.srv import Trigger
+
+from k40t_driver.srv import Send, SetPalette
 from k40t_test_support import WARN, name, service, start_driver_test, wait_until
 
 PKG = "k40t_driver"
 
 # Not set: the strong-light suppression excludes the backlight compensation the derived values
 # switch on; the only other stream resolution, 720p, is one the document marks unsupported (refused
-# before sending).
-NOT_SET = {"strong_light_suppression", "strong_light_level", "stream_resolution"}
+# before sending); last_refusal is read-only, no setting.
+NOT_SET = {"strong_light_suppression", "strong_light_level", "stream_resolution", "last_refusal"}
 
 
 def enum_values(description):
@@ -147,6 +152,95 @@ class Reconfigure(unittest.TestCase):
         config = self.client.update_configuration({"ev": 5})  # in 0..35 but not an EV code
         self.assertEqual(config["ev"], before)
         self.assertTrue(self.refusal_reported("ev: "), "the refusal is not in diagnostics")
+
+    def read_from_pod(self):
+        """The configuration as the pod has it now (read_settings re-reads it)."""
+        response = service("read_settings", Trigger)()
+        self.assertTrue(response.success, response.message)
+        time.sleep(0.3)  # the new configuration reaches the client
+        return self.client.get_configuration(timeout=5.0)
+
+    def test_out_of_range_value_is_refused_not_clamped_and_sent(self):
+        self.assertEqual(self.client.update_configuration({"palette": 5})["palette"], 5)
+        config = self.client.update_configuration({"palette": 99})  # cfg range 1..20
+        self.assertEqual(config["palette"], 5, "the reply does not show the palette in force")
+        self.assertEqual(config["last_refusal"], "palette: palette 99 is outside 1..20")
+        self.assertTrue(self.refusal_reported("palette: palette 99 is outside 1..20"))
+        self.assertEqual(self.read_from_pod()["palette"], 5, "the pod's palette changed (20 sent?)")
+
+    def test_mixed_change_keeps_the_refusal_until_a_later_write_succeeds(self):
+        config = self.client.update_configuration({"image_mode": 0, "thermal_contrast": 40})
+        self.assertEqual(config["last_refusal"], "")
+        # Image mode 2 is in the cfg's 0..7 but no code of 0x000318: refused before sending; the
+        # contrast is accepted after it (table order), which used to clear the refusal.
+        config = self.client.update_configuration({"image_mode": 2, "thermal_contrast": 41})
+        self.assertEqual(config["image_mode"], 0, "the reply does not show the image mode in force")
+        self.assertEqual(config["thermal_contrast"], 41)
+        self.assertTrue(config["last_refusal"].startswith("image_mode: "), config["last_refusal"])
+        self.assertTrue(self.refusal_reported("image_mode: "), "the refusal is not in diagnostics")
+        time.sleep(0.6)  # two more diagnostics periods: still there
+        self.assertTrue(self.refusal_reported("image_mode: "), "the refusal left the diagnostics")
+        self.assertTrue(self.diagnostics.wait_level("settings", WARN, 1.0))
+        self.assertEqual(self.client.get_configuration(timeout=5.0)["last_refusal"], config["last_refusal"])
+        # Nothing sent: the refusal stays; then a write the pod accepts clears it.
+        self.assertTrue(self.client.update_configuration({"thermal_contrast": 41})["last_refusal"])
+        self.assertEqual(self.client.update_configuration({"thermal_contrast": 42})["last_refusal"], "")
+        self.assertTrue(wait_until(lambda: self.diagnostics.value("settings", "last refusal") == "", 3.0))
+
+    def test_parameter_server_follows_the_configuration(self):
+        # Written after the answer (served_config.h), changed parameters only.
+        response = service("set_palette", SetPalette)(palette=9)
+        self.assertTrue(response.success, response.message)
+        self.assertTrue(wait_until(lambda: rospy.get_param(name("driver/palette")) == 9, 3.0))
+        self.client.update_configuration({"thermal_sharpness": 33})
+        self.assertTrue(wait_until(lambda: rospy.get_param(name("driver/thermal_sharpness")) == 33, 3.0))
+
+    def test_service_writes_and_reconfigure_requests_do_not_undo_each_other(self):
+        # set_palette in a loop while reconfigure changes the sharpness: a request built on a
+        # configuration the service had not published yet would send an old palette back.
+        set_palette = service("set_palette", SetPalette)
+        stop = threading.Event()
+        palettes = []
+
+        def hammer():
+            while not stop.is_set():
+                palettes.append(1 + len(palettes) % 20)
+                set_palette(palette=palettes[-1])
+
+        thread = threading.Thread(target=hammer)
+        thread.start()
+        requests, deadline = 0, time.time() + 5.0
+        try:  # until both sides have made 30 calls
+            while (requests < 30 or len(palettes) < 30) and time.time() < deadline:
+                value = 20 + requests % 60
+                config = self.client.update_configuration({"thermal_sharpness": value})
+                self.assertEqual(config["thermal_sharpness"], value)
+                requests += 1
+        finally:
+            stop.set()
+            thread.join()
+        self.assertGreaterEqual(len(palettes), 30, "the service loop did not overlap the requests")
+        expected = (palettes[-1], value)
+        config = self.client.get_configuration(timeout=5.0)
+        self.assertEqual((config["palette"], config["thermal_sharpness"]), expected)
+        pod = self.read_from_pod()
+        self.assertEqual((pod["palette"], pod["thermal_sharpness"]), expected)
+
+    def test_last_refusal_is_read_only(self):
+        before = self.client.get_configuration(timeout=5.0)["last_refusal"]
+        config = self.client.update_configuration({"last_refusal": "written by a client"})
+        self.assertEqual(config["last_refusal"], before)
+
+    def test_refused_service_write_is_shown_to_reconfigure(self):
+        response = service("set_palette", SetPalette)(palette=42)
+        self.assertFalse(response.success)
+        self.assertIn("palette 42 is outside 1..20", response.message)
+        self.assertTrue(wait_until(lambda: self.client.get_configuration(timeout=5.0)["last_refusal"]
+                                   == "palette: palette 42 is outside 1..20", 3.0))
+        response = service("set_palette", SetPalette)(palette=6)
+        self.assertTrue(response.success, response.message)
+        config = self.client.get_configuration(timeout=5.0)
+        self.assertEqual((config["palette"], config["last_refusal"]), (6, ""))
 
     def test_pod_settings_become_the_configuration_on_connect(self):
         # Change the pod behind the driver's back (raw 0x000106 palette 17), then reconnect.

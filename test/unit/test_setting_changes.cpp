@@ -1,7 +1,7 @@
 // changes_to_send() (driver/setting_binding.h), the rule a reconfigure follows, on a small
-// configuration of its own: what is sent, what is only dynamic_reconfigure's clamping of a value
-// the pod reported outside the cfg range (not sent, the pod's value kept), and that switching a
-// setting off goes before switching another on (3.2.3.9/3.2.3.10 note).
+// configuration of its own: what is sent, that a value the pod reported outside the cfg range is
+// left alone by a change of another setting, and that switching a setting off goes before
+// switching another on (3.2.3.9/3.2.3.10 note).
 #include <gtest/gtest.h>
 
 #include "k40t_driver/driver/setting_binding.h"
@@ -18,16 +18,11 @@ struct TestConfig {
 
 using Binding = BasicSettingBinding<TestConfig>;
 
-// A binding of one int field, clamped into [lo, hi] as dynamic_reconfigure does.
-Binding range_binding(const std::string& name, int TestConfig::*member, int lo, int hi) {
+Binding int_binding(const std::string& name, int TestConfig::*member) {
   Binding b;
   b.name = name;
   b.differs = [member](const TestConfig& a, const TestConfig& c) { return a.*member != c.*member; };
   b.copy = [member](TestConfig& to, const TestConfig& from) { to.*member = from.*member; };
-  b.only_clamped = [member, lo, hi](const TestConfig& next, const TestConfig& current) {
-    return (current.*member < lo && next.*member == lo) ||
-           (current.*member > hi && next.*member == hi);
-  };
   return b;
 }
 
@@ -36,7 +31,6 @@ Binding switch_binding(const std::string& name, bool TestConfig::*member) {
   b.name = name;
   b.differs = [member](const TestConfig& a, const TestConfig& c) { return a.*member != c.*member; };
   b.copy = [member](TestConfig& to, const TestConfig& from) { to.*member = from.*member; };
-  b.only_clamped = [](const TestConfig&, const TestConfig&) { return false; };
   b.switches_off = [member](const TestConfig& next, const TestConfig& current) {
     return current.*member && !(next.*member);
   };
@@ -45,8 +39,8 @@ Binding switch_binding(const std::string& name, bool TestConfig::*member) {
 
 const std::vector<Binding>& table() {
   static const std::vector<Binding> bindings = {
-      range_binding("palette", &TestConfig::palette, 1, 20),
-      range_binding("resolution", &TestConfig::resolution, 1, 21),
+      int_binding("palette", &TestConfig::palette),
+      int_binding("resolution", &TestConfig::resolution),
       switch_binding("strong_light", &TestConfig::strong_light),
       switch_binding("backlight", &TestConfig::backlight),
   };
@@ -76,24 +70,13 @@ TEST(SettingChanges, EachChangedSettingIsSentOnceInTableOrder) {
   EXPECT_EQ(next.resolution, 5);
 }
 
-TEST(SettingChanges, AClampBesideARealChangeIsNotSentAndKeepsThePodsValue) {
+TEST(SettingChanges, AValueThePodReportedOutsideTheRangeStaysBesideAnotherChange) {
   TestConfig current;
   current.resolution = 22;  // the pod reported a value above the cfg's 21
   TestConfig next = current;
-  next.resolution = 21;  // dynamic_reconfigure clamped it
-  next.palette = 4;      // while the user changed the palette
+  next.palette = 4;  // the user changes the palette only: nothing clamps the resolution
   EXPECT_EQ(names(changes_to_send(table(), next, current)), (std::vector<std::string>{"palette"}));
-  EXPECT_EQ(next.resolution, 22);  // what the server publishes: the pod's value
-}
-
-TEST(SettingChanges, AClampAloneIsTheUserChoosingTheBound) {
-  TestConfig current;
-  current.resolution = 22;
-  TestConfig next = current;
-  next.resolution = 21;
-  EXPECT_EQ(names(changes_to_send(table(), next, current)),
-            (std::vector<std::string>{"resolution"}));
-  EXPECT_EQ(next.resolution, 21);
+  EXPECT_EQ(next.resolution, 22);
 }
 
 TEST(SettingChanges, SwitchingOffGoesFirst) {

@@ -33,9 +33,6 @@ struct BasicSettingBinding {
   std::function<bool(const Config&, const Config&)> differs;           // any of its fields changed
   std::function<void(Config& to, const Config& from)> copy;            // copy its fields
   std::function<session::AckResult(PodDriver&, const Config&)> apply;  // send the request
-  // The change from `current` to `next` is only dynamic_reconfigure's clamping: each changed
-  // field was outside the cfg range (as the pod reported it) and is now the nearest bound.
-  std::function<bool(const Config& next, const Config& current)> only_clamped;
   // The change switches this setting off: sent before the others, so that one of two settings the
   // pod will not have on together (strong light, backlight) is off before the other goes on.
   std::function<bool(const Config& next, const Config& current)> switches_off;
@@ -50,23 +47,15 @@ struct BasicSettingBinding {
 };
 
 // The bindings of `table` a change from `current` to `next` sends, in the order to send them:
-//   - a binding whose change is only the clamping of a value the pod reported outside the cfg
-//     range is not sent while another parameter really changed, and `next` gets the pod's value
-//     back; alone, it is the user choosing exactly the bound, a real change;
-//   - bindings that switch their setting off go first (stable order otherwise).
+// those that switch their setting off first (3.2.3.9/3.2.3.10 note), table order otherwise.
+// Nothing is clamped before (ros/served_config.h): every changed value is the one asked for.
 template <class Config>
 std::vector<const BasicSettingBinding<Config>*> changes_to_send(
-    const std::vector<BasicSettingBinding<Config>>& table, Config& next, const Config& current) {
+    const std::vector<BasicSettingBinding<Config>>& table, const Config& next,
+    const Config& current) {
   std::vector<const BasicSettingBinding<Config>*> changed;
-  std::vector<const BasicSettingBinding<Config>*> clamped;
   for (const BasicSettingBinding<Config>& binding : table) {
-    if (!binding.differs(next, current)) continue;
-    (binding.only_clamped(next, current) ? clamped : changed).push_back(&binding);
-  }
-  if (changed.empty()) {
-    changed.swap(clamped);
-  } else {
-    for (const BasicSettingBinding<Config>* binding : clamped) binding->copy(next, current);
+    if (binding.differs(next, current)) changed.push_back(&binding);
   }
   std::stable_partition(changed.begin(), changed.end(), [&](const auto* binding) {
     return binding->switches_off && binding->switches_off(next, current);

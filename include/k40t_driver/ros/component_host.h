@@ -12,6 +12,7 @@
 #include <pluginlib/class_list_macros.hpp>
 
 #include "k40t_driver/ros/stop_signals.h"
+#include "k40t_driver/transport/thread_name.h"
 
 namespace k40t::driver {
 
@@ -56,9 +57,12 @@ class ComponentNodelet : public nodelet::Nodelet {
   PLUGINLIB_EXPORT_CLASS(Namespace::Name, nodelet::Nodelet)
 
 // The whole main() of a standalone node named `node_name`.
+// Threads are named for `top -H` (transport/thread_name.h): roscpp's own (poll, XML-RPC, rosout,
+// timers) inherit "k40t_roscpp", the spinner's "k40t_spin"; the main thread is "k40t_main".
 template <class Component>
 int run_standalone_node(int argc, char** argv, const char* node_name, const char* what,
                         Callbacks callbacks) {
+  transport::name_this_thread("k40t_roscpp");
   ros::init(argc, argv, node_name);
   shutdown_on_sigterm();
   ros::NodeHandle nh;
@@ -70,11 +74,14 @@ int run_standalone_node(int argc, char** argv, const char* node_name, const char
     return 1;
   }
   if (callbacks == Callbacks::kOneAtATime) {
+    transport::name_this_thread("k40t_main");
     ros::spin();
     return 0;
   }
   ros::AsyncSpinner spinner(4);
+  transport::name_this_thread("k40t_spin");
   spinner.start();
+  transport::name_this_thread("k40t_main");
   ros::waitForShutdown();
   return 0;
 }

@@ -27,6 +27,17 @@ const SettingBinding* binding_for_service(const std::string& service);
 // The cfg parameters a binding covers, in cfg order (found by what its copy() changes).
 std::vector<std::string> parameters_of(const SettingBinding& binding);
 
+// The one cfg parameter that is no setting: the last refusal and its reason, read-only (what a
+// reconfigure request writes to it is replaced by the driver's value), so that `dynparam get` and
+// rqt_reconfigure show why a change did not take. No binding covers it.
+inline constexpr const char* kLastRefusalParameter = "last_refusal";
+
+// Each of the parameters `names` whose value in `next` differs from `current` and lies outside its
+// cfg range, as "palette 99 is outside 1..20" (joined by "; "); empty when there is none. Such a
+// value is refused, not clamped (served_config.h).
+std::string outside_cfg_range(const Config& next, const Config& current,
+                              const std::vector<std::string>& names);
+
 // Read-back: the pod's reports -> the parameters they carry, for every binding read from them.
 void absorb(Config& config, const SettingReports& reports);
 

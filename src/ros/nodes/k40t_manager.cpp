@@ -19,6 +19,7 @@
 #include <ros/ros.h>
 
 #include "k40t_driver/ros/stop_signals.h"
+#include "k40t_driver/transport/thread_name.h"
 
 namespace {
 
@@ -39,14 +40,22 @@ void install_stop_handlers() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  using k40t::transport::name_this_thread;
+  // Threads named for `top -H`: roscpp's inherit "k40t_roscpp", the loader's workers (the
+  // nodelets' multi-threaded queue) "k40t_nodelet", the spinner's (services, default queue)
+  // "k40t_spin".
+  name_this_thread("k40t_roscpp");
   ros::init(argc, argv, "manager", ros::init_options::NoSigintHandler);
   install_stop_handlers();
   if (k40t::driver::stop_requested_before_ros_start()) g_stop_requested = true;  // while loading
   ros::NodeHandle private_nh("~");
+  name_this_thread("k40t_nodelet");
   nodelet::Loader loader(private_nh);  // load_nodelet, unload_nodelet, list, bonds
   // The manager's services and the nodelets' default queue, as `nodelet manager`'s ros::spin().
   ros::AsyncSpinner spinner(1);
+  name_this_thread("k40t_spin");
   spinner.start();
+  name_this_thread("k40t_main");
 
   while (!g_stop_requested && ros::ok()) std::this_thread::sleep_for(std::chrono::milliseconds(50));
 

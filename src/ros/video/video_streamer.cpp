@@ -3,6 +3,8 @@
 #include <sensor_msgs/image_encodings.h>
 #include <opencv2/imgproc.hpp>
 
+#include "k40t_driver/transport/thread_name.h"
+
 namespace k40t::driver {
 
 namespace {
@@ -69,6 +71,7 @@ VideoStreamer::~VideoStreamer() {
 }
 
 void VideoStreamer::publish_loop() {
+  transport::name_this_thread("k40t_vpub");
   uint64_t last = 0;
   while (running_ && ros::ok()) {
     std::optional<video::GrabbedFrame> frame =

@@ -1,7 +1,8 @@
-// The settings bindings' rules that keep dynamic_reconfigure honest (issue 10): a value the pod
-// reported outside the cfg range and then clamped by dynamic_reconfigure is recognised as such,
-// and switching strong-light suppression or backlight compensation off is recognised so that it
-// is sent before the other one is switched on (3.2.3.9/3.2.3.10 note).
+// The settings bindings' rules that keep dynamic_reconfigure honest (issues 10, 24): a requested
+// value outside the cfg range is named with the range (it is refused, not clamped), a value the pod
+// reported outside a range is left alone, and switching strong-light suppression or backlight
+// compensation off is recognised so that it is sent before the other one is switched on
+// (3.2.3.9/3.2.3.10 note).
 #include <gtest/gtest.h>
 
 #include "k40t_driver/ros/settings_sync.h"
@@ -15,26 +16,42 @@ const SettingBinding& binding(const std::string& name) {
   return *b;
 }
 
-TEST(SettingBindings, APodValueOutsideTheRangeClampedToItsBoundIsOnlyClamped) {
-  Config pod = Config::__getDefault__();
-  pod.photo_resolution = 0x16;  // 5160x3870: reported by 0x010200, not settable by 0x000202
-  pod.white_balance = 0;        // below the cfg's 1
-  Config clamped = pod;
-  clamped.photo_resolution = Config::__getMax__().photo_resolution;  // 0x15
-  clamped.white_balance = Config::__getMin__().white_balance;        // 1
-  EXPECT_TRUE(binding("photo_resolution").differs(clamped, pod));
-  EXPECT_TRUE(binding("photo_resolution").only_clamped(clamped, pod));
-  EXPECT_TRUE(binding("white_balance").only_clamped(clamped, pod));
+TEST(SettingBindings, AChangedValueOutsideTheCfgRangeIsNamedWithTheRange) {
+  const Config current = Config::__getDefault__();
+  Config next = current;
+  next.palette = 99;  // cfg range 1..20 (issue 24: was clamped to 20 and sent)
+  EXPECT_EQ(outside_cfg_range(next, current, parameters_of(binding("palette"))),
+            "palette 99 is outside 1..20");
+  next.palette = 20;
+  EXPECT_EQ(outside_cfg_range(next, current, parameters_of(binding("palette"))), "");
 }
 
-TEST(SettingBindings, AChangeWithinTheRangeIsARealChange) {
+TEST(SettingBindings, EachParameterOutsideItsRangeIsNamedDoublesToo) {
+  const Config current = Config::__getDefault__();
+  Config next = current;
+  next.timelapse_interval = 100;  // 5..60
+  next.burst_count = 2;           // 3..5
+  EXPECT_EQ(outside_cfg_range(next, current, parameters_of(binding("photo_mode"))),
+            "timelapse_interval 100 is outside 5..60; burst_count 2 is outside 3..5");
+  next = current;
+  next.high_alarm_degC = 600.5;  // -100..500
+  const std::string text = outside_cfg_range(next, current, {"high_alarm_degC"});
+  EXPECT_EQ(text, "high_alarm_degC 600.5 is outside -100..500");
+}
+
+TEST(SettingBindings, AValueThePodReportedOutsideTheRangeIsNotTheRequestsFault) {
   Config pod = Config::__getDefault__();
-  pod.photo_resolution = 0x15;
-  Config next = pod;
-  next.photo_resolution = 0x14;
-  EXPECT_FALSE(binding("photo_resolution").only_clamped(next, pod));
-  pod.photo_resolution = 0x16;  // out of range, but moved to the far bound: not a clamp
-  EXPECT_FALSE(binding("photo_resolution").only_clamped(next, pod));
+  pod.photo_resolution = 0x16;  // 5160x3870: reported by 0x010200, not settable by 0x000202
+  Config next = pod;            // unchanged: not checked
+  EXPECT_EQ(outside_cfg_range(next, pod, parameters_of(binding("photo_resolution"))), "");
+  next.photo_resolution = 0x15;  // back inside
+  EXPECT_EQ(outside_cfg_range(next, pod, parameters_of(binding("photo_resolution"))), "");
+}
+
+TEST(SettingBindings, TheRefusalParameterBelongsToNoBinding) {
+  for (const SettingBinding& b : setting_bindings()) {
+    for (const std::string& name : parameters_of(b)) EXPECT_NE(name, kLastRefusalParameter);
+  }
 }
 
 TEST(SettingBindings, SwitchingStrongLightOrBacklightOffIsRecognised) {

@@ -20,9 +20,12 @@ namespace {
 
 using k40t::testing::message_from_text;
 
+// The cfg parameters that are settings (all but the read-only last_refusal).
 std::vector<std::string> cfg_parameters() {
   std::vector<std::string> names;
-  for (const auto& param : Config::__getParamDescriptions__()) names.push_back(param->name);
+  for (const auto& param : Config::__getParamDescriptions__()) {
+    if (param->name != kLastRefusalParameter) names.push_back(param->name);
+  }
   return names;
 }
 
