@@ -25,9 +25,9 @@ std::string bare_reason(const std::string& url, std::string reason) {
 
 const char* to_string(PodLink state) {
   static constexpr EnumName<PodLink> kNames[] = {
-      {PodLink::kStarting, "starting"},   {PodLink::kCannotOpen, "cannot open"},
-      {PodLink::kWaiting, "waiting"},     {PodLink::kConnected, "connected"},
-      {PodLink::kNoAnswer, "no answer"},  {PodLink::kLost, "lost"},
+      {PodLink::kStarting, "starting"},  {PodLink::kCannotOpen, "cannot open"},
+      {PodLink::kWaiting, "waiting"},    {PodLink::kConnected, "connected"},
+      {PodLink::kNoAnswer, "no answer"}, {PodLink::kLost, "lost"},
       {PodLink::kStopped, "stopped"}};
   return name_in(kNames, state, "invalid pod link state");
 }
@@ -82,7 +82,8 @@ std::optional<PodLinkReport> LinkMonitor::on_frame(Clock::time_point now) {
 
 std::string LinkMonitor::since_text(Clock::time_point now) const {
   char text[32];
-  std::snprintf(text, sizeof text, "%.1f s", std::chrono::duration<double>(now - last_heard_).count());
+  std::snprintf(text, sizeof text, "%.1f s",
+                std::chrono::duration<double>(now - last_heard_).count());
   return text;
 }
 
@@ -93,8 +94,7 @@ std::optional<PodLinkReport> LinkMonitor::on_tick(Clock::time_point now) {
     return enter(PodLink::kNoAnswer, "waiting for the pod at " + url_ +
                                          ": nothing has answered for " + since_text(now));
   }
-  return enter(PodLink::kNoAnswer,
-               "no answer from the pod at " + url_ + " for " + since_text(now));
+  return enter(PodLink::kNoAnswer, "no answer from the pod at " + url_ + " for " + since_text(now));
 }
 
 std::optional<PodLinkReport> LinkMonitor::on_stop() {

@@ -179,8 +179,8 @@ void PodDriver::handle_rx_frame(const FrameView& frame) {
 
 void PodDriver::handle_link_state(transport::LinkState state, const std::string& reason) {
   // Asked outside our lock: the query may take the glue's locks.
-  const bool shutting_down = state == transport::LinkState::kReconnecting && shutting_down_ &&
-                             shutting_down_();
+  const bool shutting_down =
+      state == transport::LinkState::kReconnecting && shutting_down_ && shutting_down_();
   std::optional<PodLinkReport> report;
   {
     std::lock_guard<std::mutex> lock(mutex_);

@@ -92,7 +92,9 @@ std::string describe_process(long pid) {
   return name.empty() ? text : text + " (" + name + ")";
 }
 
-DeviceLock::DeviceLock(DeviceLock&& other) noexcept { *this = std::move(other); }
+DeviceLock::DeviceLock(DeviceLock&& other) noexcept {
+  *this = std::move(other);
+}
 
 DeviceLock& DeviceLock::operator=(DeviceLock&& other) noexcept {
   if (this == &other) return *this;

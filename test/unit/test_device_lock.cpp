@@ -28,9 +28,9 @@ extern char** environ;
 namespace k40t::transport {
 namespace {
 
+using testing::Endpoint;
 using ::testing::HasSubstr;
 using ::testing::Not;
-using testing::Endpoint;
 using testing::ScratchDir;
 
 // A child process that lives until killed (its /proc name: "sleep").

@@ -106,7 +106,8 @@ int run_monitor(const Command& self, const ParsedArgs& args) {
   // A running driver's link, from its raw/rx and raw/tx topics (the ROS build's program).
   if (source.rfind(kRosScheme, 0) == 0) {
     std::vector<std::string> forwarded{source.substr(std::string(kRosScheme).size())};
-    for (const auto& [option, value] : args.options) forwarded.insert(forwarded.end(), {option, value});
+    for (const auto& [option, value] : args.options)
+      forwarded.insert(forwarded.end(), {option, value});
     return run_ros_program("k40t_topic_monitor", "monitor", program_path(), forwarded);
   }
   // A URL has a scheme; anything else is a capture file.

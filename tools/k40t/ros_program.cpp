@@ -1,8 +1,8 @@
 // The subcommands that need ROS, which this ROS-free tool does not link, run a program of the ROS
 // build: `k40t bag ARGS` runs `k40t_bag ARGS` (rosbag), `k40t monitor ros:///NS` runs
-// `k40t_topic_monitor NS` (roscpp). Looked for beside this program (as invoked: rosrun's devel/lib/k40t_driver), beside the real
-// file (an installed package), in the source tree's devel space (build/core/bin/k40t), then on
-// PATH.
+// `k40t_topic_monitor NS` (roscpp). Looked for beside this program (as invoked: rosrun's
+// devel/lib/k40t_driver), beside the real file (an installed package), in the source tree's devel
+// space (build/core/bin/k40t), then on PATH.
 #include <limits.h>
 #include <unistd.h>
 

@@ -17,7 +17,8 @@
 namespace k40t::tool {
 namespace {
 
-const char* const kUsage = "usage: k40t monitor ros:///NAMESPACE [--crc-coverage ..] [--ack-byte-order ..]";
+const char* const kUsage =
+    "usage: k40t monitor ros:///NAMESPACE [--crc-coverage ..] [--ack-byte-order ..]";
 
 // One direction's frames: its own dispatcher (each topic is a stream of whole frames).
 class DirectionMonitor {
@@ -30,8 +31,8 @@ class DirectionMonitor {
   }
 
   void feed(const k40t_driver::Frame& frame) {
-    stamp_ = time_of_day_text(timespec{static_cast<time_t>(frame.stamp.sec),
-                                       static_cast<long>(frame.stamp.nsec)});
+    stamp_ = time_of_day_text(
+        timespec{static_cast<time_t>(frame.stamp.sec), static_cast<long>(frame.stamp.nsec)});
     dispatcher_.feed_frame(frame.data.data(), frame.data.size());
   }
 

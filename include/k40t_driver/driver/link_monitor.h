@@ -37,8 +37,8 @@ class LinkMonitor {
   LinkMonitor(std::string url, double link_timeout_s);
 
   // Each returns the new report when the state changed, for the caller to log.
-  std::optional<PodLinkReport> on_transport(transport::LinkState state,
-                                            const std::string& reason, Clock::time_point now);
+  std::optional<PodLinkReport> on_transport(transport::LinkState state, const std::string& reason,
+                                            Clock::time_point now);
   std::optional<PodLinkReport> on_frame(Clock::time_point now);
   // Call at deadline() (or later): turns waiting/connected into "no answer".
   std::optional<PodLinkReport> on_tick(Clock::time_point now);
@@ -55,8 +55,8 @@ class LinkMonitor {
   const std::string url_;
   const Clock::duration timeout_;
   PodLinkReport report_;
-  bool heard_ = false;                // a valid frame since the transport last connected
-  Clock::time_point last_heard_{};    // the last frame, or when the transport connected
+  bool heard_ = false;              // a valid frame since the transport last connected
+  Clock::time_point last_heard_{};  // the last frame, or when the transport connected
 };
 
 }  // namespace k40t::driver

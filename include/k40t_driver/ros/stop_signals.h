@@ -1,6 +1,7 @@
 // SIGTERM as a second Ctrl-C for the standalone nodes. roscpp turns SIGINT into a shutdown request
-// (which it keeps to itself) but leaves SIGTERM at its default (the process dies at once: no thread joined, exit code -15),
-// and SIGTERM is what roslaunch sends after its SIGINT timeout, and what systemd and docker send.
+// (which it keeps to itself) but leaves SIGTERM at its default (the process dies at once: no thread
+// joined, exit code -15), and SIGTERM is what roslaunch sends after its SIGINT timeout, and what
+// systemd and docker send.
 #pragma once
 
 namespace k40t::driver {
