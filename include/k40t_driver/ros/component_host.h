@@ -71,7 +71,8 @@ int run_standalone_node(int argc, char** argv, const char* node_name, const char
   shutdown_on_stop_signals();
   ros::NodeHandle nh;
   ros::NodeHandle private_nh("~");
-  if (stop_requested_before_ros_start()) return 0;  // Ctrl-C while loading
+  // Ctrl-C while loading, or before the NodeHandles started roscpp (which would not act on it)
+  if (stop_requested_before_ros_start() || shutdown_requested()) return 0;
   auto component = Component::create(nh, private_nh);
   std::unique_ptr<StartFailure> failure;
   if (!component) {
