@@ -70,12 +70,13 @@ RosPod::~RosPod() {
 }
 
 Status RosPod::start() {
-  const Status started = driver_->start();
-  if (started && actions_) actions_->start();  // goals are taken once the link runs
-  if (started && !config_.driver.replay) {
-    ROS_INFO("K40T driver started on %s",
+  // Before the link's own lines (waiting, connected...), which the I/O thread logs at once.
+  if (!config_.driver.replay) {
+    ROS_INFO("K40T driver starting on %s",
              device_url_with_baud(config_.driver.device, config_.driver.baud).c_str());
   }
+  const Status started = driver_->start();
+  if (started && actions_) actions_->start();  // goals are taken once the link runs
   return started;
 }
 
