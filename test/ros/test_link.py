@@ -8,7 +8,7 @@ Started here, each in its own namespace: a driver on a device that does not exis
 never "lost"), a driver on a UDP port nobody answers ("waiting", then "nothing has answered", never
 "connected"), sim.launch stopped by a Ctrl-C to its whole process group (no "link lost"), and
 k40t.launch with a bad device URL (one error naming the parameter and value, no respawn, an ERROR
-diagnostic)."""
+diagnostic; as a nodelet too)."""
 import os
 import re
 import signal
@@ -109,6 +109,11 @@ class Link(unittest.TestCase):
                                           "_link_timeout:=1.0"])
         cls.bad = cls.spawn("bad_url", ["roslaunch", "--wait", PKG, "k40t.launch",
                                         "ns:=k40t_bad_url", "device:=foo://x"])
+        cls.spawn("bad_manager", ["rosrun", PKG, "k40t_manager", "__ns:=/k40t_bad_nodelet",
+                                  "__name:=manager"])
+        cls.bad_nodelet = cls.spawn("bad_nodelet", [
+            "roslaunch", "--wait", PKG, "k40t.launch", "ns:=k40t_bad_nodelet",
+            "manager:=/k40t_bad_nodelet/manager", "device:=foo://x"])
         assert cls.joints.wait_for(3, timeout=20.0), "no telemetry from the driver"
 
     @classmethod
@@ -183,6 +188,15 @@ class Link(unittest.TestCase):
         self.assertEqual(out.count("K40T driver not started"), 1, out)
         self.assertNotIn("respawning", out)
         self.assertIsNone(self.bad.proc.poll(), "roslaunch ended")
+
+    def test_e2_the_nodelet_reports_a_bad_device_url_as_a_diagnostic(self):
+        name = "k40t_bad_nodelet/driver: configuration"
+        self.assertTrue(self.diagnostics.wait(name, lambda s: s.level == DiagnosticStatus.ERROR, 20.0),
+                        self.bad_nodelet.output())
+        self.assertIn('parameter /k40t_bad_nodelet/driver/device is wrong: bad device URL "foo://x"',
+                      self.diagnostics.get(name).message)
+        self.assertIsNone(self.bad_nodelet.proc.poll(), "roslaunch ended")
+        self.assertNotIn("respawning", self.bad_nodelet.output())
 
     def test_f_ctrl_c_is_no_loss(self):
         link = os.path.join(self.tmp, "ctrl_c_pod")
