@@ -13,6 +13,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <mutex>
+#include <set>
 #include <sstream>
 #include <utility>
 
@@ -24,6 +26,27 @@ namespace {
 // A lock file is taken over at most this often in one claim: a stale one, then one that a
 // racing opener created and dropped again.
 constexpr int kClaimAttempts = 3;
+
+// The lock files this process holds. A lock file naming our own PID that is not among them was
+// left by an earlier process that had the same PID (a container restarted after a power cut
+// gives its driver the same small PID again): stale like any other.
+std::mutex g_held_mutex;
+std::set<std::string>& held_lock_files() {
+  static std::set<std::string> held;
+  return held;
+}
+bool held_here(const std::string& path) {
+  std::lock_guard<std::mutex> lock(g_held_mutex);
+  return held_lock_files().count(path) != 0;
+}
+void set_held(const std::string& path, bool held) {
+  std::lock_guard<std::mutex> lock(g_held_mutex);
+  if (held) {
+    held_lock_files().insert(path);
+  } else {
+    held_lock_files().erase(path);
+  }
+}
 
 bool is_directory(const char* path) {
   struct stat info {};
@@ -140,16 +163,17 @@ Status DeviceLock::claim_name(const std::string& device) {
   for (int attempt = 0; attempt < kClaimAttempts; ++attempt) {
     if (::link(temporary.c_str(), path.c_str()) == 0) {
       lock_file_ = path;
+      set_held(path, true);
       break;
     }
     if (errno != EEXIST) break;  // a lock directory we cannot link in: as above
     const long holder = read_lock_pid(path);
-    if (holder == ::getpid()) {
+    if (holder == ::getpid() && held_here(path)) {
       outcome = refuse(Refusal::kBusy,
                        device + " is already open in this process (lock file " + path + ")");
       break;
     }
-    if (holder > 0 && process_alive(holder)) {
+    if (holder > 0 && holder != ::getpid() && process_alive(holder)) {
       outcome = refuse(Refusal::kBusy, device + " is in use by " + describe_process(holder) +
                                            " (lock file " + path + ")");
       break;
@@ -182,6 +206,7 @@ void DeviceLock::release() {
   if (lock_file_.empty()) return;
   // Removed only while it still names us (a claim that found it stale may have replaced it).
   if (read_lock_pid(lock_file_) == ::getpid()) ::unlink(lock_file_.c_str());
+  set_held(lock_file_, false);
   lock_file_.clear();
 }
 

@@ -192,6 +192,14 @@ TEST_F(DeviceLockTest, ASecondOpenerInTheSameProcessIsRefused) {
   EXPECT_EQ(first->transport->state(), LinkState::kConnected);
 }
 
+TEST_F(DeviceLockTest, ALockFileWithOurPidThatWeDoNotHoldIsStale) {
+  // Left by an earlier process with the same PID (a restarted container's driver).
+  write_lock_file(lock_file, ::getpid());
+  auto driver = open_driver();
+  ASSERT_TRUE(driver->log.wait_for(LinkState::kConnected)) << driver->transport->stats().last_error;
+  EXPECT_FALSE(busy(*driver));
+}
+
 TEST_F(DeviceLockTest, TheToolRefusesAHeldDeviceAtOnceWithExitCodeOne) {
   auto driver = open_driver();
   ASSERT_TRUE(driver->log.wait_for(LinkState::kConnected));
