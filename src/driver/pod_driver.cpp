@@ -169,10 +169,10 @@ void PodDriver::handle_rx_frame(const FrameView& frame) {
     if (online) {
       online_pending_ = true;
       ++counters_.pod_online_events;
-      wake_.notify_all();
     }
     lock.unlock();
-    deliver(report);
+    deliver(report);  // "connected" before what the online handlers then say
+    if (online) wake_.notify_all();
   }
   for (const FrameHandler& handler : rx_handlers_) handler(frame, stamp);
 }

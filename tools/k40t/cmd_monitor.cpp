@@ -71,6 +71,7 @@ int monitor_link(const Command& self, const std::string& url, const WireOptions&
   t.set_receive_callback([&](const uint8_t* data, size_t size) { dispatcher.feed(data, size); });
   std::atomic<bool> busy{false};
   t.set_state_callback([&](transport::LinkState state, const std::string& reason) {
+    if (busy) return;  // said why; the rest is the close
     if (state == transport::LinkState::kConnected) dispatcher.reset();  // a new byte stream
     // Another program reads this device (the driver, usually): reading beside it would take
     // its bytes, so give up at once and say who holds it.
