@@ -84,12 +84,6 @@ void PodDriver::on_link_state(LinkStateHandler handler) {
 void PodDriver::on_pod_online(std::function<void()> handler) {
   online_handlers_.push_back(std::move(handler));
 }
-void PodDriver::on_link_report(LinkReportHandler handler) {
-  link_report_handlers_.push_back(std::move(handler));
-}
-void PodDriver::set_shutdown_query(std::function<bool()> shutting_down) {
-  shutting_down_ = std::move(shutting_down);
-}
 
 Status PodDriver::start() {
   if (started_) return Status::fail("the driver is already started");
@@ -175,27 +169,6 @@ void PodDriver::handle_rx_frame(const FrameView& frame) {
     if (online) wake_.notify_all();
   }
   for (const FrameHandler& handler : rx_handlers_) handler(frame, stamp);
-}
-
-void PodDriver::handle_link_state(transport::LinkState state, const std::string& reason) {
-  // Asked outside our lock: the query may take the glue's locks.
-  const bool shutting_down =
-      state == transport::LinkState::kReconnecting && shutting_down_ && shutting_down_();
-  std::optional<PodLinkReport> report;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (state == transport::LinkState::kConnected) reconnected_since_frame_ = true;
-    report = shutting_down ? link_monitor_.on_stop()
-                           : link_monitor_.on_transport(state, reason, SteadyClock::now());
-  }
-  wake_.notify_all();  // a new "no answer" deadline
-  deliver(report);
-  for (const LinkStateHandler& handler : link_handlers_) handler(state, reason);
-}
-
-void PodDriver::deliver(const std::optional<PodLinkReport>& report) {
-  if (!report) return;
-  for (const LinkReportHandler& handler : link_report_handlers_) handler(*report);
 }
 
 namespace {
@@ -378,11 +351,6 @@ DriverStats PodDriver::stats() const {
     out.crc_coverage = replay.locked_coverage;
   }
   return out;
-}
-
-PodLinkReport PodDriver::link_report() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return link_monitor_.report();
 }
 
 transport::LinkState PodDriver::link_state() const {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <mutex>
+#include <thread>
 #include <vector>
 
 #include "eventually.h"
@@ -174,9 +175,14 @@ TEST_F(DriverLinkReports, ALossWhileShuttingDownIsTheStop) {
   auto driver = make("serial://" + path, 3.0, [&] { return shutting_down.load(); });
   ASSERT_TRUE(driver->start());
   ASSERT_TRUE(test::eventually([&] { return seen(PodLink::kWaiting); }));
-  // Ctrl-C: this process is asked to stop, and the simulator, which got it too, goes first.
-  shutting_down = true;
+  // Ctrl-C: the simulator, which got it too, closes the link before this process has taken
+  // its signal (another thread takes it a moment later).
+  std::thread late_signal([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    shutting_down = true;
+  });
   pod.reset();
+  late_signal.join();
   ASSERT_TRUE(test::eventually([&] { return seen(PodLink::kStopped); }));
   driver->stop();
   EXPECT_FALSE(seen(PodLink::kLost));

@@ -82,9 +82,10 @@ class PodDriver {
   // Every change of the link's state as a user reads it (link_monitor.h); runs on the I/O thread,
   // the timer thread or stop()'s caller.
   void on_link_report(LinkReportHandler handler);
-  // Asked when the transport reports a loss: true means the process is shutting down (a Ctrl-C
-  // reaches the simulator or the other end too, which may close the link first), and the loss
-  // is reported as the stop it is.
+  // Asked when the transport reports the loss of an open link (again and again for up to 250 ms,
+  // on the I/O thread): true means the process is shutting down (a Ctrl-C reaches the simulator
+  // or the other end too, which may close the link first), and the loss is reported as the stop
+  // it is.
   void set_shutdown_query(std::function<bool()> shutting_down);
   void on_pod_online(std::function<void()> handler);
 
@@ -144,6 +145,7 @@ class PodDriver {
   void handle_rx_frame(const protocol::FrameView& frame);
   void handle_link_state(transport::LinkState state, const std::string& reason);
   void deliver(const std::optional<PodLinkReport>& report);
+  bool shutdown_explains_loss();
   std::optional<protocol::Payload> answer_gps_request(const protocol::FrameView& frame);
   void timer_loop();
   void online_loop();
