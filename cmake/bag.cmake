@@ -22,3 +22,9 @@ target_link_libraries(k40t_bag_decode_bench PRIVATE k40t_ros_bag k40t_sim_model)
 install(TARGETS k40t_ros_bag k40t_bag k40t_bag_decode_bench
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+
+# `k40t monitor ros:///NAMESPACE` runs k40t_topic_monitor (tools/k40t_topic_monitor/): a running
+# driver's link from its raw/rx and raw/tx topics, printed as the k40t tool prints a link.
+add_executable(k40t_topic_monitor ${PROJECT_SOURCE_DIR}/tools/k40t_topic_monitor/main.cpp)
+target_link_libraries(k40t_topic_monitor PRIVATE k40t_ros_common k40t_frame_export)
+install(TARGETS k40t_topic_monitor RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

@@ -1,7 +1,9 @@
 # The ROS layer: one shared library per nodelet, so that each loads only what it uses, over a small
 # common one:
-#   k40t_ros_common       src/ros/param_reader.cpp, stop_signals.cpp: the glue all three share
-#                         (checked parameters, SIGTERM as SIGINT); roscpp only;
+#   k40t_ros_common       src/ros/param_reader.cpp, stop_signals.cpp, start_failure.cpp: the glue
+#                         all three share (checked parameters, SIGTERM as SIGINT, a start that
+#                         failed on its configuration as a diagnostic); roscpp and
+#                         diagnostic_updater only;
 #   k40t_pod_nodelet      the rest of src/ros/*.cpp: PodNodelet, k40t_node, k40t_manager (parameters,
 #                         topics, services, actions, reconfigure, diagnostics over driver/'s
 #                         PodDriver); no GStreamer or OpenSSL, and of OpenCV only calib3d
@@ -16,7 +18,8 @@
 # test/launch/check_nodelet_libraries.py checks what each one loads. The standalone nodes and the
 # rostest programs under test/ros/ link them.
 set(K40T_ROS_COMMON_SOURCES ${PROJECT_SOURCE_DIR}/src/ros/param_reader.cpp
-                            ${PROJECT_SOURCE_DIR}/src/ros/stop_signals.cpp)
+                            ${PROJECT_SOURCE_DIR}/src/ros/stop_signals.cpp
+                            ${PROJECT_SOURCE_DIR}/src/ros/start_failure.cpp)
 file(GLOB K40T_POD_NODELET_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/*.cpp)
 list(REMOVE_ITEM K40T_POD_NODELET_SOURCES ${K40T_ROS_COMMON_SOURCES})
 file(GLOB K40T_SKYPORT_NODELET_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/skyport/*.cpp)
@@ -35,7 +38,7 @@ target_link_libraries(k40t_pod_nodelet PUBLIC k40t_ros_common k40t_driver_core k
 add_library(k40t_skyport_nodelet SHARED ${K40T_SKYPORT_NODELET_SOURCES})
 target_link_libraries(k40t_skyport_nodelet PUBLIC k40t_ros_common k40t_skyport_bridge)
 include(cmake/video_ros.cmake)  # k40t_video_nodelet
-include(cmake/bag.cmake)        # k40t_ros_bag, k40t_bag (`k40t bag`)
+include(cmake/bag.cmake)        # k40t_ros_bag, k40t_bag (`k40t bag`), k40t_topic_monitor
 include(cmake/rviz_panel.cmake)  # k40t_rviz_panel (Qt)
 
 # Every node catches SIGINT/SIGTERM from the start of its process (src/ros/early/: a static

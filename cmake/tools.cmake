@@ -1,9 +1,10 @@
 # `k40t bag --jsonl / --csv`'s exports (tools/k40t_bag/frame_export.cpp) over the k40t tool's
-# argument parsing and frame JSON, ROS-free: unit-tested here, linked by the ROS build's
+# argument parsing, frame JSON and monitor lines (also the topic monitor's), ROS-free: unit-tested here, linked by the ROS build's
 # k40t_ros_bag (cmake/bag.cmake), which only adds the reading of bags.
 set(K40T_TOOL_SHARED_SOURCES
     ${PROJECT_SOURCE_DIR}/tools/k40t/args.cpp ${PROJECT_SOURCE_DIR}/tools/k40t/frame_text.cpp
-    ${PROJECT_SOURCE_DIR}/tools/k40t/json_sink.cpp ${PROJECT_SOURCE_DIR}/tools/k40t/input.cpp)
+    ${PROJECT_SOURCE_DIR}/tools/k40t/json_sink.cpp ${PROJECT_SOURCE_DIR}/tools/k40t/input.cpp
+    ${PROJECT_SOURCE_DIR}/tools/k40t/frame_printer.cpp)
 add_library(k40t_frame_export STATIC ${PROJECT_SOURCE_DIR}/tools/k40t_bag/frame_export.cpp
                                      ${K40T_TOOL_SHARED_SOURCES})
 target_include_directories(k40t_frame_export PUBLIC ${PROJECT_SOURCE_DIR}/tools/k40t

@@ -58,7 +58,10 @@ Result<std::unique_ptr<PodDriver>> PodDriver::create(DriverOptions options, Cloc
 PodDriver::PodDriver(DriverOptions options, Clock clock)
     : options_(std::move(options)),
       clock_(std::move(clock)),
-      history_(geo::HistoryLimits{options_.state_history_s, 5000}) {
+      history_(geo::HistoryLimits{options_.state_history_s, 5000}),
+      link_monitor_(options_.replay ? std::string("replay")
+                                    : device_url_with_baud(options_.device, options_.baud),
+                    options_.link_timeout_s) {
   rate_.set_timeout(std::chrono::duration<double>(options_.cmd_rate_timeout_s));
 }
 
@@ -108,11 +111,14 @@ Status PodDriver::start() {
 }
 
 void PodDriver::stop() {
+  std::optional<PodLinkReport> report;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     stopping_ = true;
+    if (started_ && session_) report = link_monitor_.on_stop();
   }
   wake_.notify_all();
+  deliver(report);
   // The session first: a request the online thread is waiting on (the settings read-back) then
   // completes at once with "session stopped" instead of after its timeouts and retries, and the
   // requests still to come fail without waiting, so the joins below take no time.
@@ -148,7 +154,8 @@ void PodDriver::handle_rx_frame(const FrameView& frame) {
   current_stamp_ = stamp;
   if (!replayer_) {
     const SteadyClock::time_point now = SteadyClock::now();
-    std::lock_guard<std::mutex> lock(mutex_);
+    std::unique_lock<std::mutex> lock(mutex_);
+    const std::optional<PodLinkReport> report = link_monitor_.on_frame(now);
     const bool online = !have_frame_ || reconnected_since_frame_ ||
                         now - last_frame_ > seconds(options_.silence_timeout_s);
     last_frame_ = now;
@@ -157,18 +164,12 @@ void PodDriver::handle_rx_frame(const FrameView& frame) {
     if (online) {
       online_pending_ = true;
       ++counters_.pod_online_events;
-      wake_.notify_all();
     }
+    lock.unlock();
+    deliver(report);  // "connected" before what the online handlers then say
+    if (online) wake_.notify_all();
   }
   for (const FrameHandler& handler : rx_handlers_) handler(frame, stamp);
-}
-
-void PodDriver::handle_link_state(transport::LinkState state, const std::string& reason) {
-  if (state == transport::LinkState::kConnected) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    reconnected_since_frame_ = true;
-  }
-  for (const LinkStateHandler& handler : link_handlers_) handler(state, reason);
 }
 
 namespace {
@@ -292,6 +293,7 @@ void PodDriver::timer_loop() {
     const SteadyClock::time_point now = SteadyClock::now();
     const RateCommander::Output deadman = rate_.tick(now);
     if (deadman.deadman_stop) ++counters_.deadman_stops;
+    const std::optional<PodLinkReport> link_report = link_monitor_.on_tick(now);
     const bool sync_due = syncing && now >= next_sync;
     const bool target_due = targeting && now >= next_target;
     if (sync_due) next_sync = now + seconds(options_.time_sync_period_s);
@@ -301,14 +303,19 @@ void PodDriver::timer_loop() {
     if (!deadman.empty()) send_rate_output(deadman);
     if (sync_due) send_time_sync();
     if (target_due) send_laser_target_request();
+    deliver(link_report);
     lock.lock();
 
     SteadyClock::time_point wake = now + std::chrono::seconds(1);
     if (syncing) wake = std::min(wake, next_sync);
     if (targeting) wake = std::min(wake, next_target);
     if (const auto deadline = rate_.deadline()) wake = std::min(wake, *deadline);
-    wake_.wait_until(lock, wake,
-                     [&] { return stopping_ || (rate_.deadline() && *rate_.deadline() < wake); });
+    if (const auto deadline = link_monitor_.deadline()) wake = std::min(wake, *deadline);
+    wake_.wait_until(lock, wake, [&] {
+      const auto link_due = link_monitor_.deadline();
+      return stopping_ || (rate_.deadline() && *rate_.deadline() < wake) ||
+             (link_due && *link_due < wake);
+    });
   }
 }
 

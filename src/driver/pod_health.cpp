@@ -79,23 +79,21 @@ HealthCheck link_health(const DriverStats& s, const LinkContext& context) {
   const double silent = s.seconds_since_last_frame;
   if (context.replay) {
     check.set(HealthLevel::kOk, silent < 0 ? "replay: no frame yet" : "replay");
-  } else if (state != transport::LinkState::kConnected) {
-    check.set(
-        HealthLevel::kError,
-        std::string("link ") + transport::to_string(state) + ": " +
-            (s.session.link.last_error.empty() ? "not connected" : s.session.link.last_error));
-  } else if (silent < 0) {
-    check.set(HealthLevel::kError, "connected, but the pod has sent nothing");
+  } else if (context.link.state != PodLink::kConnected) {
+    const bool on_the_way =
+        context.link.state == PodLink::kStarting || context.link.state == PodLink::kWaiting;
+    check.set(on_the_way ? HealthLevel::kWarn : HealthLevel::kError, context.link.text);
   } else if (silent > context.silence_timeout_s) {
     char text[64];
     std::snprintf(text, sizeof text, "pod silent for %.1f s", silent);
     check.set(HealthLevel::kError, text);
   } else {
-    check.set(HealthLevel::kOk, "receiving");
+    check.set(HealthLevel::kOk, "connected, receiving");
   }
   const p::ParserStats& parser = s.session.parser;
   check.add("device", context.replay ? std::string("replay of raw/rx") : context.device);
-  check.add("state", transport::to_string(state));
+  check.add("link state", context.replay ? "replay" : to_string(context.link.state));
+  check.add("transport state", transport::to_string(state));
   check.add("last error", s.session.link.last_error);
   check.add("seconds since last frame", silent);
   check.add("crc coverage", coverage_name(s.crc_coverage));

@@ -45,6 +45,7 @@ PodDiagnostics::PodDiagnostics(ros::NodeHandle nh, ros::NodeHandle private_nh, P
     context.replay = driver_.replay();
     context.device = driver_.options().device;
     context.silence_timeout_s = driver_.options().silence_timeout_s;
+    context.link = driver_.link_report();
     return link_health(driver_.stats(), context);
   });
   // The document's rates (docs/protocol/decisions.md#periodic-reports).

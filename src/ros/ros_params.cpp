@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "k40t_driver/ros/param_reader.h"
+#include "k40t_driver/transport/transport.h"
 
 namespace k40t::driver {
 
@@ -18,6 +19,11 @@ Result<RosPodConfig> read_params(ParamReader& p) {
   d.baud = static_cast<int>(p.number("baud", 115200, 1200, 4000000));
   d.replay = p.get("replay", false);
   d.reconnect_max_delay_s = p.number("reconnect_max_delay", 1.0, 0.05, 60);
+  // Checked here, with the others: a bad URL is a bad parameter, reported as one.
+  if (!d.replay) {
+    const auto link = transport::make_transport(device_url_with_baud(d.device, d.baud));
+    if (!link) p.fail("device", "is wrong: " + link.error());
+  }
 
   session::SessionOptions& s = d.session;
   const std::string coverage = p.get<std::string>("crc_coverage", "auto");
@@ -57,6 +63,7 @@ Result<RosPodConfig> read_params(ParamReader& p) {
   d.state_history_s = p.number("state_history", 10.0, 0.5, 600);
   d.laser_target_period_s = p.number("laser_target_period", 1.0, 0, 3600);
   d.silence_timeout_s = p.number("silence_timeout", 0.5, 0.1, 60);
+  d.link_timeout_s = p.number("link_timeout", 3.0, 0.1, 600);
 
   c.ids = FrameIds(p.get<std::string>("frame_prefix", "k40t_"),
                    p.get<std::string>("joint_prefix", "k40t_"));

@@ -2,9 +2,29 @@
 
 #include <ros/console.h>
 
+#include "k40t_driver/ros/stop_signals.h"
 #include "k40t_driver/transport/thread_name.h"
 
 namespace k40t::driver {
+
+namespace {
+
+// One console line per change of the link's state (link_monitor.h): a warning for the states
+// that need the user (cannot open, nothing answers, lost), information for the others.
+void log_link_report(const PodLinkReport& report) {
+  switch (report.state) {
+    case PodLink::kCannotOpen:
+    case PodLink::kNoAnswer:
+    case PodLink::kLost:
+      ROS_WARN("K40T %s", report.text.c_str());
+      break;
+    default:
+      ROS_INFO("K40T %s", report.text.c_str());
+      break;
+  }
+}
+
+}  // namespace
 
 Result<std::unique_ptr<RosPod>> RosPod::create(ros::NodeHandle nh, ros::NodeHandle private_nh) {
   Result<RosPodConfig> config = read_params(private_nh);
@@ -40,14 +60,8 @@ RosPod::RosPod(ros::NodeHandle nh, ros::NodeHandle private_nh, const RosPodConfi
   settings_services_ = std::make_unique<SettingsServices>(nh, settings_.get());
   job_services_ = std::make_unique<JobServices>(nh, *driver_);
   driver_->on_pod_online([this] { on_pod_online(); });
-  driver_->on_link_state([](transport::LinkState state, const std::string& reason) {
-    if (state == transport::LinkState::kReconnecting) {
-      ROS_WARN("K40T link lost, reconnecting: %s", reason.c_str());
-    } else {
-      ROS_INFO("K40T link %s%s%s", transport::to_string(state), reason.empty() ? "" : ": ",
-               reason.c_str());
-    }
-  });
+  driver_->set_shutdown_query([] { return shutdown_requested(); });
+  driver_->on_link_report(log_link_report);
 }
 
 RosPod::~RosPod() {
@@ -59,12 +73,13 @@ RosPod::~RosPod() {
 }
 
 Status RosPod::start() {
-  const Status started = driver_->start();
-  if (started && actions_) actions_->start();  // goals are taken once the link runs
-  if (started && !config_.driver.replay) {
-    ROS_INFO("K40T driver started on %s",
+  // Before the link's own lines (waiting, connected...), which the I/O thread logs at once.
+  if (!config_.driver.replay) {
+    ROS_INFO("K40T driver starting on %s",
              device_url_with_baud(config_.driver.device, config_.driver.baud).c_str());
   }
+  const Status started = driver_->start();
+  if (started && actions_) actions_->start();  // goals are taken once the link runs
   return started;
 }
 

@@ -95,6 +95,7 @@ void FdTransport::attach(int fd) {
   }
   std::lock_guard<std::mutex> lock(state_mutex_);
   ++stats_.connects;
+  stats_.device_busy = false;
 }
 
 void FdTransport::detach() {
@@ -115,6 +116,10 @@ void FdTransport::run() {
       if (waiter.stopped()) break;
       const std::string error = url_ + ": " + fd.error();
       record_error(error, false);
+      {
+        std::lock_guard<std::mutex> lock(state_mutex_);
+        stats_.device_busy = link_->busy();
+      }
       set_state(LinkState::kReconnecting, error);
       if (!waiter.sleep(backoff.next())) break;
       continue;

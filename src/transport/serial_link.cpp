@@ -1,4 +1,5 @@
-// serial:///dev/ttyUSB0?baud=115200 — a terminal device in raw 8N1, no flow control.
+// serial:///dev/ttyUSB0?baud=115200 — a terminal device in raw 8N1, no flow control, held
+// exclusively (device_lock.h) from connect() to disconnect().
 #include <fcntl.h>
 #include <linux/serial.h>
 #include <sys/ioctl.h>
@@ -11,6 +12,7 @@
 #include <iterator>
 #include <string>
 
+#include "k40t_driver/transport/device_lock.h"
 #include "links.h"
 
 namespace k40t::transport {
@@ -64,17 +66,28 @@ class SerialLink : public LinkDriver {
   SerialLink(std::string path, BaudRate baud) : path_(std::move(path)), baud_(baud) {}
 
   Result<int> connect(const Waiter& /*waiter*/) override {
-    UniqueFd fd(::open(path_.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC));
+    busy_ = false;
+    UniqueFd fd;
+    DeviceLock lock;  // after fd: on a failure below it is released before the fd closes
+    if (Status s = lock.claim_name(path_); !s) return refused(lock, s);
+    fd.reset(::open(path_.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC));
     if (!fd.valid()) return Result<int>::fail("cannot open " + path_ + ": " + errno_text(errno));
     if (!::isatty(fd.get())) return Result<int>::fail(path_ + " is not a terminal device");
+    if (Status s = lock.claim_fd(fd.get()); !s) return refused(lock, s);
     if (Status s = configure(fd.get()); !s) return Result<int>::fail(s.message());
     set_low_latency(fd.get());
     ::tcflush(fd.get(), TCIOFLUSH);  // bytes queued before we attached are stale
+    lock_ = std::move(lock);
     fd_ = std::move(fd);
     return fd_.get();
   }
 
-  void disconnect() override { fd_.reset(); }
+  void disconnect() override {
+    lock_.release();  // before the close: TIOCNXCL needs the fd
+    fd_.reset();
+  }
+
+  bool busy() const override { return busy_; }
 
   double seconds_per_byte() const override { return 10.0 / baud_.value; }  // start + 8 + stop
 
@@ -108,9 +121,16 @@ class SerialLink : public LinkDriver {
     ::ioctl(fd, TIOCSSERIAL, &serial);
   }
 
+  Result<int> refused(const DeviceLock& lock, const Status& why) {
+    busy_ = lock.refusal() == DeviceLock::Refusal::kBusy;
+    return Result<int>::fail(why.message());
+  }
+
   const std::string path_;
   const BaudRate baud_;
   UniqueFd fd_;
+  DeviceLock lock_;  // declared after fd_: destroyed (released) before the fd closes
+  bool busy_ = false;
 };
 
 }  // namespace

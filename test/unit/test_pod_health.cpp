@@ -24,6 +24,7 @@ LinkContext live(double silence_timeout_s = 0.5) {
   LinkContext c;
   c.device = "serial:///dev/ttyUSB0?baud=115200";
   c.silence_timeout_s = silence_timeout_s;
+  c.link = PodLinkReport{PodLink::kConnected, "connected to the pod at serial:///dev/ttyUSB0"};
   return c;
 }
 
@@ -43,28 +44,40 @@ T value_of(const HealthCheck& check, const std::string& key) {
 }
 
 TEST(PodHealthLink, LevelFollowsTheLinkAndTheSilence) {
-  EXPECT_EQ(shown(link_health(connected_stats(0.1), live())), Shown(HealthLevel::kOk, "receiving"));
+  EXPECT_EQ(shown(link_health(connected_stats(0.1), live())),
+            Shown(HealthLevel::kOk, "connected, receiving"));
   // Silent longer than silence_timeout: ERROR, the silence to 0.1 s.
   const HealthCheck silent = link_health(connected_stats(0.84), live());
   EXPECT_EQ(shown(silent), Shown(HealthLevel::kError, "pod silent for 0.8 s"));
   // The same silence under a longer timeout is fine.
   EXPECT_EQ(link_health(connected_stats(0.84), live(1.0)).level, HealthLevel::kOk);
-  const HealthCheck nothing = link_health(connected_stats(-1), live());
-  EXPECT_EQ(shown(nothing), Shown(HealthLevel::kError, "connected, but the pod has sent nothing"));
 }
 
-TEST(PodHealthLink, ADownLinkIsAnErrorNamingWhy) {
-  DriverStats s;
-  s.session.link_state = transport::LinkState::kReconnecting;
-  s.session.link.last_error = "open /dev/ttyUSB0: No such file or directory";
-  HealthCheck check = link_health(s, live());
-  EXPECT_EQ(shown(check), Shown(HealthLevel::kError,
-                                "link reconnecting: open /dev/ttyUSB0: No such file or directory"));
-  s.session.link_state = transport::LinkState::kConnecting;
-  s.session.link.last_error.clear();
-  check = link_health(s, live());
-  EXPECT_EQ(check.summary, "link connecting: not connected");
-  EXPECT_EQ(value_of<std::string>(check, "state"), "connecting");
+// The check says what the console says (link_monitor.h): a warning on the way up, an error for
+// each state that needs the user.
+TEST(PodHealthLink, TheLinkStateDecidesAndIsShown) {
+  const std::pair<PodLinkReport, HealthLevel> cases[] = {
+      {{PodLink::kStarting, "starting the link to the pod at udp://10.0.0.2:2000"},
+       HealthLevel::kWarn},
+      {{PodLink::kWaiting, "waiting for the pod at udp://10.0.0.2:2000"}, HealthLevel::kWarn},
+      {{PodLink::kNoAnswer,
+        "waiting for the pod at udp://10.0.0.2:2000: nothing has answered for 3.0 s"},
+       HealthLevel::kError},
+      {{PodLink::kCannotOpen, "cannot open serial:///dev/ttyUSB0: No such file (retrying)"},
+       HealthLevel::kError},
+      {{PodLink::kLost, "link to the pod at tcp://10.0.0.2:2000 lost: reset; reconnecting"},
+       HealthLevel::kError},
+  };
+  for (const auto& [report, level] : cases) {
+    LinkContext context = live();
+    context.link = report;
+    DriverStats s = connected_stats(-1);
+    s.session.link_state = transport::LinkState::kReconnecting;
+    const HealthCheck check = link_health(s, context);
+    EXPECT_EQ(shown(check), Shown(level, report.text));
+    EXPECT_EQ(value_of<std::string>(check, "link state"), to_string(report.state));
+    EXPECT_EQ(value_of<std::string>(check, "transport state"), "reconnecting");
+  }
 }
 
 TEST(PodHealthLink, ReplayIsAlwaysOk) {

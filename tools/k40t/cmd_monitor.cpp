@@ -1,54 +1,19 @@
 // k40t monitor: live decode of a link (or of a capture file), one human line per frame, counters
 // at the end (Ctrl-C / SIGTERM on a link, end of file for a capture).
+#include <atomic>
 #include <csignal>
 #include <cstdio>
-#include <ctime>
-#include <mutex>
 #include <string>
 
 #include "command.h"
+#include "frame_printer.h"
 #include "frame_text.h"
 #include "input.h"
-#include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/transport/transport.h"
 
 namespace k40t::tool {
 
 namespace {
-
-std::string wall_clock() {
-  timespec now{};
-  clock_gettime(CLOCK_REALTIME, &now);
-  tm local{};
-  localtime_r(&now.tv_sec, &local);
-  char buffer[32];
-  std::snprintf(buffer, sizeof(buffer), "%02d:%02d:%02d.%03ld", local.tm_hour, local.tm_min,
-                local.tm_sec, now.tv_nsec / 1000000);
-  return buffer;
-}
-
-// Prints one line per frame and counts the frames whose payload did not decode.
-class FramePrinter {
- public:
-  explicit FramePrinter(const protocol::CodecOptions& codec) : codec_(codec) {}
-  void print(const std::string& when, const protocol::FrameView& frame) {
-    bool decoded = false;
-    const std::string line = frame_summary(frame, codec_, &decoded);
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (!decoded && protocol::is_known_id(frame.header.message_id)) ++undecodable_;
-    std::printf("%s %s\n", when.c_str(), line.c_str());
-    std::fflush(stdout);
-  }
-  uint64_t undecodable() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return undecodable_;
-  }
-
- private:
-  const protocol::CodecOptions codec_;
-  mutable std::mutex mutex_;
-  uint64_t undecodable_ = 0;
-};
 
 int monitor_file(const std::string& path, const WireOptions& wire) {
   Result<std::vector<uint8_t>> bytes = read_binary_file(path);
@@ -71,6 +36,22 @@ int monitor_file(const std::string& path, const WireOptions& wire) {
   return kExitOk;
 }
 
+constexpr const char* kRosScheme = "ros://";
+
+constexpr const char* kBusyHint =
+    "k40t monitor: to watch a running driver's link, read its topics instead: "
+    "k40t monitor ros:///NAMESPACE (e.g. ros:///k40t)";
+
+// The stop signal that arrived, or 0 as soon as `given_up` is set.
+int wait_for_stop(const sigset_t& stop_signals, const std::atomic<bool>& given_up) {
+  const timespec poll_period{0, 50 * 1000 * 1000};
+  while (!given_up) {
+    const int signal_number = sigtimedwait(&stop_signals, nullptr, &poll_period);
+    if (signal_number > 0) return signal_number;
+  }
+  return 0;
+}
+
 int monitor_link(const Command& self, const std::string& url, const WireOptions& wire) {
   Result<std::unique_ptr<transport::Transport>> link = transport::make_transport(url);
   if (!link) return usage_error(self, link.error());
@@ -88,8 +69,17 @@ int monitor_link(const Command& self, const std::string& url, const WireOptions&
       [&](const protocol::FrameView& frame) { printer.print(wall_clock(), frame); });
   transport::Transport& t = *link.value();
   t.set_receive_callback([&](const uint8_t* data, size_t size) { dispatcher.feed(data, size); });
+  std::atomic<bool> busy{false};
   t.set_state_callback([&](transport::LinkState state, const std::string& reason) {
+    if (busy) return;  // said why; the rest is the close
     if (state == transport::LinkState::kConnected) dispatcher.reset();  // a new byte stream
+    // Another program reads this device (the driver, usually): reading beside it would take
+    // its bytes, so give up at once and say who holds it.
+    if (state == transport::LinkState::kReconnecting && t.stats().device_busy) {
+      std::fprintf(stderr, "k40t monitor: %s\n%s\n", reason.c_str(), kBusyHint);
+      busy = true;
+      return;
+    }
     std::fprintf(stderr, "k40t monitor: %s %s%s%s\n", url.c_str(), transport::to_string(state),
                  reason.empty() ? "" : ": ", reason.c_str());
   });
@@ -98,9 +88,9 @@ int monitor_link(const Command& self, const std::string& url, const WireOptions&
     std::fprintf(stderr, "k40t monitor: %s\n", opened.message().c_str());
     return kExitFailed;
   }
-  int signal_number = 0;
-  sigwait(&stop_signals, &signal_number);
+  const int signal_number = wait_for_stop(stop_signals, busy);
   t.close();
+  if (signal_number == 0) return kExitFailed;  // busy
   const transport::LinkStats link_stats = t.stats();
   std::fprintf(stderr, "k40t monitor: stopped by %s; %s; %llu bytes received\n",
                signal_number == SIGINT ? "SIGINT" : "SIGTERM",
@@ -114,6 +104,13 @@ int run_monitor(const Command& self, const ParsedArgs& args) {
   if (!wire) return usage_error(self, wire.error());
   if (args.positional.size() != 1) return usage_error(self, "give one URL or capture FILE");
   const std::string& source = args.positional[0];
+  // A running driver's link, from its raw/rx and raw/tx topics (the ROS build's program).
+  if (source.rfind(kRosScheme, 0) == 0) {
+    std::vector<std::string> forwarded{source.substr(std::string(kRosScheme).size())};
+    for (const auto& [option, value] : args.options)
+      forwarded.insert(forwarded.end(), {option, value});
+    return run_ros_program("k40t_topic_monitor", "monitor", program_path(), forwarded);
+  }
   // A URL has a scheme; anything else is a capture file.
   if (source.find("://") != std::string::npos) return monitor_link(self, source, wire.value());
   return monitor_file(source, wire.value());
@@ -124,13 +121,17 @@ int run_monitor(const Command& self, const ParsedArgs& args) {
 const Command& monitor_command() {
   static const Command command{
       "monitor",
-      "monitor URL|FILE [options]",
-      "live decode of a link or a capture file, one line per frame",
+      "monitor URL|ros:///NAMESPACE|FILE [options]",
+      "live decode of a link, a running driver's link or a capture file, one line per frame",
       "Decodes every frame from a link URL (serial:///dev/ttyUSB0?baud=115200, udp://...,\n"
       "tcp://..., pty://...) or a binary capture FILE and prints one line per frame: time\n"
       "(byte offset '@N' for a file), message name, source>destination, sequence number and\n"
       "the decoded fields. It only listens: nothing is sent. On a link it runs until Ctrl-C or\n"
-      "SIGTERM; then, or at the end of a file, the counters go to stderr.",
+      "SIGTERM; then, or at the end of a file, the counters go to stderr.\n"
+      "A serial device is opened exclusively: one the driver (or any program) holds is refused\n"
+      "at once (exit 1) with the holder's pid and name. To watch a running driver's link, give\n"
+      "ros:///NAMESPACE (e.g. ros:///k40t): the frames of its raw/rx and raw/tx topics, marked\n"
+      "rx/tx, without touching the device (runs the ROS build's k40t_topic_monitor).",
       {kCrcCoverageOption, kAckByteOrderOption},
       &run_monitor};
   return command;

@@ -89,7 +89,7 @@ Result<Request> build_request(const ParsedArgs& args, const protocol::CodecOptio
 }
 
 // Waits until the transport reports a connection (serial and network links connect in the
-// background after open()).
+// background after open()), or until it finds the device held by another program.
 class ConnectionWaiter {
  public:
   void update(transport::LinkState state, const std::string& reason) {
@@ -100,9 +100,11 @@ class ConnectionWaiter {
   }
   bool wait(std::chrono::milliseconds deadline, const session::Session& session) {
     std::unique_lock<std::mutex> lock(mutex_);
-    return changed_.wait_for(lock, deadline, [&] {
-      return connected_ || session.link_state() == transport::LinkState::kConnected;
+    const bool woken = changed_.wait_for(lock, deadline, [&] {
+      return connected_ || session.link_state() == transport::LinkState::kConnected ||
+             session.stats().link.device_busy;
     });
+    return woken && !session.stats().link.device_busy;
   }
   std::string last_reason() const {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -150,9 +152,13 @@ int run_send(const Command& self, const ParsedArgs& args) {
     return kExitFailed;
   }
   if (!waiter.wait(std::chrono::milliseconds(connect_timeout.value()), session)) {
-    std::fprintf(stderr, "k40t send: %s: not connected after %ld ms%s%s\n", url.c_str(),
-                 connect_timeout.value(), waiter.last_reason().empty() ? "" : ": ",
-                 waiter.last_reason().c_str());
+    if (session.stats().link.device_busy) {
+      std::fprintf(stderr, "k40t send: %s\n", waiter.last_reason().c_str());
+    } else {
+      std::fprintf(stderr, "k40t send: %s: not connected after %ld ms%s%s\n", url.c_str(),
+                   connect_timeout.value(), waiter.last_reason().empty() ? "" : ": ",
+                   waiter.last_reason().c_str());
+    }
     return kExitFailed;
   }
 

@@ -70,8 +70,14 @@ const Command& decode_command();
 const Command& monitor_command();
 const Command& send_command();
 const Command& list_command();
-// `k40t bag ...`: runs k40t_bag with the arguments after "bag" (cmd_bag.cpp); returns only when
-// it cannot.
+// Runs `program` of the ROS build with `arguments` in place of this process (ros_program.cpp);
+// returns only when it cannot, after saying why (`command`: the subcommand, for the message).
+int run_ros_program(const std::string& program, const std::string& command, const char* argv0,
+                    const std::vector<std::string>& arguments);
+// `k40t bag ...`: runs k40t_bag with the arguments after "bag".
 int run_bag_program(int argc, char** argv);
+// The argv[0] the tool was started with (for run_ros_program).
+const char* program_path();
+void set_program_path(const char* argv0);
 
 }  // namespace k40t::tool

@@ -1,5 +1,5 @@
 // k40t: the K40T pod's command-line tool (ROS-free). Subcommands: decode, monitor, send, list;
-// bag runs the ROS build's k40t_bag (cmd_bag.cpp).
+// bag runs the ROS build's k40t_bag (ros_program.cpp).
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -27,6 +27,7 @@ void print_tool_help() {
 }
 
 int run(int argc, char** argv) {
+  set_program_path(argv[0]);
   if (argc < 2) {
     std::fprintf(stderr, "k40t: missing COMMAND\nTry 'k40t --help'.\n");
     return kExitUsage;

@@ -47,6 +47,10 @@ struct DriverOptions {
   // Seconds without a frame before the pod counts as silent; the next frame is a "pod online"
   // event (settings are re-read).
   double silence_timeout_s = 0.5;
+  // Seconds without a valid frame before the link state turns from "waiting for the pod" or
+  // "connected" to "no answer" (logged once; link_monitor.h). Longer than silence_timeout: a
+  // normal start (the pod or the simulator booting) stays quiet.
+  double link_timeout_s = 3.0;
 };
 
 using transport::device_url_with_baud;  // the ~device URL with ~baud applied

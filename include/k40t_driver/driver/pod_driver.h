@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "k40t_driver/driver/driver_options.h"
+#include "k40t_driver/driver/link_monitor.h"
 #include "k40t_driver/driver/rate_commander.h"
 #include "k40t_driver/driver/vehicle_state.h"
 #include "k40t_driver/geo/state_history.h"
@@ -62,6 +63,7 @@ class PodDriver {
   using Clock = std::function<StampNs()>;
   using FrameHandler = std::function<void(const protocol::FrameView&, StampNs)>;
   using LinkStateHandler = std::function<void(transport::LinkState, const std::string&)>;
+  using LinkReportHandler = std::function<void(const PodLinkReport&)>;
 
   // Builds the link (live: the transport for options.device and its Session, not yet started;
   // replay: a Dispatcher). Fails only for a bad URL. `clock` stamps received frames; pass the
@@ -77,6 +79,14 @@ class PodDriver {
   void on_rx_frame(FrameHandler handler);  // every good frame received
   void on_tx_frame(FrameHandler handler);  // every frame written
   void on_link_state(LinkStateHandler handler);
+  // Every change of the link's state as a user reads it (link_monitor.h); runs on the I/O thread,
+  // the timer thread or stop()'s caller.
+  void on_link_report(LinkReportHandler handler);
+  // Asked when the transport reports the loss of an open link (again and again for up to 250 ms,
+  // on the I/O thread): true means the process is shutting down (a Ctrl-C reaches the simulator
+  // or the other end too, which may close the link first), and the loss is reported as the stop
+  // it is.
+  void set_shutdown_query(std::function<bool()> shutting_down);
   void on_pod_online(std::function<void()> handler);
 
   // Opens the link (live) and starts the background threads. An absent device is not an error:
@@ -122,6 +132,7 @@ class PodDriver {
   void set_clock_offset_ms(int64_t offset_ms);
 
   DriverStats stats() const;
+  PodLinkReport link_report() const;
   transport::LinkState link_state() const;
   bool replay() const { return options_.replay; }
   const DriverOptions& options() const { return options_; }
@@ -133,6 +144,8 @@ class PodDriver {
   session::AckResult not_sent_in_replay() const;
   void handle_rx_frame(const protocol::FrameView& frame);
   void handle_link_state(transport::LinkState state, const std::string& reason);
+  void deliver(const std::optional<PodLinkReport>& report);
+  bool shutdown_explains_loss();
   std::optional<protocol::Payload> answer_gps_request(const protocol::FrameView& frame);
   void timer_loop();
   void online_loop();
@@ -152,6 +165,8 @@ class PodDriver {
   std::vector<FrameHandler> tx_handlers_;
   std::vector<LinkStateHandler> link_handlers_;
   std::vector<std::function<void()>> online_handlers_;
+  std::vector<LinkReportHandler> link_report_handlers_;
+  std::function<bool()> shutting_down_;
 
   // The stamp of the frame being dispatched (set before typed routing, read by typed handlers
   // on the same thread).
@@ -170,6 +185,7 @@ class PodDriver {
   geo::StateHistory history_;
   int64_t clock_offset_ms_ = 0;
   RateCommander rate_;
+  LinkMonitor link_monitor_;
   DriverStats counters_;  // the driver's own counters (session stats are read live)
 
   std::thread timer_thread_;

@@ -1,8 +1,11 @@
 // The pod diagnostics' checks, ROS-free: each turns the driver's counters or the latest report
 // into a level, a one-line summary and the key/value pairs shown with it. ros/pod_diagnostics.h
 // publishes them on /diagnostics (diagnostic_updater) and adds the report-rate checks.
-//   link               ERROR while the link is down or no frame came for silence_timeout; every
-//                      counter of the link, the parser, the session and the driver
+//   link               the link's state (link_monitor.h) as the console tells it: WARN while
+//                      starting or waiting for the first frame, ERROR when the device cannot be
+//                      opened, nothing answers, the link is lost or no frame came for
+//                      silence_timeout; every counter of the link, the parser, the session and
+//                      the driver
 //   self-test          per sensor, from 0x000001; gimbal/camera link and upgrade state
 //   stabilisation      from 0x000001
 //   SD card            from 0x000003
@@ -65,6 +68,7 @@ struct LinkContext {
   bool replay = false;
   std::string device;              // the device URL (live)
   double silence_timeout_s = 0.5;  // longer without a frame: the pod is silent
+  PodLinkReport link;              // the link's state (live)
 };
 
 HealthCheck link_health(const DriverStats& stats, const LinkContext& context);

@@ -1,7 +1,9 @@
 // How the package's three components (RosPod, SkyportRos, VideoStreamer) are hosted, alike: each
 // has `static Result<std::unique_ptr<C>> create(nh, private_nh)` and runs either in a nodelet
 // manager (ComponentNodelet) or as a standalone node (run_standalone_node()). One that cannot
-// start logs a fatal line naming it (`what`, e.g. "K40T driver") and the reason.
+// start logs a fatal line naming it (`what`, e.g. "K40T driver") and the reason once, then stays
+// loaded (nodelet) or running (node) with that reason as an ERROR diagnostic (start_failure.h):
+// a respawning launch file does not restart it into the same error.
 #pragma once
 
 #include <memory>
@@ -11,6 +13,7 @@
 #include <ros/ros.h>
 #include <pluginlib/class_list_macros.hpp>
 
+#include "k40t_driver/ros/start_failure.h"
 #include "k40t_driver/ros/stop_signals.h"
 #include "k40t_driver/transport/thread_name.h"
 
@@ -34,6 +37,8 @@ class ComponentNodelet : public nodelet::Nodelet {
                           concurrent ? getMTPrivateNodeHandle() : getPrivateNodeHandle());
     if (!created) {
       NODELET_FATAL("%s not started: %s", what_, created.error().c_str());
+      failure_ = std::make_unique<StartFailure>(getNodeHandle(), getPrivateNodeHandle(), what_,
+                                                created.error());
       return;
     }
     component_ = std::move(created.value());
@@ -42,6 +47,7 @@ class ComponentNodelet : public nodelet::Nodelet {
   const char* what_;
   Callbacks callbacks_;
   std::unique_ptr<Component> component_;
+  std::unique_ptr<StartFailure> failure_;
 };
 
 // Declares the nodelet class Namespace::Name hosting Component (its constructor gives `what` and
@@ -63,27 +69,32 @@ template <class Component>
 int run_standalone_node(int argc, char** argv, const char* node_name, const char* what,
                         Callbacks callbacks) {
   transport::name_this_thread("k40t_roscpp");
-  ros::init(argc, argv, node_name);
-  shutdown_on_sigterm();
+  // Our own SIGINT handler instead of roscpp's: the same shutdown request, remembered for
+  // shutdown_requested().
+  ros::init(argc, argv, node_name, ros::init_options::NoSigintHandler);
+  shutdown_on_stop_signals();
   ros::NodeHandle nh;
   ros::NodeHandle private_nh("~");
-  if (stop_requested_before_ros_start()) return 0;  // Ctrl-C while loading
+  // Ctrl-C while loading, or before the NodeHandles started roscpp (which would not act on it)
+  if (stop_requested_before_ros_start() || shutdown_requested()) return 0;
   auto component = Component::create(nh, private_nh);
+  std::unique_ptr<StartFailure> failure;
   if (!component) {
     ROS_FATAL("%s not started: %s", what, component.error().c_str());
-    return 1;
+    failure = std::make_unique<StartFailure>(nh, private_nh, what, component.error());
   }
+  const int exit_code = failure ? 1 : 0;
   if (callbacks == Callbacks::kOneAtATime) {
     transport::name_this_thread("k40t_main");
     ros::spin();
-    return 0;
+    return exit_code;
   }
   ros::AsyncSpinner spinner(4);
   transport::name_this_thread("k40t_spin");
   spinner.start();
   transport::name_this_thread("k40t_main");
   ros::waitForShutdown();
-  return 0;
+  return exit_code;
 }
 
 }  // namespace k40t::driver

@@ -29,6 +29,10 @@ class LinkDriver {
   // them short. Returns the fd to poll for input (the driver keeps owning it) or an error naming
   // what was tried ("cannot open /dev/ttyUSB0: No such file or directory (errno 2)").
   virtual Result<int> connect(const Waiter& waiter) = 0;
+  // True when the last connect() failed because another program holds the device (its error
+  // names the holder): retrying may still succeed once it lets go, but an interactive user wants
+  // to hear it at once.
+  virtual bool busy() const { return false; }
   // Releases what connect() established; state that outlives one connection (a listening socket)
   // stays until shutdown().
   virtual void disconnect() = 0;

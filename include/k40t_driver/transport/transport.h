@@ -45,6 +45,9 @@ struct LinkStats {
   uint64_t connects = 0;     // successful (re)connections
   uint64_t disconnects = 0;  // losses of an established link
   std::string last_error;    // human-readable, names the device
+  // The last attempt found the device held by another program (last_error names it); cleared
+  // by a successful connect.
+  bool device_busy = false;
 };
 
 struct ReconnectPolicy {

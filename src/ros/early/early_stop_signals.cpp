@@ -3,7 +3,7 @@
 // OpenCV, GStreamer, ...) take 0.1 to 0.3 s to initialise on a loaded machine. Without it a Ctrl-C
 // or a SIGTERM in that window killed the process by the signal's default action (exit -2 / -15)
 // before roscpp had installed its handler (test/stop/clean_stop.py). The handler only remembers the
-// request; main() asks stop_requested_before_ros_start() once roscpp and shutdown_on_sigterm() have
+// request; main() asks stop_requested_before_ros_start() once roscpp and shutdown_on_stop_signals() have
 // taken the signals over.
 #include <csignal>
 

@@ -27,6 +27,7 @@ std::atomic<bool> g_stop_requested{false};
 
 void request_stop(int) {
   g_stop_requested = true;
+  k40t::driver::note_stop_signal();  // the nodelets' links: what follows is no loss
 }
 
 void install_stop_handlers() {
