@@ -70,6 +70,7 @@ const Command& decode_command();
 const Command& monitor_command();
 const Command& send_command();
 const Command& list_command();
+const Command& probe_command();
 // `k40t bag ...`: runs k40t_bag with the arguments after "bag" (cmd_bag.cpp); returns only when
 // it cannot.
 int run_bag_program(int argc, char** argv);

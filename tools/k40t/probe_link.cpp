@@ -78,6 +78,13 @@ size_t ProbeLink::total_frames() const {
   return total_;
 }
 
+std::vector<protocol::MessageId> ProbeLink::ids() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<protocol::MessageId> heard;
+  for (const auto& entry : frames_) heard.push_back(entry.first);
+  return heard;
+}
+
 std::map<protocol::CrcCoverage, size_t> ProbeLink::coverage_counts() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return coverage_;

@@ -46,6 +46,7 @@ class ProbeLink {
   std::vector<HeardFrame> frames_since(protocol::MessageId id, ProbeClock::time_point since) const;
   std::optional<HeardFrame> latest(protocol::MessageId id) const;
   size_t total_frames() const;
+  std::vector<protocol::MessageId> ids() const;  // every id heard, in order
   // Good frames per checksum coverage they matched.
   std::map<protocol::CrcCoverage, size_t> coverage_counts() const;
 
