@@ -23,13 +23,13 @@ template <class E, E Conventions::*Member>
 Status set_enum(const ConventionInfo& info, ConventionRefs refs, const std::string& text) {
   const int i = value_index(info, text);
   if (i < 0) return bad_value(info, text);
-  refs.conventions.*Member = static_cast<E>(i);
+  refs.codec.conventions.*Member = static_cast<E>(i);
   return Status::ok();
 }
 
 template <class E, E Conventions::*Member>
 std::string get_enum(const ConventionInfo& info, ConstConventionRefs refs) {
-  return info.values.at(static_cast<size_t>(refs.conventions.*Member));
+  return info.values.at(static_cast<size_t>(refs.codec.conventions.*Member));
 }
 
 // The byte orders of CodecOptions, written "big" / "little".

@@ -14,9 +14,8 @@ namespace {
 struct AllReadings {
   CrcCoverage crc_coverage = CrcCoverage::kAuto;
   CodecOptions codec;
-  Conventions conventions;
-  ConventionRefs refs() { return {crc_coverage, codec, conventions}; }
-  ConstConventionRefs view() const { return {crc_coverage, codec, conventions}; }
+  ConventionRefs refs() { return {crc_coverage, codec}; }
+  ConstConventionRefs view() const { return {crc_coverage, codec}; }
 };
 
 TEST(ConventionsTable, NamesAreUniqueSnakeCaseAndDefaultsMatchTheStructs) {
@@ -66,9 +65,9 @@ TEST(ConventionsTable, EveryValueSetsAndReadsBack) {
   }
   AllReadings r;
   ASSERT_TRUE(set_convention_assignment(r.refs(), "yaw_sign=left").is_ok());
-  EXPECT_EQ(r.conventions.yaw_sign, YawSign::kLeft);
+  EXPECT_EQ(r.codec.conventions.yaw_sign, YawSign::kLeft);
   ASSERT_TRUE(set_convention_assignment(r.refs(), "sd_capacity_unit=0.1mb").is_ok());
-  EXPECT_EQ(r.conventions.sd_capacity_unit, SdCapacityUnit::kTenthMb);
+  EXPECT_EQ(r.codec.conventions.sd_capacity_unit, SdCapacityUnit::kTenthMb);
   ASSERT_TRUE(set_convention_assignment(r.refs(), "ack_byte_order=little").is_ok());
   EXPECT_EQ(r.codec.ack_byte_order, ByteOrder::kLittle);
   ASSERT_TRUE(set_convention_assignment(r.refs(), "crc_coverage=whole_frame").is_ok());
@@ -84,7 +83,7 @@ TEST(ConventionsTable, BadTextIsRefusedWithTheNameAndTheValuesAndChangesNothing)
   Status s = set_convention_assignment(r.refs(), "yaw_sign=up");
   ASSERT_FALSE(s.is_ok());
   EXPECT_EQ(s.message(), "yaw_sign must be right or left, got 'up'");
-  EXPECT_EQ(r.conventions.yaw_sign, YawSign::kRight);
+  EXPECT_EQ(r.codec.conventions.yaw_sign, YawSign::kRight);
 
   s = set_convention_assignment(r.refs(), "shutter_field=ms");
   EXPECT_EQ(s.message(), "shutter_field must be us, us_wrapped or 100us, got 'ms'");
