@@ -23,7 +23,7 @@ from dynamic_reconfigure.client import Client as ReconfigureClient
 from geometry_msgs.msg import QuaternionStamped
 from sensor_msgs.msg import JointState
 
-from k40t_driver.msg import (CameraStatus, GimbalCalibrateAction, GimbalCalibrateGoal,
+from k40t_driver.msg import (CameraStatus, Frame, GimbalCalibrateAction, GimbalCalibrateGoal,
                              VisibleStatus)
 from k40t_driver.srv import SetAngle
 from k40t_test_support import Recorder, SimControl, name, reply_number, service, wait_until
@@ -154,22 +154,31 @@ class ProbeBringUp(unittest.TestCase):
                              (self.visible.latest(),))
 
     def test_4_calibration_ends_within_2_s_of_the_pods_end(self):
+        # This pod's calibrations end with their OK ACK (calibration_end: ack) and it never reports
+        # them in 0x000008: under the old reading every goal timed out after 60 s.
+        raw = Recorder(name("raw/rx"), Frame)
         client = actionlib.SimpleActionClient(name("gimbal/calibrate"), GimbalCalibrateAction)
         self.assertTrue(client.wait_for_server(rospy.Duration(10)))
-        start = time.time()
+        rospy.sleep(0.5)  # the raw/rx subscription is connected
+        since = time.time()
         client.send_goal(GimbalCalibrateGoal(kind=GimbalCalibrateGoal.DRIFT, timeout=30.0))
-        # The pod's end: its calibration state on the control socket, not a reading of a frame.
-        self.assertTrue(wait_until(lambda: self.sim.field("calibrating") == "yes", 3.0))
-        self.assertTrue(wait_until(lambda: self.sim.field("calibrating") == "no", 20.0))
-        pod_end = time.time()
         self.assertTrue(client.wait_for_result(rospy.Duration(20)))
         goal_end = time.time()
         result = client.get_result()
         self.assertTrue(result.success, result.message)
-        self.assertLess(abs(goal_end - pod_end), 2.0,
-                        "goal ended %.1f s after the start, the pod %.1f s" % (goal_end - start,
-                                                                              pod_end - start))
+        acks = [t for t, m in raw.items if t >= since and frame_id(m.data) == 0x010013]
+        self.assertTrue(acks, "no 0x010013 ACK on raw/rx")
+        self.assertLess(goal_end - acks[0], 2.0, "the goal ended %.1f s after the pod's OK ACK" %
+                        (goal_end - acks[0]))
+        rospy.sleep(1.5)  # 0x000008 is 1 Hz when it comes at all
+        self.assertFalse([m for t, m in raw.items if t >= since and frame_id(m.data) == 0x000008])
+        raw.close()
 
+
+def frame_id(data):
+    """Message id of a raw frame (bytes 7..9, low byte first: section 2.1)."""
+    data = bytearray(data)
+    return data[7] | data[8] << 8 | data[9] << 16
 
 if __name__ == "__main__":
     rostest.rosrun(PKG, "probe_bring_up", ProbeBringUp, sys.argv)

@@ -7,6 +7,7 @@
 
 #include "frame_text.h"
 #include "k40t_driver/protocol/catalogue.h"
+#include "k40t_driver/protocol/convention_readings.h"
 #include "k40t_driver/protocol/conventions.h"
 #include "k40t_driver/protocol/messages/camera.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
@@ -29,6 +30,17 @@ namespace {
 std::string default_of(const char* name) {
   const protocol::ConventionInfo* info = protocol::find_convention(name);
   return info != nullptr ? info->default_value : "";
+}
+
+// Every value of an enum reading except `auto`, as enum and name.
+template <class E>
+std::vector<std::pair<E, std::string>> alternatives(const char* reading) {
+  std::vector<std::pair<E, std::string>> all;
+  const std::vector<const char*>& values = protocol::find_convention(reading)->values;
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (std::string(values[i]) != "auto") all.push_back({static_cast<E>(i), values[i]});
+  }
+  return all;
 }
 
 std::string format(const char* pattern, double a, double b = 0, double c = 0) {
@@ -153,18 +165,18 @@ void learn_system_id(const ProbeLink& link, ProbeReport& report, const char* nam
   }
 }
 
-// 0x000002 yaw (joint bytes 1-2, attitude bytes 7-8): a heading shows beyond +-180 as int16, a
-// signed yaw shows as a small negative int16 (a heading of 475..655 deg is impossible).
+// 0x000002's yaws as int16 (the layout's reading): what each report shows (yaw_range_evidence).
 void learn_yaw_range(const ProbeLink& link, ProbeReport& report) {
   bool heading = false;
   bool negative = false;
   for (const HeardFrame& f : link.frames(protocol::GimbalAttitude::kId)) {
-    if (f.payload.size() < 8) continue;
-    for (size_t at : {size_t{0}, size_t{6}}) {
-      const int value = static_cast<int16_t>(u16_little(f.payload, at));
-      heading = heading || value > 18000 || value < -18000;
-      negative = negative || (value < 0 && value >= -18000);
-    }
+    const Result<protocol::GimbalAttitude> attitude =
+        protocol::decode_payload<protocol::GimbalAttitude>(f.payload.data(), f.payload.size(),
+                                                           protocol::CodecOptions{});
+    if (!attitude) continue;
+    const protocol::YawRange seen = protocol::yaw_range_evidence(*attitude);
+    heading = heading || seen == protocol::YawRange::kHeading;
+    negative = negative || seen == protocol::YawRange::kSigned;
   }
   if (heading && !negative) {
     report.learned("yaw_range", "heading", "0x000002 yaw beyond 180 deg (a 0..360 heading)");
@@ -211,7 +223,7 @@ void learn_sd_capacity_unit(const ProbeLink& link, const ProbeHints& hints, Prob
   }
 }
 
-// The shutters the camera offers (3.2.3.x, decision A7), in microseconds.
+// The shutters the camera offers (3.2.3.x, decision A7).
 constexpr std::array<double, 14> kShutterDenominators = {4,   8,    15,   30,   60,   125,  250,
                                                          500, 1000, 2000, 4000, 5000, 6000, 8000};
 
@@ -220,22 +232,14 @@ double shutter_code_us(uint8_t code) {
                                                           : 0;
 }
 
-// Whether a 0x000005 shutter value fits a reading: the exposure the read-back's manual code
-// gives, or (auto exposure) any shutter the camera offers, 1/8000 .. 1/4 s.
-bool shutter_fits(const std::string& reading, uint16_t value, double manual_us) {
-  const double wrapped = std::fmod(std::round(manual_us), 65536.0);
-  if (manual_us > 0) {
-    if (reading == "us") return std::abs(value - std::min(std::round(manual_us), 65535.0)) <= 1;
-    if (reading == "us_wrapped") return std::abs(value - wrapped) <= 1;
-    return std::abs(value * 100.0 - manual_us) <= std::max(100.0, manual_us * 0.01);
-  }
-  auto offered = [](double us) { return us >= 1e6 / 8000 * 0.99 && us <= 1e6 / 4 * 1.01; };
-  if (reading == "100us") return offered(value * 100.0);
-  if (reading == "us") return offered(value) || value == 65535;
-  for (double d : kShutterDenominators) {  // us_wrapped: as is, or a slow shutter's low bits
-    if (std::abs(std::fmod(std::round(1e6 / d), 65536.0) - value) <= 1) return true;
-  }
-  return offered(value);
+// Whether a 0x000005 shutter value fits a reading: at a manual shutter (read back from 0x010200)
+// the value that reading puts on the wire; in auto exposure any shutter the camera offers,
+// 1/8000 .. 1/4 s (65535 is a saturated "us" and tells nothing).
+bool shutter_fits(protocol::ShutterField reading, uint16_t raw, double manual_us) {
+  if (manual_us > 0) return std::abs(raw - protocol::shutter_to_wire(manual_us, reading)) <= 1;
+  if (reading == protocol::ShutterField::kMicroseconds && raw == 65535) return true;
+  const double us = protocol::shutter_us_from_wire(raw, reading);
+  return us >= 1e6 / 8000 * 0.99 && us <= 1e6 / 4 * 1.01;
 }
 
 void learn_shutter_field(const ProbeLink& link, ProbeReport& report) {
@@ -251,13 +255,15 @@ void learn_shutter_field(const ProbeLink& link, ProbeReport& report) {
     report.kept("shutter_field", default_of("shutter_field"), "no 0x000005 heard");
     return;
   }
-  std::set<std::string> fitting = {"us", "us_wrapped", "100us"};
-  for (const HeardFrame& f : reports) {
-    if (f.payload.size() < 10) continue;
-    const uint16_t value = u16_little(f.payload, 8);
-    for (auto it = fitting.begin(); it != fitting.end();) {
-      it = shutter_fits(*it, value, manual_us) ? std::next(it) : fitting.erase(it);
+  std::set<std::string> fitting;
+  for (const auto& [reading, reading_name] :
+       alternatives<protocol::ShutterField>("shutter_field")) {
+    bool all = true;
+    for (const HeardFrame& f : reports) {
+      if (f.payload.size() >= 10)
+        all = all && shutter_fits(reading, u16_little(f.payload, 8), manual_us);
     }
+    if (all) fitting.insert(reading_name);
   }
   evidence += "0x000005 shutter " + std::to_string(u16_little(reports.back().payload, 8));
   decide(report, "shutter_field", fitting, evidence,
@@ -271,7 +277,9 @@ void learn_thermal_read_back(const ProbeLink& link, ProbeReport& report) {
     report.kept("thermal_zoom_code", default_of("thermal_zoom_code"), "no 0x010100 read back");
     return;
   }
-  // Byte 10: each reading gives (on, level); the level is 0..10 (0x00010E) and on = level > 0.
+  // Byte 10: each reading gives a switch and a level. 0x00010E sets one number, "0 off, 1-10
+  // level", so a pod's switch says on exactly when its level is not 0; the switch bit is kept
+  // here (enhancement_from_wire reads any level as on, which cannot tell the readings apart).
   const uint8_t b = ack->payload[9];
   auto consistent = [](bool on, int level) { return level <= 10 && on == (level > 0); };
   std::set<std::string> fitting;
@@ -280,11 +288,13 @@ void learn_thermal_read_back(const ProbeLink& link, ProbeReport& report) {
   if (consistent(b > 0, b)) fitting.insert("level");
   decide(report, "enhancement_switch", fitting, "0x010100 byte 10 = " + std::to_string(b),
          "enhancement off reads 0 under every reading");
-  // Byte 4 bits 3-7: 1..8 as the ratio, 0..7 zero-based.
-  const int zoom = ack->payload[3] >> 3;
+  // Byte 4 bits 3-7: the ratio 1..8 under each reading.
+  const uint8_t zoom = ack->payload[3] >> 3;
   fitting.clear();
-  if (zoom >= 1 && zoom <= 8) fitting.insert("ratio");
-  if (zoom <= 7) fitting.insert("zero_based");
+  for (const auto& [reading, reading_name] :
+       alternatives<protocol::ThermalZoomCode>("thermal_zoom_code")) {
+    if (protocol::thermal_zoom_fits(zoom, reading)) fitting.insert(reading_name);
+  }
   decide(report, "thermal_zoom_code", fitting, format("0x010100 zoom code %.0f", zoom),
          "codes 1..7 read as both (at 1x a ratio pod shows 1, a zero-based pod 0)");
 }
