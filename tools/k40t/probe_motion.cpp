@@ -37,7 +37,8 @@ class Mover {
  public:
   Mover(ProbeLink& link, std::string& log) : link_(link), log_(log) {}
 
-  // The pose once the gimbal has stopped: the joint rates read 0 and three reports agree.
+  // The pose once the gimbal has stopped: three reports in a row with the joint rates under
+  // 0.5 deg/s and the joints within 0.05 deg of each other (a real gimbal's readings jitter).
   Result<Pose> settle(std::chrono::milliseconds timeout) {
     const auto since = ProbeClock::now() + 300ms;  // give a commanded move time to start
     std::optional<Pose> pose;
@@ -46,16 +47,20 @@ class Mover {
           const std::vector<HeardFrame> heard =
               link_.frames_since(protocol::GimbalAttitude::kId, since);
           if (heard.size() < 3) return false;
+          std::vector<Pose> last;
           for (size_t i = heard.size() - 3; i < heard.size(); ++i) {
             const std::vector<uint8_t>& p = heard[i].payload;
-            if (p.size() < 18 || u16_little(p, 12) != 0 || u16_little(p, 14) != 0) return false;
-            if (u16_little(p, 0) != u16_little(heard.back().payload, 0) ||
-                u16_little(p, 4) != u16_little(heard.back().payload, 4))
+            if (p.size() < 18) return false;
+            const auto centi = [&](size_t at) { return static_cast<int16_t>(u16_little(p, at)); };
+            if (std::abs(centi(12)) >= 50 || std::abs(centi(14)) >= 50) return false;  // rates
+            last.push_back(Pose{yaw_degrees(u16_little(p, 0)), centi(4) / 100.0, centi(0)});
+          }
+          for (const Pose& p : last) {
+            if (std::abs(p.yaw - last.back().yaw) > 0.05 ||
+                std::abs(p.pitch - last.back().pitch) > 0.05)
               return false;
           }
-          const std::vector<uint8_t>& p = heard.back().payload;
-          pose = Pose{yaw_degrees(u16_little(p, 0)), static_cast<int16_t>(u16_little(p, 4)) / 100.0,
-                      static_cast<int16_t>(u16_little(p, 0))};
+          pose = last.back();
           return true;
         },
         timeout);
