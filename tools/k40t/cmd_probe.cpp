@@ -8,6 +8,7 @@
 #include <ctime>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "command.h"
 #include "frame_text.h"
@@ -67,13 +68,43 @@ ProbeReport complete(const ProbeReport& found) {
   return all;
 }
 
+struct ReadBack {
+  const char* what;
+  protocol::MessageId request;
+  session::AckResult result;
+};
+
 template <class Req>
-std::string ask(ProbeLink& link, const char* what) {
-  const session::AckResult result = link.session().request(Req{});
-  const protocol::MessageId ack_id = protocol::ack_id_of(Req::kId);
-  std::string line = std::string(what) + " (" + id_text(Req::kId) + "): ";
-  if (!result.received) return line + result.message + "\n";
-  return line + payload_summary(ack_id, result.payload.data(), result.payload.size(), {}) + "\n";
+ReadBack ask(ProbeLink& link, const char* what) {
+  return {what, Req::kId, link.session().request(Req{})};
+}
+
+// The read-backs decoded with what was learned (an ACK byte order, above all), one per line.
+std::string read_back_text(const std::vector<ReadBack>& answers,
+                           const protocol::CodecOptions& codec) {
+  std::string text;
+  for (const ReadBack& a : answers) {
+    text += std::string(a.what) + " (" + id_text(a.request) + "): ";
+    const protocol::MessageId ack_id = protocol::ack_id_of(a.request);
+    text += a.result.received
+                ? payload_summary(ack_id, a.result.payload.data(), a.result.payload.size(), codec)
+                : a.result.message;
+    text += "\n";
+  }
+  return text;
+}
+
+// The codec the learned readings make; each value goes through the driver's own parser, so a
+// value it would refuse shows here first.
+protocol::CodecOptions learned_codec(const ProbeReport& report) {
+  protocol::CrcCoverage coverage = protocol::CrcCoverage::kAuto;
+  protocol::CodecOptions codec;
+  for (const Finding& f : report.findings()) {
+    if (!f.learned) continue;
+    const Status set = protocol::set_convention({coverage, codec}, f.name, f.value);
+    if (!set) std::fprintf(stderr, "k40t probe: internal: %s\n", set.message().c_str());
+  }
+  return codec;
 }
 
 std::string now_text() {
@@ -106,13 +137,14 @@ Status check_writable(const std::string& path) {
 
 }  // namespace
 
-std::string read_back(ProbeLink& link) {
-  return ask<protocol::GimbalVersionRequest>(link, "gimbal version") +
-         ask<protocol::CameraVersionRequest>(link, "camera version") +
-         ask<protocol::ThermalReadSettingsRequest>(link, "thermal settings") +
-         ask<protocol::VisibleReadSettingsRequest>(link, "visible settings") +
-         ask<protocol::GetIpRequest>(link, "IP address") +
-         ask<protocol::SbusConfigRequest>(link, "SBUS configuration");
+// What the document has a query for: versions, settings, network, SBUS (nothing changes).
+std::vector<ReadBack> read_back(ProbeLink& link) {
+  return {ask<protocol::GimbalVersionRequest>(link, "gimbal version"),
+          ask<protocol::CameraVersionRequest>(link, "camera version"),
+          ask<protocol::ThermalReadSettingsRequest>(link, "thermal settings"),
+          ask<protocol::VisibleReadSettingsRequest>(link, "visible settings"),
+          ask<protocol::GetIpRequest>(link, "IP address"),
+          ask<protocol::SbusConfigRequest>(link, "SBUS configuration")};
 }
 
 namespace {
@@ -159,10 +191,11 @@ int run_probe(const Command& self, const ParsedArgs& args) {
   }
   // Every periodic report is at least 1 Hz: the whole window sees each of them.
   link.wait_until([] { return false; }, listen);
-  std::printf("%s", read_back(link).c_str());
+  const std::vector<ReadBack> answers = read_back(link);
 
   ProbeReport found;
   learn_from_traffic(link, hints, found);
+  std::printf("%s", read_back_text(answers, learned_codec(found)).c_str());
   std::string log;
   Status moved = Status::ok();
   if (args.has("--allow-motion")) {

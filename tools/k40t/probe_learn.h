@@ -18,10 +18,6 @@ struct ProbeHints {
   std::optional<double> sd_card_gb;  // the card's label, for sd_capacity_unit
 };
 
-// The read-only requests: versions and every settings read-back the document has. Their raw ACKs
-// land in the link's frames; the returned text lists what each answered, for the user.
-std::string read_back(ProbeLink& link);
-
 // From the frames heard so far (reports and the read-backs' ACKs): crc_coverage, ack_byte_order,
 // the system ids, yaw_range, sd_capacity_unit, shutter_field, enhancement_switch,
 // thermal_zoom_code, laser_status_byte_order.
