@@ -1,5 +1,6 @@
 #include "k40t_driver/driver/convention_tracker.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <utility>
@@ -37,6 +38,10 @@ std::string hex_byte(unsigned byte) {
 ConventionTracker::ConventionTracker(p::CrcCoverage crc_coverage, const p::CodecOptions& codec,
                                      std::set<std::string> from_parameters)
     : crc_coverage_(crc_coverage), codec_(codec), from_parameters_(std::move(from_parameters)) {}
+
+double ConventionTracker::steady_now_s() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
 
 p::Conventions ConventionTracker::conventions() const {
   std::lock_guard<std::mutex> lock(mutex_);
@@ -81,6 +86,7 @@ void ConventionTracker::observe_attitude(const p::GimbalAttitude& as_decoded, do
   p::attitude_from_wire(now, codec_.conventions,
                         range == p::YawRange::kHeading ? range : p::YawRange::kSigned);
   last_attitude_ = now;
+  check_calibration(now_s);
   finish_check(yaw_check_, "yaw", now.joint_yaw_deg, now.yaw_rate_deg_s, now_s);
   finish_check(pitch_check_, "pitch", now.joint_pitch_deg, now.pitch_rate_deg_s, now_s);
 }
@@ -182,6 +188,43 @@ void ConventionTracker::observe_thermal_settings(const p::ThermalSettingsAck& as
                                         std::to_string(as_decoded.zoom_x) +
                                         " is no ratio 1..8 under thermal_zoom_code: " +
                                         (ratio ? "ratio; it fits zero_based" : "zero_based"));
+  }
+}
+
+void ConventionTracker::observe_calibration_acked(double now_s) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  calibration_acked_s_ = now_s;
+}
+
+void ConventionTracker::observe_upgrade_status(const p::CameraUpgradeStatus& m, double now_s) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!calibration_acked_s_ || m.state != p::CameraUpgradeState::kRepairing) {
+    check_calibration(now_s);
+    return;
+  }
+  char after[64];
+  std::snprintf(after, sizeof after, "%.1f s", now_s - *calibration_acked_s_);
+  calibration_acked_s_.reset();
+  calibration_evidence(p::CalibrationEnd::kStatus, std::string("0x000008 'repairing' ") + after +
+                                                       " after a calibration's OK ACK");
+}
+
+void ConventionTracker::check_calibration(double now_s) {
+  if (!calibration_acked_s_ || now_s - *calibration_acked_s_ < kCalibrationQuietS) return;
+  calibration_acked_s_.reset();
+  calibration_evidence(p::CalibrationEnd::kAck,
+                       "no 0x000008 'repairing' within 2.5 s of a calibration's OK ACK");
+}
+
+void ConventionTracker::calibration_evidence(p::CalibrationEnd seen, const std::string& evidence) {
+  p::CalibrationEnd& end = codec_.conventions.calibration_end;
+  const char* seen_name = seen == p::CalibrationEnd::kAck ? "ack" : "status";
+  if (end == p::CalibrationEnd::kAuto) {
+    detect("calibration_end", evidence + " (the pod's reading: " + seen_name + ")");
+  } else if (end != seen) {
+    contradict("calibration_end",
+               evidence + ": the pod's calibrations end as calibration_end: " + seen_name +
+                   " (or auto) says, not " + (end == p::CalibrationEnd::kAck ? "ack" : "status"));
   }
 }
 

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <ctime>
 
+#include "k40t_driver/protocol/messages/camera_reports.h"
 #include "k40t_driver/protocol/messages/camera_system.h"
 #include "k40t_driver/protocol/messages/flight_controller.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
@@ -19,10 +20,6 @@ namespace {
 std::chrono::steady_clock::duration seconds(double s) {
   return std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(s));
-}
-
-double steady_now_s() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 int64_t unix_time_ms_now() {
@@ -59,7 +56,11 @@ Result<std::unique_ptr<PodDriver>> PodDriver::create(DriverOptions options, Cloc
   // copies are then read with (docs/protocol/decisions.md#conventions).
   driver->dispatcher().on<protocol::GimbalAttitude>(
       [self](const protocol::GimbalAttitude& m, const FrameView&) {
-        self->conventions_.observe_attitude(m, steady_now_s());
+        self->conventions_.observe_attitude(m, ConventionTracker::steady_now_s());
+      });
+  driver->dispatcher().on<protocol::CameraUpgradeStatus>(
+      [self](const protocol::CameraUpgradeStatus& m, const FrameView&) {
+        self->conventions_.observe_upgrade_status(m, ConventionTracker::steady_now_s());
       });
   return driver;
 }
@@ -172,22 +173,8 @@ void PodDriver::handle_rx_frame(const FrameView& frame) {
       wake_.notify_all();
     }
   }
+  observe_received(frame);
   for (const FrameHandler& handler : rx_handlers_) handler(frame, stamp);
-}
-
-void PodDriver::observe_sent(const FrameView& frame) {
-  if (frame.header.message_id == protocol::GimbalControlRequest::kId) {
-    if (auto command = protocol::decode_payload<protocol::GimbalControlRequest>(frame, codec()))
-      conventions_.observe_command(*command, steady_now_s());
-  } else if (frame.header.message_id == protocol::GimbalAngleRequest::kId) {
-    if (auto command = protocol::decode_payload<protocol::GimbalAngleRequest>(frame, codec()))
-      conventions_.observe_command(*command, steady_now_s());
-  }
-}
-
-std::vector<ConventionStatus> PodDriver::conventions_report() {
-  conventions_.observe_crc_coverage(stats().crc_coverage);
-  return conventions_.report();
 }
 
 void PodDriver::handle_link_state(transport::LinkState state, const std::string& reason) {

@@ -31,10 +31,19 @@ void print_frame(const char* direction, const protocol::FrameView& frame) {
 
 }  // namespace
 
+namespace {
+// The model's part of the readings the pod follows (the rest is in how it encodes).
+PodConfig played_config(const SimOptions& o) {
+  PodConfig config = o.pod;
+  config.camera.self_timer = o.codec.conventions.photo_mode_2 == protocol::PhotoMode2::kSelfTimer;
+  return config;
+}
+}  // namespace
+
 PodServer::PodServer(SimOptions options)
     : options_(std::move(options)),
       faults_(options_.seed, options_.crc_coverage),
-      pod_(options_.pod) {
+      pod_(played_config(options_)) {
   faults_.set_settings(options_.faults);
   if (options_.sd_condition) set_sd_condition(pod_.camera().sd(), *options_.sd_condition);
 }

@@ -6,7 +6,8 @@
 //   - a reading that is not `auto` is checked against the same evidence, and against the gimbal's
 //     unambiguous commands: a move commanded with 0x000010's or 0x000012's direction bytes that
 //     the 0x000002 report counts the other way contradicts yaw_sign / pitch_sign. Contradictions
-//     are kept and shown by the `conventions` diagnostic (WARN).
+//     are kept and shown by the `conventions` diagnostic (WARN);
+//   - calibration_end: whether 0x000008 reports a calibration the pod acknowledged.
 // ROS-free and thread-safe: observations come from the I/O thread, reports from any thread.
 #pragma once
 
@@ -36,6 +37,9 @@ class ConventionTracker {
   ConventionTracker(protocol::CrcCoverage crc_coverage, const protocol::CodecOptions& codec,
                     std::set<std::string> from_parameters);
 
+  // Seconds of the steady clock, the time base of the observations in the driver.
+  static double steady_now_s();
+
   // The readings in force (auto ones resolved once locked).
   protocol::Conventions conventions() const;
   protocol::YawRange yaw_range() const;  // kSigned until an auto range locks
@@ -48,6 +52,12 @@ class ConventionTracker {
   // ACK 0x010100 as the layout decoded it (before the readings are applied).
   void observe_thermal_settings(const protocol::ThermalSettingsAck& as_decoded);
   void observe_crc_coverage(protocol::CrcCoverage locked);
+  // How a gimbal calibration ends: its OK ACK (0x010013, 0x01002E, 0x010031), then whether
+  // 0x000008 says "repairing" within kCalibrationQuietS (status) or not (ack). Decided on the next
+  // observation after that time.
+  void observe_calibration_acked(double now_s);
+  void observe_upgrade_status(const protocol::CameraUpgradeStatus& m, double now_s);
+  static constexpr double kCalibrationQuietS = 2.5;
 
   // --- applying the readings --------------------------------------------------------------------
   // The true values of a decoded message (convention_readings.h's *_from_wire).
@@ -77,6 +87,8 @@ class ConventionTracker {
                    std::string text);
   void finish_check(AxisCheck& check, const char* name, double angle, double rate, double now_s);
   void contradict(const std::string& name, std::string why);
+  void calibration_evidence(protocol::CalibrationEnd seen, const std::string& evidence);
+  void check_calibration(double now_s);
   void detect(const std::string& name, std::string evidence);
 
   mutable std::mutex mutex_;
@@ -88,6 +100,7 @@ class ConventionTracker {
   std::vector<std::pair<std::string, std::string>> detected_;        // name, evidence
   std::vector<std::pair<std::string, std::string>> contradictions_;  // name, why
   std::optional<protocol::GimbalAttitude> last_attitude_;            // true values
+  std::optional<double> calibration_acked_s_;  // a calibration whose end is being watched
   AxisCheck yaw_check_;
   AxisCheck pitch_check_;
 };

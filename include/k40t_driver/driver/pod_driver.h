@@ -138,7 +138,8 @@ class PodDriver {
   session::Dispatcher& dispatcher();
   session::AckResult not_sent_in_replay() const;
   void handle_rx_frame(const protocol::FrameView& frame);
-  void observe_sent(const protocol::FrameView& frame);  // gimbal commands, for the sign checks
+  void observe_sent(const protocol::FrameView& frame);      // gimbal commands, for the sign checks
+  void observe_received(const protocol::FrameView& frame);  // calibration ACKs
   void handle_link_state(transport::LinkState state, const std::string& reason);
   std::optional<protocol::Payload> answer_gps_request(const protocol::FrameView& frame);
   void timer_loop();
