@@ -93,19 +93,23 @@ bool known_response_code(uint16_t code) {
   return code <= 0x000A || (code >= 0x0201 && code <= 0x0204);
 }
 
-// 0x010100's int16 limits (3.2.2.1): alarms -1000..5000 (difference 1..6000) or -2732 "off",
-// reference -300..500, float 0..800, all 0.1 degC.
+// Multi-byte ACK fields with documented ranges: 0x010100's int16 limits (3.2.2.1: alarms
+// -1000..5000, difference 1..6000, or -2732 "off"; reference -300..500; float 0..800, all
+// 0.1 degC) and 0x010502's SBUS end points (3.2.6.3: 0..2047).
 struct Int16Field {
+  protocol::MessageId ack;
   size_t at;
   int lo;
   int hi;
   bool off_code;
 };
-constexpr std::array<Int16Field, 5> kThermalAckInt16 = {{{10, -1000, 5000, true},
-                                                         {12, -1000, 5000, true},
-                                                         {14, 1, 6000, true},
-                                                         {17, -300, 500, false},
-                                                         {19, 0, 800, false}}};
+constexpr std::array<Int16Field, 7> kAckRangedFields = {{{0x010100, 10, -1000, 5000, true},
+                                                         {0x010100, 12, -1000, 5000, true},
+                                                         {0x010100, 14, 1, 6000, true},
+                                                         {0x010100, 17, -300, 500, false},
+                                                         {0x010100, 19, 0, 800, false},
+                                                         {0x010502, 2, 0, 2047, false},
+                                                         {0x010502, 4, 0, 2047, false}}};
 
 bool fits(const Int16Field& f, uint16_t raw) {
   const int value = static_cast<int16_t>(raw);
@@ -128,13 +132,14 @@ void learn_ack_byte_order(const ProbeLink& link, ProbeReport& report) {
       little = little && as_little;
     }
   }
-  for (const HeardFrame& f : link.frames(protocol::ThermalSettingsAck::kId)) {
-    if (f.payload.size() < 21) continue;
-    for (const Int16Field& field : kThermalAckInt16) {
+  for (const Int16Field& field : kAckRangedFields) {
+    for (const HeardFrame& f : link.frames(field.ack)) {
+      if (f.payload.size() < field.at + 2) continue;  // a code-only refusal
       const bool as_big = fits(field, u16_big(f.payload, field.at));
       const bool as_little = fits(field, u16_little(f.payload, field.at));
       if (as_big != as_little && evidence.empty())
-        evidence = format("0x010100 int16 at byte %.0f: ", field.at + 1.0) +
+        evidence = id_text(field.ack) +
+                   format(" bytes %.0f-%.0f: ", field.at + 1.0, field.at + 2.0) +
                    hex_bytes(f.payload[field.at], f.payload[field.at + 1]);
       big = big && as_big;
       little = little && as_little;
