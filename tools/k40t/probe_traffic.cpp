@@ -205,7 +205,7 @@ void learn_sd_capacity_unit(const ProbeLink& link, const ProbeHints& hints, Prob
   }
   const double total = u16_little(status->payload, 9);
   const std::string both = format("total %.0f counts: %.1f GB at 10 MB, %.2f GB at 0.1 MB", total,
-                                  total * 10 / 1024, total * 0.1 / 1024);
+                                  total * 10 / 1000, total * 0.1 / 1000);
   if (total == 65535) {
     report.learned("sd_capacity_unit", "0.1mb",
                    "0x000003 total saturated at 65535 counts (a card over 6.5 GB in 0.1 MB)");
@@ -272,7 +272,7 @@ void learn_shutter_field(const ProbeLink& link, ProbeReport& report) {
   }
   evidence += "0x000005 shutter " + std::to_string(u16_little(reports.back().payload, 8));
   decide(report, "shutter_field", fitting, evidence,
-         "the readings differ only for shutters the camera is not at (a manual 1/4 s shows all)");
+         "these read this shutter alike (a manual 1/4 s shutter tells all three apart)");
 }
 
 void learn_thermal_read_back(const ProbeLink& link, ProbeReport& report) {
