@@ -109,6 +109,7 @@ TEST(K40tProbe, LearnsTheDefaultReadingsWithMotionAndCalibration) {
     pod.thermal().settings().reported.enhancement_level = 5;
     pod.thermal().settings().reported.zoom_x = 8;  // 8 is a ratio only
     pod.gimbal().command_angles(-10, 20);          // off centre: centred, then brought back
+    pod.camera().visible().shutter = protocol::Shutter::k1_4;  // 1/4 s saturates "us" at 65535
   };
   c.after = [](PodModel& pod) {
     EXPECT_NEAR(pod.gimbal().pose().joint_deg.yaw, 20, 0.1);
@@ -126,9 +127,8 @@ TEST(K40tProbe, LearnsTheDefaultReadingsWithMotionAndCalibration) {
                {"enhancement_switch", "bit7"},
                {"thermal_zoom_code", "ratio"},
                {"calibration_end", "status"}};
+  c.learned["shutter_field"] = "us";
   c.kept = kNeverLearned;
-  c.kept["shutter_field"] = "us";  // auto exposure at 1/2000 or 1/500 s fits "us" and "100us"
-  c.kept["laser_status_byte_order"] = "little";  // periodic ranging off: no 0x020406
   const ToolRun run = probe_against_sim(c);
   EXPECT_NE(run.out.find("gimbal version (0x000018): code=ok_success(0) hardware_major=1"),
             std::string::npos)
@@ -142,6 +142,7 @@ TEST(K40tProbe, LearnsTheOtherReadingOfEveryItem) {
                 "--angle-scale",      "10",
                 "--gimbal-system-id", "5",
                 "--sd-capacity-mb",   "4000",
+                "--convention",       "camera_system_id=6",
                 "--convention",       "yaw_sign=left",
                 "--convention",       "pitch_sign=down",
                 "--convention",       "yaw_range=heading",
@@ -155,17 +156,12 @@ TEST(K40tProbe, LearnsTheOtherReadingOfEveryItem) {
     pod.thermal().settings().reported.enhancement_on = true;  // bit 0 and level 5 (bits 7..1)
     pod.thermal().settings().reported.enhancement_level = 5;
   };
-  c.learned = {{"crc_coverage", "whole_frame"},
-               {"ack_byte_order", "little"},
-               {"gimbal_system_id", "5"},
-               {"angle_command_scale", "10"},
-               {"yaw_sign", "left"},
-               {"pitch_sign", "down"},
-               {"yaw_range", "heading"},
-               {"sd_capacity_unit", "0.1mb"},
-               {"shutter_field", "100us"},
-               {"enhancement_switch", "bit0"},
-               {"thermal_zoom_code", "zero_based"},
+  c.learned = {{"crc_coverage", "whole_frame"}, {"ack_byte_order", "little"},
+               {"gimbal_system_id", "5"},       {"camera_system_id", "6"},
+               {"angle_command_scale", "10"},   {"yaw_sign", "left"},
+               {"pitch_sign", "down"},          {"yaw_range", "heading"},
+               {"sd_capacity_unit", "0.1mb"},   {"shutter_field", "100us"},
+               {"enhancement_switch", "bit0"},  {"thermal_zoom_code", "zero_based"},
                {"calibration_end", "ack"}};
   c.kept = kNeverLearned;
   const ToolRun run = probe_against_sim(c);

@@ -43,6 +43,9 @@ const std::map<std::string, std::string>& not_learned_why() {
       {"gps_answer_byte_order",
        "not learnable from traffic: default kept (the host writes 0x010310)"},
       {"laser_target_zeros", "not learnable from traffic: default kept"},
+      {"laser_status_byte_order",
+       "not learnable from traffic: default kept (0x020406's code is 0 and its distance reads "
+       "plausibly both ways)"},
       {"focus_plus", "not learnable from traffic: default kept (watch the picture)"},
   };
   return why;

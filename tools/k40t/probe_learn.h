@@ -20,7 +20,7 @@ struct ProbeHints {
 
 // From the frames heard so far (reports and the read-backs' ACKs): crc_coverage, ack_byte_order,
 // the system ids, yaw_range, sd_capacity_unit, shutter_field, enhancement_switch,
-// thermal_zoom_code, laser_status_byte_order.
+// thermal_zoom_code.
 void learn_from_traffic(const ProbeLink& link, const ProbeHints& hints, ProbeReport& report);
 
 // With --allow-motion: yaw_sign, pitch_sign, angle_command_scale (and yaw_range when the yaw

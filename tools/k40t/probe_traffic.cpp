@@ -11,7 +11,6 @@
 #include "k40t_driver/protocol/conventions.h"
 #include "k40t_driver/protocol/messages/camera.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
-#include "k40t_driver/protocol/messages/laser.h"
 #include "k40t_driver/protocol/messages/thermal.h"
 #include "k40t_driver/protocol/messages/visible.h"
 #include "probe_learn.h"
@@ -304,34 +303,11 @@ void learn_thermal_read_back(const ProbeLink& link, ProbeReport& report) {
          "codes 1..7 read as both (at 1x a ratio pod shows 1, a zero-based pod 0)");
 }
 
-void learn_laser_status_byte_order(const ProbeLink& link, ProbeReport& report) {
-  bool big = true;
-  bool little = true;
-  std::string evidence;
-  for (const HeardFrame& f : link.frames(protocol::LaserPeriodicRangeStatus::kId)) {
-    if (f.payload.size() < 4) continue;
-    big = big && known_response_code(u16_big(f.payload, 0));
-    little = little && known_response_code(u16_little(f.payload, 0));
-    evidence = "0x020406 code bytes " + hex_bytes(f.payload[0], f.payload[1]);
-  }
-  if (evidence.empty()) {
-    report.kept("laser_status_byte_order", default_of("laser_status_byte_order"),
-                "no 0x020406 heard (periodic ranging off; 'k40t send URL laser_periodic_range "
-                "enable=1' turns it on)");
-    return;
-  }
-  std::set<std::string> fitting;
-  if (big) fitting.insert("big");
-  if (little) fitting.insert("little");
-  decide(report, "laser_status_byte_order", fitting, evidence, "its response code is 0");
-}
-
 }  // namespace
 
 void learn_from_traffic(const ProbeLink& link, const ProbeHints& hints, ProbeReport& report) {
   learn_crc_coverage(link, report);
   learn_ack_byte_order(link, report);
-  learn_laser_status_byte_order(link, report);
   learn_system_id(link, report, "gimbal_system_id",
                   {protocol::GimbalStatus::kId, protocol::GimbalAttitude::kId}, "gimbal reports");
   learn_system_id(link, report, "camera_system_id",
