@@ -101,10 +101,11 @@ TEST(ConventionReadings, SdCapacitiesOfATenthMb) {
   EXPECT_DOUBLE_EQ(ten_mb.sd_total_mb, 300000);
   Conventions tenth;
   tenth.sd_capacity_unit = SdCapacityUnit::kTenthMb;
-  sd_capacities_from_wire(*m, tenth);
-  EXPECT_NEAR(m->sd_total_mb, 3000, 1e-9);
-  EXPECT_NEAR(m->sd_free_mb, 1000, 1e-9);
-  EXPECT_NEAR(m->sd_used_mb, 2000, 1e-9);
+  CameraSystemStatus tenths = *m;
+  sd_capacities_from_wire(tenths, tenth);
+  EXPECT_NEAR(tenths.sd_total_mb, 3000, 1e-9);
+  EXPECT_NEAR(tenths.sd_free_mb, 1000, 1e-9);
+  EXPECT_NEAR(tenths.sd_used_mb, 2000, 1e-9);
   // The simulator's side: 3000.05 MB is 30000 counts of 0.1 MB, 300 of 10 MB.
   EXPECT_DOUBLE_EQ(sd_capacity_to_wire(3000.05, tenth), 300000);
   EXPECT_DOUBLE_EQ(sd_capacity_to_wire(3009, Conventions{}), 3000);
