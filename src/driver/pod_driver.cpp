@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <ctime>
 
+#include "k40t_driver/protocol/messages/camera_reports.h"
 #include "k40t_driver/protocol/messages/camera_system.h"
 #include "k40t_driver/protocol/messages/flight_controller.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
@@ -52,12 +53,24 @@ Result<std::unique_ptr<PodDriver>> PodDriver::create(DriverOptions options, Cloc
   // run after all frame handlers).
   PodDriver* self = driver.get();
   driver->dispatcher().on_frame([self](const FrameView& frame) { self->handle_rx_frame(frame); });
+  // Before any glue handler: the report as decoded locks or checks the readings the handlers'
+  // copies are then read with (docs/protocol/decisions.md#conventions).
+  driver->dispatcher().on<protocol::GimbalAttitude>(
+      [self](const protocol::GimbalAttitude& m, const FrameView&) {
+        self->conventions_.observe_attitude(m, ConventionTracker::steady_now_s());
+      });
+  driver->dispatcher().on<protocol::CameraUpgradeStatus>(
+      [self](const protocol::CameraUpgradeStatus& m, const FrameView&) {
+        self->conventions_.observe_upgrade_status(m, ConventionTracker::steady_now_s());
+      });
   return driver;
 }
 
 PodDriver::PodDriver(DriverOptions options, Clock clock)
     : options_(std::move(options)),
       clock_(std::move(clock)),
+      conventions_(options_.session.crc_coverage, options_.session.codec,
+                   options_.conventions_from_parameters),
       history_(geo::HistoryLimits{options_.state_history_s, 5000}),
       link_monitor_(options_.replay ? std::string("replay")
                                     : device_url_with_baud(options_.device, options_.baud),
@@ -90,6 +103,7 @@ Status PodDriver::start() {
   if (started_) return Status::fail("the driver is already started");
   if (session_) {
     session_->on_frame_sent([this](const FrameView& frame) {
+      observe_sent(frame);
       const StampNs stamp = clock_();
       for (const FrameHandler& handler : tx_handlers_) handler(frame, stamp);
     });
@@ -169,6 +183,7 @@ void PodDriver::handle_rx_frame(const FrameView& frame) {
     deliver(report);  // "connected" before what the online handlers then say
     if (online) wake_.notify_all();
   }
+  observe_received(frame);
   for (const FrameHandler& handler : rx_handlers_) handler(frame, stamp);
 }
 
@@ -192,9 +207,10 @@ std::optional<protocol::Payload> PodDriver::answer_gps_request(const FrameView& 
   double gap_s = -1;  // stays -1 when the history holds no position (the latest state answers)
   VehicleState vehicle;
   if (options_.geotag_time_match) {
-    // The time of day is the pod clock's (UTC), on the day nearest to the pod's now.
-    const int64_t time_of_day_ms =
-        ((asked.hour * 60 + asked.minute) * 60 + asked.second) * 1000 + asked.millisecond;
+    // The time of day on the pod clock, on the day nearest to the pod's now.
+    // In UTC, or in the zone the time syncs give the pod (gps_request_time).
+    const int64_t time_of_day_ms = protocol::gps_request_utc_ms_of_day(
+        asked, codec().conventions.gps_request_time, options_.time_zone_minutes_west);
     const int64_t pod_now_ms = pod_time_of_stamp(clock_());
     const StampNs at = stamp_of_pod_time(geo::unix_ms_of_time_of_day(time_of_day_ms, pod_now_ms));
     vehicle = vehicle_state_at(at, &in_history, &gap_s);
@@ -212,7 +228,8 @@ std::optional<protocol::Payload> PodDriver::answer_gps_request(const FrameView& 
     ack = protocol::CameraGpsAck::answering(request.value());  // no position: "no fix yet"
     ack.code = protocol::ResponseCode::kFailure;
   }
-  Result<protocol::Payload> payload = protocol::encode_payload(ack, codec());
+  // The data in gps_answer_byte_order, the response code in ack_byte_order.
+  Result<protocol::Payload> payload = protocol::encode_gps_answer(ack, codec());
   if (!payload) return std::nullopt;  // the failure form always encodes; kept for safety
   std::lock_guard<std::mutex> lock(mutex_);
   ++(positioned ? counters_.gps_requests_answered : counters_.gps_requests_unanswerable);

@@ -108,21 +108,49 @@ std::optional<Step> calibration_step(const p::CameraUpgradeStatus& status) {
   return std::nullopt;
 }
 
-Result<GimbalCalibration> GimbalCalibration::create(int kind, double timeout_s, double now_s) {
+Result<GimbalCalibration> GimbalCalibration::create(int kind, double timeout_s, double now_s,
+                                                    p::CalibrationEnd end) {
   Result<CalibrationKind> which = calibration_kind(kind);
   if (!which) return which.status();
   return with_timeout(timeout_s, kDefaultTimeoutS, [&](double seconds) {
-    return GimbalCalibration(which.value(), seconds, now_s);
+    return GimbalCalibration(which.value(), seconds, now_s, end);
   });
 }
 
-GimbalCalibration::GimbalCalibration(CalibrationKind kind, double timeout_s, double now_s)
-    : TrackedOperation(calibration_name(kind), "0x000008 'succeeded'", timeout_s, now_s),
-      kind_(kind) {}
+namespace {
+const char* awaited_end(p::CalibrationEnd end) {
+  switch (end) {
+    case p::CalibrationEnd::kStatus:
+      return "0x000008 'succeeded' (calibration_end: status)";
+    case p::CalibrationEnd::kAck:
+      return "the OK ACK (calibration_end: ack)";
+    case p::CalibrationEnd::kAuto:
+      break;
+  }
+  return "0x000008 'succeeded' after its 'repairing' (calibration_end: auto)";
+}
+}  // namespace
+
+GimbalCalibration::GimbalCalibration(CalibrationKind kind, double timeout_s, double now_s,
+                                     p::CalibrationEnd end)
+    : TrackedOperation(calibration_name(kind), awaited_end(end), timeout_s, now_s),
+      kind_(kind),
+      end_(end) {
+  if (end == p::CalibrationEnd::kAck)
+    tracker().end_with_ack("done (the OK ACK, calibration_end: ack)");
+  if (end == p::CalibrationEnd::kAuto) {
+    tracker().end_if_quiet_after_ack(
+        kQuietS,
+        "done (the OK ACK and no 0x000008 'repairing' within 1.5 s, calibration_end: auto)");
+  }
+}
 
 void GimbalCalibration::on_status(const p::CameraUpgradeStatus& status) {
+  if (end_ == p::CalibrationEnd::kAck) return;  // 0x000008 is the camera's, not this
   const std::optional<Step> step = calibration_step(status);
   if (!step) return;
+  if (status.state == p::CameraUpgradeState::kRepairing) repairing_seen_ = true;
+  if (!repairing_seen_) return;  // an upgrade's end, or an idle pod's "succeeded"
   if (status.state == p::CameraUpgradeState::kRepairing ||
       status.state == p::CameraUpgradeState::kSucceeded) {
     progress_percent_ = status.progress_percent;

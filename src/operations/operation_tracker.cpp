@@ -60,7 +60,24 @@ void OperationTracker::cancel(const std::string& how) {
   end(Phase::kCancelled, what_ + " cancelled" + (how.empty() ? "" : ": " + how));
 }
 
+void OperationTracker::end_with_ack(std::string text) {
+  if (done()) return;
+  if (acked_) return end(Phase::kSucceeded, what_ + ": " + text);
+  success_reported_ = true;
+  success_text_ = std::move(text);
+}
+
+void OperationTracker::end_if_quiet_after_ack(double quiet_s, std::string text) {
+  quiet_s_ = quiet_s;
+  quiet_text_ = std::move(text);
+}
+
 Phase OperationTracker::check(double now_s) {
+  if (!done() && acked_ && quiet_s_ >= 0) {
+    if (acked_seen_s_ < 0) acked_seen_s_ = now_s;
+    if (reports_ == 0 && now_s - acked_seen_s_ >= quiet_s_)
+      end(Phase::kSucceeded, what_ + ": " + quiet_text_);
+  }
   if (done() || elapsed_s(now_s) < timeout_s_) return phase_;
   const std::string last = !acked_                ? "the request was not acknowledged yet"
                            : status_text_.empty() ? "no status frame received"

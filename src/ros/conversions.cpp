@@ -65,11 +65,16 @@ sensor_msgs::JointState to_joint_state(const protocol::GimbalAttitude& attitude,
 }
 
 geometry_msgs::QuaternionStamped to_attitude(const protocol::GimbalAttitude& attitude,
-                                             const ros::Time& stamp, const FrameIds& ids) {
+                                             const ros::Time& stamp, const FrameIds& ids,
+                                             protocol::AttitudeOrder order) {
   geometry_msgs::QuaternionStamped q;
   q.header = header(stamp, ids.level);
-  q.quaternion =
-      to_quaternion(rep103_from_pod(attitude.yaw_deg, attitude.roll_deg, attitude.pitch_deg));
+  const Quaternion r = attitude_rotation(
+      rep103_from_pod(attitude.yaw_deg, attitude.roll_deg, attitude.pitch_deg), order);
+  q.quaternion.x = r.x;
+  q.quaternion.y = r.y;
+  q.quaternion.z = r.z;
+  q.quaternion.w = r.w;
   return q;
 }
 

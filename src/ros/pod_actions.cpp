@@ -92,8 +92,9 @@ void PodActions::create_gimbal_actions(ros::NodeHandle& nh) {
   using CalibrationServer =
       OperationServer<k40t_driver::GimbalCalibrateAction, ops::GimbalCalibration>;
   CalibrationServer::Binding calibrate;
-  calibrate.create = [](const k40t_driver::GimbalCalibrateGoal& goal, double now_s) {
-    return ops::GimbalCalibration::create(goal.kind, goal.timeout, now_s);
+  calibrate.create = [this](const k40t_driver::GimbalCalibrateGoal& goal, double now_s) {
+    return ops::GimbalCalibration::create(goal.kind, goal.timeout, now_s,
+                                          driver_.conventions().conventions().calibration_end);
   };
   calibrate.send = [this](const ops::GimbalCalibration& op, auto done) {
     switch (op.kind()) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <variant>
 
+#include "k40t_driver/driver/convention_health.h"
 #include "k40t_driver/protocol/messages/visible.h"
 
 namespace k40t::driver {
@@ -59,6 +60,7 @@ PodDiagnostics::PodDiagnostics(ros::NodeHandle nh, ros::NodeHandle private_nh, P
   add_report_check("SD card", camera_, sd_card_health);
   add_report_check("temperature alarms", thermal_, alarms_health);
   if (settings_) add_check("settings", [this] { return settings_health(settings_->state()); });
+  add_check("conventions", [this] { return conventions_health(driver_.conventions_report()); });
 
   keep_latest(driver, mutex_, gimbal_);
   keep_latest(driver, mutex_, camera_);

@@ -28,6 +28,7 @@
 #include "k40t_driver/driver/pod_queries.h"
 #include "k40t_driver/driver/sbus_write.h"
 #include "k40t_driver/operations/gimbal_operations.h"
+#include "k40t_driver/protocol/convention_readings.h"
 #include "k40t_driver/protocol/messages/camera_capture.h"
 #include "k40t_driver/protocol/messages/camera_imaging.h"
 #include "k40t_driver/protocol/messages/camera_system.h"
@@ -128,8 +129,15 @@ void PodServices::advertise_camera() {
       "set_zoom", [](auto& req, auto& r) { r.zoom_x = req.ratio; });
   serve_request<k40t_driver::Zoom, p::ContinuousZoomRequest>(
       "zoom", [](auto& req, auto& r) { r.command = static_cast<p::ZoomCommand>(req.action); });
-  serve_request<k40t_driver::Focus, p::FocusRequest>("focus", [](auto& req, auto& r) {
+  // MANUAL_NEAR/FAR go out as "+" or "-" as the pod reads them (focus_plus,
+  // docs/protocol/decisions.md#conventions).
+  const p::FocusPlus plus = driver_.codec().conventions.focus_plus;
+  serve_request<k40t_driver::Focus, p::FocusRequest>("focus", [plus](auto& req, auto& r) {
     r.command = static_cast<p::FocusCommand>(req.mode);
+    if (req.mode == k40t_driver::Focus::Request::MANUAL_NEAR ||
+        req.mode == k40t_driver::Focus::Request::MANUAL_FAR)
+      r.command =
+          p::manual_focus_command(req.mode == k40t_driver::Focus::Request::MANUAL_NEAR, plus);
     r.area_left_px = req.x1;
     r.area_top_px = req.y1;
     r.area_right_px = req.x2;

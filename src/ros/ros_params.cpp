@@ -1,7 +1,10 @@
 #include "k40t_driver/ros/ros_params.h"
 
+#include <set>
+#include <string>
 #include <vector>
 
+#include "k40t_driver/protocol/conventions.h"
 #include "k40t_driver/ros/param_reader.h"
 #include "k40t_driver/transport/transport.h"
 
@@ -11,6 +14,30 @@ Result<RosPodConfig> read_params(const ros::NodeHandle& private_nh) {
   ParamReader reader(private_nh);
   return read_params(reader);
 }
+
+namespace {
+
+// The document's open readings (docs/protocol/decisions.md#conventions) besides the ones read
+// above, each a text parameter (e.g. from k40t.launch conventions:=FILE.yaml, as `k40t probe`
+// writes it); `from_parameters` gets the name of every reading that is set, for the
+// `conventions` diagnostic.
+void read_conventions(ParamReader& p, session::SessionOptions& s,
+                      std::set<std::string>& from_parameters) {
+  static const std::set<std::string> kReadAbove = {
+      "crc_coverage",     "ack_byte_order",   "laser_status_byte_order",
+      "gimbal_system_id", "camera_system_id", "angle_command_scale"};
+  for (const protocol::ConventionInfo& info : protocol::convention_table()) {
+    if (!p.has(info.name)) continue;
+    from_parameters.insert(info.name);
+    if (kReadAbove.count(info.name)) continue;
+    const std::string value = p.get<std::string>(info.name, info.default_value);
+    const Status set = info.set(info, {s.crc_coverage, s.codec}, value);
+    // The message starts with the reading's name, which fail() already gives.
+    if (!set) p.fail(info.name, set.message().substr(std::string(info.name).size() + 1));
+  }
+}
+
+}  // namespace
 
 Result<RosPodConfig> read_params(ParamReader& p) {
   RosPodConfig c;
@@ -47,6 +74,7 @@ Result<RosPodConfig> read_params(ParamReader& p) {
   s.codec.gimbal_address.system = static_cast<uint8_t>(p.number("gimbal_system_id", 3, 0, 255));
   s.codec.camera_address.system = static_cast<uint8_t>(p.number("camera_system_id", 4, 0, 255));
   s.codec.angle_command_scale = static_cast<int>(p.number("angle_command_scale", 100, 1, 1000));
+  read_conventions(p, s, d.conventions_from_parameters);
   s.ack_timeout = std::chrono::milliseconds(
       static_cast<int64_t>(1000 * p.number("ack_timeout", 0.3, 0.01, 10)));
   s.retries = static_cast<int>(p.number("retries", 2, 0, 10));

@@ -45,8 +45,12 @@ TargetLocator::TargetLocator(ros::NodeHandle nh, const ros::NodeHandle& private_
   };
   driver.on<protocol::LaserRangeAck>(range);
   driver.on<protocol::LaserPeriodicRangeStatus>(range);
-  driver.on<protocol::TargetGpsAck>(
-      [this](const protocol::TargetGpsAck& m, StampNs s) { record_.pod_target(m, s); });
+  // An OK answer at 0 deg, 0 deg is no target unless the pod's zeros are a position
+  // (laser_target_zeros, docs/protocol/decisions.md#conventions).
+  driver.on<protocol::TargetGpsAck>([this, zeros = driver.codec().conventions.laser_target_zeros](
+                                        const protocol::TargetGpsAck& m, StampNs s) {
+    if (!protocol::laser_target_no_return(m, zeros)) record_.pod_target(m, s);
+  });
   locate_pixel_ = nh.advertiseService("locate_pixel", &TargetLocator::locate_pixel, this);
   diagnostics.add_task("geolocation", [this](auto& stat) { diagnose(stat); });
 }

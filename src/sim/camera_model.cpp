@@ -131,13 +131,19 @@ Outcome CameraModel::take_photo(uint8_t lens_mode, const std::string& folder,
   job.folder = folder;
   job.name = name;
   job.resolution = static_cast<uint8_t>(visible_.photo_resolution);
+  if (self_timed(job)) job.next_shot_s = settings_.time_lapse_interval_s;
   job_ = job;
   return Outcome::kOk;
 }
 
+bool CameraModel::self_timed(const ShootingJob& job) const {
+  return config_.self_timer && job.mode == PhotoMode::kTimeLapse && !job.precise;
+}
+
 Outcome CameraModel::stop_photo() {
   // "Stop shooting (only valid in continuous shooting mode)".
-  if (!job_ || job_->precise || job_->mode == PhotoMode::kSingle) return Outcome::kFailure;
+  if (!job_ || job_->precise || job_->mode == PhotoMode::kSingle || self_timed(*job_))
+    return Outcome::kFailure;
   job_->stop_requested = true;
   return Outcome::kOk;
 }
@@ -286,9 +292,9 @@ void CameraModel::step_shooting(double dt_s, bool optics_busy, EventQueue& event
   job.next_shot_s -= dt_s;
   if (job.next_shot_s > 0) return;
 
-  const int planned = job.mode == PhotoMode::kBurst    ? settings_.burst_count
-                      : job.mode == PhotoMode::kSingle ? 1
-                                                       : 0;
+  const int planned = job.mode == PhotoMode::kBurst                       ? settings_.burst_count
+                      : job.mode == PhotoMode::kSingle || self_timed(job) ? 1
+                                                                          : 0;
   if (planned > 0 && job.taken >= planned) return finish_job(PhotoState::kTaken, events);
   const Outcome card = check_card_for(photo_size_mb(job.lens_mode, job.resolution));
   if (card != Outcome::kOk) return finish_job(photo_state_for(card, sd_.state()), events);
@@ -303,6 +309,7 @@ void CameraModel::step_shooting(double dt_s, bool optics_busy, EventQueue& event
       job.next_shot_s += config_.burst_interval_s;
       break;
     case PhotoMode::kTimeLapse:
+      if (self_timed(job)) break;  // the one photo is taken: the next step finishes the job
       events.push_back(
           PhotoStatusEvent{job.lens_mode, PhotoState::kTimeLapseInProgress, job.taken, false});
       job.next_shot_s += settings_.time_lapse_interval_s;

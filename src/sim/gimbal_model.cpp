@@ -209,11 +209,11 @@ void GimbalModel::step(double dt_s, EventQueue& events) {
     while (c.elapsed_s >= c.next_report_s && c.next_report_s < c.duration_s) {
       const double fraction = c.next_report_s / c.duration_s;
       events.push_back(MaintenanceEvent{MaintenanceState::kRepairing,
-                                        static_cast<uint8_t>(std::lround(fraction * 100))});
+                                        static_cast<uint8_t>(std::lround(fraction * 100)), true});
       c.next_report_s += 1.0;
     }
     if (c.elapsed_s >= c.duration_s) {
-      events.push_back(MaintenanceEvent{MaintenanceState::kSucceeded, 100});
+      events.push_back(MaintenanceEvent{MaintenanceState::kSucceeded, 100, true});
       calibration_.reset();
     }
   }

@@ -48,6 +48,20 @@ protocol::Payload data_ack(const Ack& ack, const protocol::CodecOptions& codec) 
   return *encoded;
 }
 
+// A data ACK as a pod following one of the document's open readings sends it
+// (protocol/convention_readings.h): `truth` must be valid, `played` (its bytes under the reading,
+// which may lie outside the document's ranges, e.g. a zero-based zoom code) is what goes out.
+template <class Ack>
+protocol::Payload played_ack(const Ack& truth, const Ack& played,
+                             const protocol::CodecOptions& codec) {
+  if (!truth.validate()) return code_ack(protocol::ResponseCode::kFailure, codec);
+  protocol::Payload payload;
+  protocol::ByteWriter writer(payload.bytes.data(), payload.bytes.size());
+  played.encode(writer, codec);
+  payload.size = writer.size();
+  return payload;
+}
+
 // Entry for a request whose ACK is the code only: `apply(pod, request)` returns the Outcome.
 template <class Req, class Apply>
 HandlerEntry plain(Apply apply) {

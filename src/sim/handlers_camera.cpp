@@ -84,8 +84,11 @@ p::TargetGpsAck target_position(RequestContext& ctx, const p::TargetGpsRequest& 
       ctx.pod.locate_target(host, YawPitchRoll{req.yaw_deg, req.pitch_deg, req.roll_deg});
   p::TargetGpsAck ack;
   ack.utc_time_ms = req.utc_time_ms;
-  if (!target) {  // no laser return: nothing to locate
-    ack.code = p::ResponseCode::kFailure;
+  if (!target) {
+    // No laser return: zeros with code OK, or a refusal from a pod whose zeros would be a
+    // position (laser_target_zeros, docs/protocol/decisions.md#conventions).
+    if (ctx.codec.conventions.laser_target_zeros == p::LaserTargetZeros::kPosition)
+      ack.code = p::ResponseCode::kFailure;
     return ack;
   }
   ack.latitude_deg = target->latitude_deg;

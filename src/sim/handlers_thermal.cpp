@@ -1,6 +1,7 @@
 // Thermal camera requests (section 3.2.2).
 #include "code_mapping.h"
 #include "handler_support.h"
+#include "k40t_driver/protocol/convention_readings.h"
 #include "k40t_driver/protocol/messages/thermal.h"
 
 namespace k40t::sim {
@@ -14,9 +15,22 @@ std::optional<double> alarm_limit(bool on, double degC) {
   return on ? std::optional<double>(degC) : std::nullopt;
 }
 
-// The read-all ACK is what the model keeps (thermal_model.h): every handler below writes it.
-p::ThermalSettingsAck read_all(RequestContext& ctx, const p::ThermalReadSettingsRequest&) {
-  return ctx.pod.thermal().settings().reported;
+// The read-all ACK is what the model keeps (thermal_model.h): every handler below writes it. The
+// enhancement byte and the zoom code go out as the pod's readings say
+// (docs/protocol/decisions.md#conventions: enhancement_switch, thermal_zoom_code).
+HandlerEntry read_all() {
+  using Req = p::ThermalReadSettingsRequest;
+  return {Req::kId, [](RequestContext& ctx, const p::FrameView& frame) {
+            const Decoded<Req> d = decode<Req>(frame, ctx.codec);
+            if (!d.request) return code_ack(d.refusal, ctx.codec);
+            const p::ThermalSettingsAck& truth = ctx.pod.thermal().settings().reported;
+            const p::Conventions& c = ctx.codec.conventions;
+            p::ThermalSettingsAck played = truth;
+            p::enhancement_to_wire(played, truth.enhancement_on ? truth.enhancement_level : 0,
+                                   c.enhancement_switch);
+            played.zoom_x = p::thermal_zoom_to_wire(truth.zoom_x, c.thermal_zoom_code);
+            return played_ack(truth, played, ctx.codec);
+          }};
 }
 
 p::ThermalSettingsAck& reported(PodModel& pod) {
@@ -32,7 +46,7 @@ HandlerEntry thermal_setting(Field p::ThermalSettingsAck::*field, Value Req::*va
 }  // namespace
 
 void add_thermal_handlers(std::vector<HandlerEntry>& out) {
-  out.push_back(with_data<p::ThermalReadSettingsRequest>(read_all));
+  out.push_back(read_all());
   out.push_back(plain<p::ThermalZoomRequest>([](PodModel& pod, const p::ThermalZoomRequest& req) {
     return pod.thermal().set_digital_zoom(req.zoom_x);
   }));

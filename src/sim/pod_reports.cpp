@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "code_mapping.h"
+#include "k40t_driver/protocol/convention_readings.h"
 #include "k40t_driver/protocol/messages/camera.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/protocol/messages/laser.h"
@@ -62,6 +63,9 @@ Result<p::Payload> gimbal_attitude(const PodModel& pod, const p::CodecOptions& c
   report.yaw_rate_deg_s = pose.rate_deg_s.yaw;
   report.pitch_rate_deg_s = pose.rate_deg_s.pitch;
   report.roll_rate_deg_s = pose.rate_deg_s.roll;
+  // The pod's signs and yaw range (docs/protocol/decisions.md#conventions); the model's pose
+  // stays in true terms (right, up, right-down positive).
+  p::attitude_to_wire(report, codec.conventions);
   return encode(report, codec);
 }
 
@@ -78,13 +82,10 @@ Result<p::Payload> camera_system_status(const PodModel& pod, const p::CodecOptio
   report.time_lapse_interval_s = s.time_lapse_interval_s;
   report.burst_count = s.burst_count;
   report.sd_state = same_code<p::SdCardState>(sd.state());
-  // The wire counts 10 MB; round down so used + free never exceeds total.
-  const auto tens = [](double mb) {
-    return std::floor(mb / p::kSdCapacityUnitMb) * p::kSdCapacityUnitMb;
-  };
-  report.sd_total_mb = tens(sd.capacity_mb());
-  report.sd_free_mb = tens(sd.free_mb());
-  report.sd_used_mb = tens(sd.used_mb());
+  // Counts of the pod's unit (sd_capacity_unit), rounded down so used + free never exceeds total.
+  report.sd_total_mb = p::sd_capacity_to_wire(sd.capacity_mb(), codec.conventions);
+  report.sd_free_mb = p::sd_capacity_to_wire(sd.free_mb(), codec.conventions);
+  report.sd_used_mb = p::sd_capacity_to_wire(sd.used_mb(), codec.conventions);
   return encode(report, codec);
 }
 
@@ -119,7 +120,9 @@ Result<p::Payload> visible_status(const PodModel& pod, const p::CodecOptions& co
   report.zoom_x = pod.zoom().zoom();
   report.ev = same_code<p::ExposureValue>(exposure.ev_code);
   report.iso_db = exposure.iso_db;
-  report.shutter_us = static_cast<uint16_t>(std::lround(exposure.shutter_us));
+  // 1/4, 1/8 and 1/15 s do not fit 16 bits of microseconds: what goes out is shutter_field's
+  // (saturated by default, never wrapped unless the reading says so).
+  report.shutter_us = p::shutter_to_wire(exposure.shutter_us, codec.conventions.shutter_field);
   report.ae_lock_on = pod.camera().visible().ae_lock_on;
   report.focusing = pod.zoom().focusing();
   // The document gives this field no unit; read as 0.01 mm like the focal length.
@@ -179,6 +182,9 @@ struct EventEncoder {
     return send(frame);
   }
   std::optional<OutgoingMessage> operator()(const MaintenanceEvent& e) const {
+    // A pod whose calibrations end with their ACK never reports them here.
+    if (e.calibration && codec.conventions.calibration_end == p::CalibrationEnd::kAck)
+      return std::nullopt;
     p::CameraUpgradeStatus report;
     report.state = same_code<p::CameraUpgradeState>(e.state);
     report.progress_percent = e.progress;

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "k40t_driver/protocol/catalogue.h"
+#include "k40t_driver/protocol/convention_readings.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/flight_controller.h"
 #include "k40t_driver/sim/request_handlers.h"
@@ -30,10 +31,19 @@ void print_frame(const char* direction, const protocol::FrameView& frame) {
 
 }  // namespace
 
+namespace {
+// The model's part of the readings the pod follows (the rest is in how it encodes).
+PodConfig played_config(const SimOptions& o) {
+  PodConfig config = o.pod;
+  config.camera.self_timer = o.codec.conventions.photo_mode_2 == protocol::PhotoMode2::kSelfTimer;
+  return config;
+}
+}  // namespace
+
 PodServer::PodServer(SimOptions options)
     : options_(std::move(options)),
       faults_(options_.seed, options_.crc_coverage),
-      pod_(options_.pod) {
+      pod_(played_config(options_)) {
   faults_.set_settings(options_.faults);
   if (options_.sd_condition) set_sd_condition(pod_.camera().sd(), *options_.sd_condition);
 }
@@ -156,10 +166,18 @@ void PodServer::send(const std::vector<Outgoing>& out) {
 
 void PodServer::ask_for_gps(const GpsRequestEvent& event) {
   protocol::CameraGpsRequest request;
-  request.hour = event.time.hour;
-  request.minute = event.time.minute;
-  request.second = event.time.second;
-  request.millisecond = event.time.millisecond;
+  // The photo's UTC time of day, in the pod's zone if it reads so (gps_request_time,
+  // docs/protocol/decisions.md#conventions).
+  const int64_t utc_ms_of_day =
+      ((event.time.hour * 60 + event.time.minute) * 60 + event.time.second) * int64_t{1000} +
+      event.time.millisecond;
+  int32_t minutes_west = 0;
+  {
+    std::lock_guard<std::mutex> lock(model_mutex_);
+    minutes_west = pod_.camera().clock().minutes_west();
+  }
+  protocol::gps_request_time_to_wire(request, utc_ms_of_day,
+                                     options_.codec.conventions.gps_request_time, minutes_west);
   Result<protocol::Payload> payload = protocol::encode_payload(request, options_.codec);
   if (!payload) return;
   const uint64_t photo_id = event.photo_id;
@@ -167,8 +185,8 @@ void PodServer::ask_for_gps(const GpsRequestEvent& event) {
       protocol::CameraGpsRequest::kId, *payload, protocol::kFlightControllerAddress,
       [this, photo_id](const session::AckResult& result) {
         if (!result.ok()) return;  // no GPS: the photo keeps no position
-        auto ack = protocol::decode_payload<protocol::CameraGpsAck>(
-            result.payload.data(), result.payload.size(), options_.codec);
+        auto ack = protocol::decode_gps_answer(result.payload.data(), result.payload.size(),
+                                               options_.codec);
         if (!ack) return;
         GpsAnswer answer;
         answer.echoed = {ack->hour, ack->minute, ack->second, ack->millisecond};

@@ -1,5 +1,6 @@
 #include "k40t_driver/sim/sim_options.h"
 
+#include "k40t_driver/protocol/conventions.h"
 #include "k40t_driver/sim/number_text.h"
 #include "k40t_driver/sim/option_kinds.h"
 
@@ -58,6 +59,16 @@ const std::vector<OptionSpec>& option_table() {
           "--gimbal-system-id", "N",
           "docs/protocol/decisions.md#a3: system id the gimbal answers from (default 3)", 1, 255,
           [](SimOptions& o) -> uint8_t& { return o.codec.gimbal_address.system; }),
+      {"--convention", "NAME=VALUE",
+       "one of the document's open readings the pod follows (docs/protocol/decisions.md"
+       "#conventions; repeatable; the names of k40t probe and the driver's parameters); not "
+       "auto: a pod has one reading",
+       [](SimOptions& o, const std::string& option, const std::string& v) {
+         if (v.size() > 5 && v.compare(v.size() - 5, 5, "=auto") == 0)
+           return Status::fail(option + " " + v + ": a pod has one reading, not auto");
+         const Status set = protocol::set_convention_assignment({o.crc_coverage, o.codec}, v);
+         return set ? set : Status::fail(option + ": " + set.message());
+       }},
       Kinds::number<double>("--ground-height", "M",
                             "flat ground this far below the pod (default 30 m)", 1.0, 10000.0,
                             [](SimOptions& o) -> double& { return o.pod.world.ground_height_m; }),

@@ -6,8 +6,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 #include "k40t_driver/geo/geodesy.h"
+#include "k40t_driver/protocol/convention_readings.h"
 #include "k40t_driver/protocol/messages/flight_controller.h"
 #include "pod_driver_test_support.h"
 
@@ -81,9 +83,11 @@ double distance_m(const protocol::CameraGpsAck& ack, const geo::Geodetic& truth)
 
 // A driver linked to `pod` that has been fed the whole flight.
 std::unique_ptr<PodDriver> flown_driver(FakePod& pod, const std::string& pty, bool match,
-                                        const Flight& flight) {
+                                        const Flight& flight,
+                                        const std::function<void(DriverOptions&)>& tweak = {}) {
   DriverOptions o = options_for(pty);
   o.geotag_time_match = match;
+  if (tweak) tweak(o);
   std::unique_ptr<PodDriver> driver = started_driver(pod, o, system_now_ns);
   flight.feed(*driver);
   return driver;
@@ -142,6 +146,44 @@ TEST(GeotagTimeMatch, WithoutMatchingTheLatestStateAnswers) {
   std::printf("latest-state geotag error at 15 m/s, 200 ms late: %.3f m\n", error);
   EXPECT_NEAR(error, kSpeed * 0.2, 0.1);
   EXPECT_EQ(driver->stats().gps_requests_time_matched, 0u);
+}
+
+// gps_request_time and gps_answer_byte_order (docs/protocol/decisions.md#conventions): a pod in
+// UTC+2 (tz_minuteswest -120, which the driver's time syncs give it) asking in its local time,
+// and reading the answer's data low byte first.
+TEST(GeotagTimeMatch, APodAskingInLocalTimeGetsThePhotosState) {
+  const std::string pty = unique_pty("geotag_local");
+  FakePod pod(pty);
+  const Flight flight;
+  std::unique_ptr<PodDriver> driver = flown_driver(pod, pty, true, flight, [](DriverOptions& o) {
+    o.time_zone_minutes_west = -120;
+    o.session.codec.conventions.gps_request_time = protocol::GpsRequestTime::kLocal;
+    o.session.codec.conventions.gps_answer_byte_order = protocol::GpsAnswerByteOrder::kLittle;
+  });
+  const StampNs photo = flight.start + 1550 * kMs;
+  const int64_t local_ms = photo / kMs + 2 * 3600 * 1000;
+  pod.send(request_at(local_ms));
+  pod.wait_for(FakePod::count_of(protocol::CameraGpsAck::kId, 1), milliseconds(3000));
+  const std::vector<SentFrame> acks = pod.frames_with_id(protocol::CameraGpsAck::kId);
+  ASSERT_EQ(acks.size(), 1u);
+  Result<protocol::CameraGpsAck> ack =
+      protocol::decode_gps_answer(acks[0].payload.data(), acks[0].payload.size(), driver->codec());
+  ASSERT_TRUE(ack) << ack.error();
+  EXPECT_EQ(ack->code, protocol::ResponseCode::kOk);
+  EXPECT_EQ(ack->millisecond, request_at(local_ms).millisecond);  // echoed, low byte first
+  EXPECT_LT(distance_m(*ack, flight.truth(photo)), 0.1);
+  EXPECT_EQ(driver->stats().gps_requests_out_of_history, 0u);
+}
+
+TEST(GeotagTimeMatch, ALocalTimeReadAsUtcMissesTheHistory) {
+  const std::string pty = unique_pty("geotag_local_as_utc");
+  FakePod pod(pty);
+  const Flight flight;
+  std::unique_ptr<PodDriver> driver = flown_driver(
+      pod, pty, true, flight, [](DriverOptions& o) { o.time_zone_minutes_west = -120; });
+  const StampNs photo = flight.start + 1550 * kMs;
+  ask(pod, request_at(photo / kMs + 2 * 3600 * 1000), 1);
+  EXPECT_EQ(driver->stats().gps_requests_out_of_history, 1u);
 }
 
 }  // namespace

@@ -147,11 +147,69 @@ TEST(GimbalCalibration, FailedStateAndBadGoals) {
   ASSERT_TRUE(c);
   c->tracker().acknowledged(true, "ok");
   p::CameraUpgradeStatus status;
+  status.state = p::CameraUpgradeState::kRepairing;
+  c->on_status(status);
   status.state = p::CameraUpgradeState::kFailed;
   c->on_status(status);
   EXPECT_EQ(c->tracker().phase(), Phase::kFailed);
   EXPECT_FALSE(GimbalCalibration::create(7, 0, 0));
   EXPECT_FALSE(GimbalCalibration::create(0, -2, 0));
+}
+
+p::CameraUpgradeStatus upgrade_frame(p::CameraUpgradeState state) {
+  p::CameraUpgradeStatus status;
+  status.state = state;
+  status.progress_percent = state == p::CameraUpgradeState::kSucceeded ? 100 : 50;
+  return status;
+}
+
+// calibration_end (docs/protocol/decisions.md#conventions): a pod that ends a calibration with
+// its ACK alone.
+TEST(GimbalCalibrationEnd, AckEndsItAtTheAck) {
+  Result<GimbalCalibration> c = GimbalCalibration::create(0, 0, 0, p::CalibrationEnd::kAck);
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->tracker().check(0.1), Phase::kRunning);
+  c->tracker().acknowledged(true, "ok");
+  EXPECT_EQ(c->tracker().phase(), Phase::kSucceeded);
+  EXPECT_EQ(c->tracker().reason(),
+            "gimbal drift calibration: done (the OK ACK, calibration_end: ack)");
+}
+
+TEST(GimbalCalibrationEnd, AutoWithout0x000008EndsWithinTwoSecondsOfTheAck) {
+  Result<GimbalCalibration> c = GimbalCalibration::create(0, 0, 10, p::CalibrationEnd::kAuto);
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->tracker().check(12), Phase::kRunning);  // no ACK yet: nothing ends it
+  c->tracker().acknowledged(true, "ok");
+  EXPECT_EQ(c->tracker().check(12.05), Phase::kRunning);
+  // An idle pod's "succeeded", or a TF upgrade's, is not this calibration's.
+  c->on_status(upgrade_frame(p::CameraUpgradeState::kSucceeded));
+  EXPECT_EQ(c->tracker().check(13.5), Phase::kRunning);
+  EXPECT_EQ(c->tracker().check(13.6), Phase::kSucceeded);
+  EXPECT_NE(c->tracker().reason().find("calibration_end: auto"), std::string::npos);
+}
+
+TEST(GimbalCalibrationEnd, AutoWithRepairingWaitsForItsEnd) {
+  Result<GimbalCalibration> c = GimbalCalibration::create(2, 0, 0, p::CalibrationEnd::kAuto);
+  ASSERT_TRUE(c);
+  c->tracker().acknowledged(true, "ok");
+  EXPECT_EQ(c->tracker().check(0.1), Phase::kRunning);
+  c->on_status(upgrade_frame(p::CameraUpgradeState::kRepairing));
+  EXPECT_EQ(c->tracker().check(5), Phase::kRunning);
+  c->on_status(upgrade_frame(p::CameraUpgradeState::kSucceeded));
+  EXPECT_EQ(c->tracker().phase(), Phase::kSucceeded);
+}
+
+TEST(GimbalCalibrationEnd, StatusIgnoresAnUpgradesEndAndNeverEndsQuietly) {
+  Result<GimbalCalibration> c = GimbalCalibration::create(1, 0, 0, p::CalibrationEnd::kStatus);
+  ASSERT_TRUE(c);
+  c->tracker().acknowledged(true, "ok");
+  c->on_status(upgrade_frame(p::CameraUpgradeState::kUpgrading));
+  c->on_status(upgrade_frame(p::CameraUpgradeState::kSucceeded));
+  c->on_status(upgrade_frame(p::CameraUpgradeState::kFailed));
+  EXPECT_EQ(c->tracker().check(30), Phase::kRunning);
+  c->on_status(upgrade_frame(p::CameraUpgradeState::kRepairing));
+  c->on_status(upgrade_frame(p::CameraUpgradeState::kSucceeded));
+  EXPECT_EQ(c->tracker().phase(), Phase::kSucceeded);
 }
 
 }  // namespace

@@ -22,7 +22,7 @@ const char* kLaserAckHex = "FD 04 01 01 00 04 01 00 04 01 00 00 00 7B 82 9E";
 TEST(K40tTool, HelpForTheToolAndEachCommand) {
   const ToolRun tool = run_k40t("--help");
   EXPECT_EQ(tool.exit_code, 0);
-  for (const char* command : {"decode", "monitor", "send", "list"}) {
+  for (const char* command : {"decode", "monitor", "send", "list", "probe"}) {
     EXPECT_NE(tool.out.find(std::string("  ") + command), std::string::npos) << command;
     const ToolRun help = run_k40t(std::string(command) + " --help");
     EXPECT_EQ(help.exit_code, 0) << command;

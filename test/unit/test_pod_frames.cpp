@@ -27,5 +27,26 @@ TEST(Rep103, CommandsGoBackToThePodsSigns) {
   EXPECT_NEAR(back.pitch_deg, 45.0, kEps);
 }
 
+// attitude_order (docs/protocol/decisions.md#conventions) at roll 90, pitch 90 (REP 103 angles).
+// By hand: Ry(90) Rx(90) takes x to -z, the 120 deg turn about (1, 1, -1): (1/2, 1/2, -1/2, 1/2);
+// Rx(90) Ry(90) takes x to y, the 120 deg turn about (1, 1, 1): (1/2, 1/2, 1/2, 1/2).
+TEST(AttitudeOrder, ZyxAndZxyComposeDifferently) {
+  const Rep103Angles a{0.0, M_PI / 2, M_PI / 2};
+  const Quaternion zyx = attitude_rotation(a, protocol::AttitudeOrder::kZyx);
+  EXPECT_NEAR(zyx.x, 0.5, kEps);
+  EXPECT_NEAR(zyx.y, 0.5, kEps);
+  EXPECT_NEAR(zyx.z, -0.5, kEps);
+  EXPECT_NEAR(zyx.w, 0.5, kEps);
+  const Quaternion zxy = attitude_rotation(a, protocol::AttitudeOrder::kZxy);
+  EXPECT_NEAR(zxy.x, 0.5, kEps);
+  EXPECT_NEAR(zxy.y, 0.5, kEps);
+  EXPECT_NEAR(zxy.z, 0.5, kEps);
+  EXPECT_NEAR(zxy.w, 0.5, kEps);
+  // Yaw alone: the same in both orders, a turn about z.
+  const Quaternion yaw = attitude_rotation({M_PI / 2, 0.0, 0.0}, protocol::AttitudeOrder::kZxy);
+  EXPECT_NEAR(yaw.z, std::sqrt(0.5), kEps);
+  EXPECT_NEAR(yaw.w, std::sqrt(0.5), kEps);
+}
+
 }  // namespace
 }  // namespace k40t::driver

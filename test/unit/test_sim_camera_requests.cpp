@@ -205,8 +205,15 @@ TEST_F(SimCameraRequests, TargetPositionFollowsTheLaser) {
   const auto request = message_from_text<p::TargetGpsRequest>(
       "latitude_deg=47.0 longitude_deg=8.0 relative_height_m=30 altitude_m=530 "
       "utc_time_ms=1741064767089");
-  // Gimbal level: the laser sees the horizon, no return.
+  // Gimbal level: the laser sees the horizon, no return: zeros with code OK (laser_target_zeros:
+  // no_return, the default), or a refusal from a pod whose zeros would be a position.
+  const auto none = h.ask(request);
+  EXPECT_EQ(none.code, ResponseCode::kOk);
+  EXPECT_EQ(none.latitude_deg, 0.0);
+  EXPECT_EQ(none.longitude_deg, 0.0);
+  h.codec.conventions.laser_target_zeros = p::LaserTargetZeros::kPosition;
   EXPECT_EQ(h.ask(request).code, ResponseCode::kFailure);
+  h.codec.conventions.laser_target_zeros = p::LaserTargetZeros::kNoReturn;
   ASSERT_EQ(h.pod.gimbal().command_angles(-90.0, std::nullopt), Outcome::kOk);
   h.run(5.0);
   const auto target = h.ask(request);

@@ -93,7 +93,7 @@ TEST(SimGroundTruth, TheFlightDataOfTheLastTargetRequestIsKept) {
   request.heading_deg = 271.5;
   request.airspeed_m_s = 13.0;
   request.throttle_percent = 40.0;
-  harness.send(request);  // no laser return at the start: a failure ACK, but received
+  harness.send(request);  // no laser return at the start: zeros, but received
   request.ground_speed_m_s = 7.25;
   harness.send(request);
   const ReceivedFlightData& got = harness.pod.ground_truth().received_flight_data();

@@ -103,11 +103,33 @@ TEST(SimOptions, BadArgumentsAreNamed) {
   EXPECT_NE(parse_sim_options({"--sd", "wet"}).error().find("wet"), std::string::npos);
 }
 
+// docs/protocol/decisions.md#conventions: the readings the pod follows, by the names of the
+// driver's parameters; a bad name or value is refused with what is accepted.
+TEST(SimOptions, ConventionsAreRepeatableAndCheckedByName) {
+  Result<SimOptions> o =
+      parse_sim_options({"--convention", "yaw_sign=left", "--convention", "sd_capacity_unit=0.1mb",
+                         "--convention=ack_byte_order=little"});
+  ASSERT_TRUE(o) << o.error();
+  EXPECT_EQ(o->codec.conventions.yaw_sign, protocol::YawSign::kLeft);
+  EXPECT_EQ(o->codec.conventions.sd_capacity_unit, protocol::SdCapacityUnit::kTenthMb);
+  EXPECT_EQ(o->codec.ack_byte_order, protocol::ByteOrder::kLittle);
+  EXPECT_EQ(parse_sim_options({"--convention", "yaw_sign=up"}).error(),
+            "--convention: yaw_sign must be right or left, got 'up'");
+  EXPECT_NE(
+      parse_sim_options({"--convention", "yaw_sing=left"}).error().find("no convention named"),
+      std::string::npos);
+  EXPECT_NE(parse_sim_options({"--convention", "yaw_range=auto"}).error().find("not auto"),
+            std::string::npos);
+  EXPECT_NE(parse_sim_options({"--convention", "yaw_sign"}).error().find("NAME=VALUE"),
+            std::string::npos);
+}
+
 TEST(SimOptions, UsageListsEveryOption) {
   const std::string usage = sim_usage();
-  for (const char* option : {"--link", "--crc-coverage", "--ack-byte-order", "--corrupt-rate",
-                             "--garbage-rate", "--drop-ack-rate", "--delay-ack-ms", "--silence",
-                             "--disconnect", "--seq-jump", "--capture", "--control", "--help"}) {
+  for (const char* option :
+       {"--link", "--crc-coverage", "--ack-byte-order", "--corrupt-rate", "--garbage-rate",
+        "--drop-ack-rate", "--delay-ack-ms", "--silence", "--disconnect", "--seq-jump", "--capture",
+        "--control", "--convention", "--help"}) {
     EXPECT_NE(usage.find(option), std::string::npos) << option;
   }
 }

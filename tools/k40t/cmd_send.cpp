@@ -1,12 +1,11 @@
 // k40t send: one request over a link, the decoded ACK (or why none came) back.
 #include <chrono>
-#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
-#include <mutex>
 #include <string>
 
 #include "command.h"
+#include "connection_waiter.h"
 #include "frame_text.h"
 #include "input.h"
 #include "k40t_driver/protocol/catalogue.h"
@@ -87,36 +86,6 @@ Result<Request> build_request(const ParsedArgs& args, const protocol::CodecOptio
   request.payload = encoded.value();
   return request;
 }
-
-// Waits until the transport reports a connection (serial and network links connect in the
-// background after open()), or until it finds the device held by another program.
-class ConnectionWaiter {
- public:
-  void update(transport::LinkState state, const std::string& reason) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    connected_ = state == transport::LinkState::kConnected;
-    if (!reason.empty()) last_reason_ = reason;
-    changed_.notify_all();
-  }
-  bool wait(std::chrono::milliseconds deadline, const session::Session& session) {
-    std::unique_lock<std::mutex> lock(mutex_);
-    const bool woken = changed_.wait_for(lock, deadline, [&] {
-      return connected_ || session.link_state() == transport::LinkState::kConnected ||
-             session.stats().link.device_busy;
-    });
-    return woken && !session.stats().link.device_busy;
-  }
-  std::string last_reason() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return last_reason_;
-  }
-
- private:
-  mutable std::mutex mutex_;
-  std::condition_variable changed_;
-  bool connected_ = false;
-  std::string last_reason_;
-};
 
 int run_send(const Command& self, const ParsedArgs& args) {
   Result<WireOptions> wire = wire_options(args);

@@ -70,6 +70,7 @@ const Command& decode_command();
 const Command& monitor_command();
 const Command& send_command();
 const Command& list_command();
+const Command& probe_command();
 // Runs `program` of the ROS build with `arguments` in place of this process (ros_program.cpp);
 // returns only when it cannot, after saying why (`command`: the subcommand, for the message).
 int run_ros_program(const std::string& program, const std::string& command, const char* argv0,

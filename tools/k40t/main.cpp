@@ -1,5 +1,5 @@
-// k40t: the K40T pod's command-line tool (ROS-free). Subcommands: decode, monitor, send, list;
-// bag runs the ROS build's k40t_bag (ros_program.cpp).
+// k40t: the K40T pod's command-line tool (ROS-free). Subcommands: decode, monitor, send, list,
+// probe; bag runs the ROS build's k40t_bag (ros_program.cpp).
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -10,7 +10,8 @@ namespace k40t::tool {
 namespace {
 
 std::vector<const Command*> commands() {
-  return {&decode_command(), &monitor_command(), &send_command(), &list_command()};
+  return {&decode_command(), &monitor_command(), &send_command(), &list_command(),
+          &probe_command()};
 }
 
 void print_tool_help() {

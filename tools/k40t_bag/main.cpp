@@ -41,6 +41,12 @@ Result<driver::RosPodConfig> read_config(const ParsedArgs& args) {
     if (!loaded) return Result<driver::RosPodConfig>::fail(loaded.error());
     params = loaded.value();
   }
+  // The open readings on top (docs/protocol/decisions.md#conventions), as k40t.launch loads them.
+  if (args.has("--conventions")) {
+    Result<XmlRpc::XmlRpcValue> loaded = driver::load_yaml_params(args.options.at("--conventions"));
+    if (!loaded) return Result<driver::RosPodConfig>::fail(loaded.error());
+    for (auto& [name, value] : loaded.value()) params[name] = value;
+  }
   driver::ParamReader reader(params, "~");
   return driver::read_params(reader);
 }
@@ -154,7 +160,8 @@ int run_bag(const Command& self, const ParsedArgs& args) {
 const Command& bag_command() {
   static const Command command{
       "bag",
-      "bag BAG... [--out-dir DIR | --output FILE] [--config FILE] [--jsonl FILE] [--csv DIR]",
+      "bag BAG... [--out-dir DIR | --output FILE] [--config FILE] [--conventions FILE] "
+      "[--jsonl FILE] [--csv DIR]",
       "recorded flights -> bags of the decoded topics, at full speed (ROS build)",
       "Decodes the raw frames (<ns>/raw/rx, k40t_driver/Frame) of each BAG as replay.launch\n"
       "would, without a ROS master and at full speed, and writes every topic the driver\n"
@@ -170,6 +177,9 @@ const Command& bag_command() {
        {"--config", "FILE",
         "the driver's parameters as a YAML file (e.g. config/k40t.yaml, as the flight's "
         "driver had them: frame ids, offsets, byte orders); default: the built-in defaults"},
+       {"--conventions", "FILE",
+        "the open readings the pod followed (docs/protocol/decisions.md#conventions), a YAML "
+        "file as k40t probe writes it; read after --config, whose values it overrides"},
        {"--frame-prefix", "[NS=]PREFIX,...",
         "frame and joint prefix the pods were recorded with, as replay.launch's frame_prefix: "
         "one for every pod, or per namespace (/pod_a=pod_a_,/pod_b=pod_b_)"},

@@ -2,6 +2,7 @@
 // it from parameters (ros_params.h); tests and benchmarks fill it directly.
 #pragma once
 
+#include <set>
 #include <string>
 
 #include "k40t_driver/session/session.h"
@@ -20,8 +21,12 @@ struct DriverOptions {
   // how long after the pod's return the topics resume.
   double reconnect_max_delay_s = 1.0;
 
-  // Codec decisions (docs/protocol/decisions.md#a1 to #a5), ACK timeout and retries.
+  // Codec decisions (docs/protocol/decisions.md#a1 to #a5), ACK timeout and retries. The open
+  // readings (decisions.md#conventions) are session.codec.conventions.
   session::SessionOptions session;
+  // The readings the user set (parameters, a conventions file); the others are defaults. Only for
+  // the `conventions` diagnostic's "where it came from".
+  std::set<std::string> conventions_from_parameters;
 
   // Seconds between time syncs (0x00030E, docs/protocol/decisions.md#a8); 0 disables.
   double time_sync_period_s = 10.0;

@@ -29,6 +29,7 @@
 #include <thread>
 #include <vector>
 
+#include "k40t_driver/driver/convention_tracker.h"
 #include "k40t_driver/driver/driver_options.h"
 #include "k40t_driver/driver/link_monitor.h"
 #include "k40t_driver/driver/rate_commander.h"
@@ -74,6 +75,8 @@ class PodDriver {
   PodDriver& operator=(const PodDriver&) = delete;
 
   // --- register before start() -------------------------------------------------------------
+  // Handlers get the true values: the open readings (docs/protocol/decisions.md#conventions) are
+  // applied to 0x000002, 0x000003 and ACK 0x010100 (ConventionTracker::applied).
   template <class Msg>
   void on(std::function<void(const Msg&, StampNs)> handler);
   void on_rx_frame(FrameHandler handler);  // every good frame received
@@ -137,12 +140,17 @@ class PodDriver {
   bool replay() const { return options_.replay; }
   const DriverOptions& options() const { return options_; }
   const protocol::CodecOptions& codec() const { return options_.session.codec; }
+  // The open readings in force, where they came from, and what the traffic said against them.
+  const ConventionTracker& conventions() const { return conventions_; }
+  std::vector<ConventionStatus> conventions_report();
 
  private:
   PodDriver(DriverOptions options, Clock clock);
   session::Dispatcher& dispatcher();
   session::AckResult not_sent_in_replay() const;
   void handle_rx_frame(const protocol::FrameView& frame);
+  void observe_sent(const protocol::FrameView& frame);      // gimbal commands, for the sign checks
+  void observe_received(const protocol::FrameView& frame);  // calibration ACKs
   void handle_link_state(transport::LinkState state, const std::string& reason);
   void deliver(const std::optional<PodLinkReport>& report);
   bool shutdown_explains_loss();
@@ -157,6 +165,7 @@ class PodDriver {
 
   DriverOptions options_;
   Clock clock_;
+  ConventionTracker conventions_;
   std::unique_ptr<session::Session> session_;      // live mode
   std::unique_ptr<session::Dispatcher> replayer_;  // replay mode
   double seconds_per_byte_ = 0;
@@ -198,7 +207,11 @@ template <class Msg>
 void PodDriver::on(std::function<void(const Msg&, StampNs)> handler) {
   dispatcher().on<Msg>(
       [this, handler = std::move(handler)](const Msg& message, const protocol::FrameView&) {
-        handler(message, current_stamp_);
+        if constexpr (ConventionTracker::kApplies<Msg>) {
+          handler(conventions_.applied(message), current_stamp_);
+        } else {
+          handler(message, current_stamp_);
+        }
       });
 }
 
@@ -214,7 +227,15 @@ Result<typename Req::Ack> PodDriver::request_typed(const Req& request, session::
     if (raw) *raw = not_sent_in_replay();
     return Result<typename Req::Ack>::fail(not_sent_in_replay().message);
   }
-  return session_->request_typed(request, raw);
+  Result<typename Req::Ack> ack = session_->request_typed(request, raw);
+  if constexpr (ConventionTracker::kApplies<typename Req::Ack>) {
+    if (!ack) return ack;
+    if constexpr (std::is_same_v<typename Req::Ack, protocol::ThermalSettingsAck>)
+      conventions_.observe_thermal_settings(*ack);
+    return conventions_.applied(*ack);
+  } else {
+    return ack;
+  }
 }
 
 template <class Req>

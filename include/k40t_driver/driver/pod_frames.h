@@ -6,6 +6,8 @@
 #include <array>
 #include <string>
 
+#include "k40t_driver/protocol/convention_values.h"
+
 namespace k40t::driver {
 
 // Gimbal angles or rates in REP 103 convention, radians (per second).
@@ -17,6 +19,18 @@ struct Rep103Angles {
 // The pod's degrees (yaw right-positive, pitch up-positive) in REP 103 radians (yaw
 // left-positive, pitch down-positive); roll keeps its sign.
 Rep103Angles rep103_from_pod(double yaw_deg, double roll_deg, double pitch_deg);
+
+// A rotation as a unit quaternion (x, y, z, w).
+struct Quaternion {
+  double x = 0;
+  double y = 0;
+  double z = 0;
+  double w = 1;
+};
+// The rotation of 0x000002's attitude angles (in REP 103 terms) composed in the order the pod
+// means (attitude_order, docs/protocol/decisions.md#conventions): zyx = Rz(yaw) Ry(pitch)
+// Rx(roll), the aerospace order; zxy = Rz(yaw) Rx(roll) Ry(pitch), the joint chain's order.
+Quaternion attitude_rotation(const Rep103Angles& angles, protocol::AttitudeOrder order);
 
 // The inverse, for commands (gimbal/cmd_angle, gimbal/cmd_rate): REP 103 radians (per second) ->
 // the pod's degrees (per second).

@@ -64,25 +64,37 @@ enum class CalibrationKind : uint8_t { kDrift = 0, kLinear = 1, kAccelerometer =
 // gimbal/calibrate service.
 Result<CalibrationKind> calibration_kind(int kind);
 
-// The pod reports a calibration's progress in 0x000008 (section 3.2.1.4) as "repairing" with a
-// percentage, then "succeeded" or "failed"; 0x000001 has no calibration field. "Upgrading" frames
-// belong to a TF-card upgrade and are ignored.
+// A pod that reports calibrations in 0x000008 (section 3.2.1.4, the camera's upgrade/repair
+// report) sends "repairing" with a percentage, then "succeeded" or "failed"; 0x000001 has no
+// calibration field. "Upgrading" frames belong to a TF-card upgrade and are ignored.
 std::optional<Step> calibration_step(const protocol::CameraUpgradeStatus& status);
 
+// How it ends is the reading calibration_end (docs/protocol/decisions.md#conventions): the
+// document gives the calibrations only an ACK.
+//   - status: 0x000008 "succeeded"/"failed" after a "repairing" of its own (so an upgrade's end,
+//     or an idle pod's "succeeded", never ends it);
+//   - ack: the OK ACK is the end;
+//   - auto: like status if a "repairing" comes within kQuietS of the OK ACK, else done then.
 class GimbalCalibration : public TrackedOperation {
  public:
   static constexpr double kDefaultTimeoutS = 60;  // the calibrations take seconds (drift ~5 s)
+  static constexpr double kQuietS = 1.5;          // auto: "no 0x000008 for it" (report is 1 Hz)
 
-  static Result<GimbalCalibration> create(int kind, double timeout_s, double now_s);
+  static Result<GimbalCalibration> create(
+      int kind, double timeout_s, double now_s,
+      protocol::CalibrationEnd end = protocol::CalibrationEnd::kAuto);
 
   CalibrationKind kind() const { return kind_; }
   void on_status(const protocol::CameraUpgradeStatus& status);
   int progress_percent() const { return progress_percent_; }  // -1: none reported yet
 
  private:
-  GimbalCalibration(CalibrationKind kind, double timeout_s, double now_s);
+  GimbalCalibration(CalibrationKind kind, double timeout_s, double now_s,
+                    protocol::CalibrationEnd end);
 
   CalibrationKind kind_;
+  protocol::CalibrationEnd end_;
+  bool repairing_seen_ = false;
   int progress_percent_ = -1;
 };
 

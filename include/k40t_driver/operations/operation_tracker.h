@@ -46,7 +46,14 @@ class OperationTracker {
   // A status frame about this operation.
   void report(const Step& step);
   void cancel(const std::string& how);
-  // Decides the timeout; returns the phase.
+  // Operations whose end may come without a status frame (docs/protocol/decisions.md
+  // #conventions, calibration_end):
+  //   - the OK ACK itself ends it, with `text`;
+  //   - or it ends as succeeded `quiet_s` after the OK ACK was first seen by check() if no status
+  //     frame has been reported by then.
+  void end_with_ack(std::string text);
+  void end_if_quiet_after_ack(double quiet_s, std::string text);
+  // Decides the timeout (and a quiet end); returns the phase.
   Phase check(double now_s);
 
   Phase phase() const { return phase_; }
@@ -72,6 +79,9 @@ class OperationTracker {
   std::string reason_;
   std::string status_text_;
   int reports_ = 0;
+  double quiet_s_ = -1;  // < 0: no quiet end
+  std::string quiet_text_;
+  double acked_seen_s_ = -1;  // when check() first saw the ACK
 };
 
 // The timeout a goal asks for: 0 means `default_s`; negative or not finite is an error (nothing

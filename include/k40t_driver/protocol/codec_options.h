@@ -6,6 +6,7 @@
 #include <string>
 
 #include "k40t_driver/protocol/byte_io.h"
+#include "k40t_driver/protocol/convention_values.h"
 #include "k40t_driver/protocol/message_id.h"
 #include "k40t_driver/protocol/result.h"
 
@@ -39,6 +40,8 @@ struct CodecOptions {
   // docs/protocol/decisions.md#a3: where requests are addressed.
   Address gimbal_address = kGimbalAddress;
   Address camera_address = kCameraAddress;
+  // The document's other open readings (docs/protocol/decisions.md#conventions).
+  Conventions conventions;
 };
 
 }  // namespace k40t::protocol

@@ -44,9 +44,11 @@ namespace k40t::driver {
 
 sensor_msgs::JointState to_joint_state(const protocol::GimbalAttitude& attitude,
                                        const ros::Time& stamp, const FrameIds& ids);
-// The stabilised attitude (yaw, roll, pitch attitude angles) as a quaternion in ids.level.
-geometry_msgs::QuaternionStamped to_attitude(const protocol::GimbalAttitude& attitude,
-                                             const ros::Time& stamp, const FrameIds& ids);
+// The stabilised attitude (yaw, roll, pitch attitude angles) as a quaternion in ids.level,
+// composed in the order the pod means (attitude_order, docs/protocol/decisions.md#conventions).
+geometry_msgs::QuaternionStamped to_attitude(
+    const protocol::GimbalAttitude& attitude, const ros::Time& stamp, const FrameIds& ids,
+    protocol::AttitudeOrder order = protocol::AttitudeOrder::kZyx);
 // base -> yaw -> roll -> pitch from the joint angles.
 std::vector<geometry_msgs::TransformStamped> gimbal_transforms(
     const protocol::GimbalAttitude& attitude, const ros::Time& stamp, const FrameIds& ids,

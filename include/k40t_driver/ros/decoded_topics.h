@@ -59,10 +59,11 @@ void advertise_decoded_topics(Sink& sink, PodDriver& driver, const RosPodConfig&
     if (config.publish_tf)
       tf = sink.template advertise<tf2_msgs::TFMessage>(kTfTopic, kTfQueue, false);
     driver.on<p::GimbalAttitude>(
-        [=, geometry = config.geometry](const p::GimbalAttitude& m, StampNs s) {
+        [=, geometry = config.geometry, order = driver.codec().conventions.attitude_order](
+            const p::GimbalAttitude& m, StampNs s) {
           const ros::Time t = to_ros_time(s);
           joints(to_joint_state(m, t, ids));
-          attitude(to_attitude(m, t, ids));
+          attitude(to_attitude(m, t, ids, order));
           if (tf) {
             tf2_msgs::TFMessage transforms;  // what TransformBroadcaster::sendTransform publishes
             transforms.transforms = gimbal_transforms(m, t, ids, geometry);
@@ -82,7 +83,14 @@ void advertise_decoded_topics(Sink& sink, PodDriver& driver, const RosPodConfig&
   auto plain = [](const auto& m, const ros::Time& t) { return to_msg(m, t); };
   forward(Tag<p::GimbalStatus>{}, "gimbal/status", plain);
   forward(Tag<p::CameraSystemStatus>{}, "camera/status", plain);
-  forward(Tag<p::VisibleStatus>{}, "visible/status", plain);
+  // The shutter as the pod's reading says (shutter_field: 16 bits of us cannot carry 1/4 s).
+  forward(Tag<p::VisibleStatus>{}, "visible/status",
+          [field = driver.codec().conventions.shutter_field](const p::VisibleStatus& m,
+                                                             const ros::Time& t) {
+            k40t_driver::VisibleStatus msg = to_msg(m, t);
+            msg.shutter_s = static_cast<float>(p::shutter_us_from_wire(m.shutter_us, field) * 1e-6);
+            return msg;
+          });
   forward(Tag<p::PhotoStatus>{}, "photo/status", plain);
   forward(Tag<p::RecordStatus>{}, "record/status", plain);
   // The long operations' status frames. Not "<action>/status": actionlib owns those names.
@@ -110,7 +118,12 @@ void advertise_decoded_topics(Sink& sink, PodDriver& driver, const RosPodConfig&
     const ros::Time t = to_ros_time(s);
     const k40t_driver::LaserTarget full =
         to_laser_target(m, t, ids.laser, driver.vehicle_state_at(s));
-    target(to_nav_sat_fix(m, t, ids, full.position_covariance));
+    sensor_msgs::NavSatFix fix = to_nav_sat_fix(m, t, ids, full.position_covariance);
+    // An OK answer at 0 deg, 0 deg is "no return" unless the pod says otherwise
+    // (laser_target_zeros, docs/protocol/decisions.md#conventions).
+    if (p::laser_target_no_return(m, driver.codec().conventions.laser_target_zeros))
+      fix.status.status = sensor_msgs::NavSatStatus::STATUS_NO_FIX;
+    target(fix);
     report(full);
   });
 }

@@ -42,6 +42,11 @@ class ParamReader {
     if (wrong_type) fail(name, "has the wrong type");
     return value;
   }
+  // Whether the parameter is set (on the server, or in the offline struct).
+  bool has(const std::string& name) {
+    return nh_ ? nh_->hasParam(name)
+               : params_.getType() == XmlRpc::XmlRpcValue::TypeStruct && params_.hasMember(name);
+  }
   double number(const std::string& name, double fallback, double lo, double hi) {
     const double value = get(name, fallback);
     if (!(value >= lo && value <= hi)) {

@@ -1,6 +1,7 @@
 // /diagnostics for the pod (diagnostic_updater), updated every ~diagnostic_period on a steady
 // timer. The checks' levels and texts are the ROS-free driver/pod_health.h (link, self-test,
-// stabilisation, SD card, temperature alarms, settings); this adds the FrequencyStatus of each
+// stabilisation, SD card, temperature alarms, settings) and driver/convention_health.h
+// (conventions); this adds the FrequencyStatus of each
 // periodic report at the document's rate and the hardware id built from the versions read on
 // connect.
 #pragma once

@@ -39,6 +39,9 @@ struct CameraConfig {
   double photo_8000x6000_mb = 18.0;
   double infrared_video_mbps = 2.0;
   bool single_shot_status = false;
+  // Photo mode 2 is a self-timer (one photo after the interval, no stop) rather than a repeating
+  // time-lapse (photo_mode_2, docs/protocol/decisions.md#conventions).
+  bool self_timer = false;
   SdConfig sd;
   int64_t start_utc_ms = kDefaultPodEpochMs;
 };
@@ -138,6 +141,7 @@ class CameraModel {
   };
 
   Outcome check_card_for(double mb) const;
+  bool self_timed(const ShootingJob& job) const;  // photo mode 2 read as a self-timer
   void shoot(ShootingJob& job, EventQueue& events);
   void step_shooting(double dt_s, bool optics_busy, EventQueue& events);
   void step_recording(double dt_s, EventQueue& events);

@@ -80,6 +80,9 @@ enum class MaintenanceState : uint8_t {
 struct MaintenanceEvent {
   MaintenanceState state = MaintenanceState::kSucceeded;
   uint8_t progress = 0;  // 0..100
+  // A gimbal calibration's: sent only by a pod whose calibration_end is "status"
+  // (docs/protocol/decisions.md#conventions).
+  bool calibration = false;
 };
 
 // The pod asks the flight controller for GPS at this time of day (0x000310, 3.2.4.15) just

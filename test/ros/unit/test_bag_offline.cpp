@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <set>
 #include <string>
 
 #include <rosbag/view.h>
@@ -74,6 +75,29 @@ TEST(YamlParams, BadValuesFailNamingTheParameter) {
   Result<RosPodConfig> short_list = config_from("laser_offset: [1, 2]\n");
   ASSERT_FALSE(short_list);
   EXPECT_NE(short_list.error().find("laser_offset must be a list of 3 numbers"), std::string::npos);
+}
+
+// A conventions file as `k40t probe --out` writes it (docs/protocol/decisions.md#conventions): each
+// reading by its name; the diagnostic learns which ones were set.
+TEST(YamlParams, ConventionsAreReadByTheirNames) {
+  Result<RosPodConfig> c = config_from(
+      "yaw_sign: left\npitch_sign: down\nsd_capacity_unit: 0.1mb\ncalibration_end: ack\n"
+      "ack_byte_order: little\n");
+  ASSERT_TRUE(c) << c.error();
+  const protocol::Conventions& got = c->driver.session.codec.conventions;
+  EXPECT_EQ(got.yaw_sign, protocol::YawSign::kLeft);
+  EXPECT_EQ(got.pitch_sign, protocol::PitchSign::kDown);
+  EXPECT_EQ(got.sd_capacity_unit, protocol::SdCapacityUnit::kTenthMb);
+  EXPECT_EQ(got.calibration_end, protocol::CalibrationEnd::kAck);
+  EXPECT_EQ(got.roll_sign, protocol::RollSign::kRightDown);  // not in the file: the default
+  EXPECT_EQ(c->driver.session.codec.ack_byte_order, protocol::ByteOrder::kLittle);
+  EXPECT_EQ(c->driver.conventions_from_parameters,
+            (std::set<std::string>{"yaw_sign", "pitch_sign", "sd_capacity_unit", "calibration_end",
+                                   "ack_byte_order"}));
+  Result<RosPodConfig> bad = config_from("yaw_sign: up\n");
+  ASSERT_FALSE(bad);
+  EXPECT_EQ(bad.error(), "parameter ~/yaw_sign must be right or left, got 'up'");
+  EXPECT_FALSE(config_from("shutter_field: 100\n"));  // a number, not one of the words
 }
 
 TEST(YamlParams, UnreadableFilesFailWithTheirPath) {

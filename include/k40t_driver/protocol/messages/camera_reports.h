@@ -11,9 +11,10 @@
 
 namespace k40t::protocol {
 
-// One count of the SD capacities of 0x000003 in MB. The document writes the unit as "MB*10"
-// (单位: MB*10), in the same style as "unit 0.1 degC" elsewhere, so one count is 10 MB. Reading
-// it as 0.1 MB would cap a card at 6.5 GB, smaller than the cards the pod takes.
+// One count of the SD capacities of 0x000003 in MB as the layout reads it. The document writes
+// the unit as "MB*10" (单位: MB*10); 10 MB per count, since 0.1 MB would cap a card at 6.5 GB. A
+// pod that means 0.1 MB is the reading sd_capacity_unit (docs/protocol/decisions.md#conventions),
+// applied after decoding (convention_readings.h).
 constexpr double kSdCapacityUnitMb = 10.0;
 constexpr double kSdCapacityMaxMb = 65535 * kSdCapacityUnitMb;
 
