@@ -1,0 +1,73 @@
+#include <pluginlib/class_list_macros.h>
+#include <ros/console.h>
+#include <sensor_msgs/image_encodings.h>
+
+#include "k40t_driver/ros/video/video_transport_name.h"
+#include "k40t_driver/ros/video/video_transport_plugins.h"
+
+namespace k40t::driver {
+
+namespace {
+
+constexpr std::chrono::milliseconds kDecodeTimeout{1000};
+
+sensor_msgs::ImagePtr to_image(const video::DecodedFrame& frame, const std_msgs::Header& header) {
+  auto image = boost::make_shared<sensor_msgs::Image>();
+  image->header = header;
+  image->width = static_cast<uint32_t>(frame.size.width);
+  image->height = static_cast<uint32_t>(frame.size.height);
+  image->encoding = sensor_msgs::image_encodings::BGR8;
+  image->step = image->width * 3;
+  image->data.resize(static_cast<size_t>(image->step) * image->height);
+  cv::Mat target(frame.size, CV_8UC3, image->data.data(), image->step);
+  cv::Mat bgr = video::i420_to_bgr(frame);
+  bgr.copyTo(target);
+  return image;
+}
+
+}  // namespace
+
+std::string VideoTransportSubscriber::getTransportName() const {
+  return kVideoTransportName;
+}
+
+void VideoTransportSubscriber::internalCallback(
+    const k40t_driver::CompressedVideo::ConstPtr& message, const Callback& user_cb) {
+  auto report = [this](const std::string& error) {
+    if (error != last_error_) ROS_ERROR("k40t_video transport: %s", error.c_str());
+    last_error_ = error;
+  };
+  Result<video::Codec> codec = video::parse_codec(message->format);
+  if (!codec) return report(codec.error() + ": message dropped");
+  if (!decoder_ || decoder_->codec() != codec.value()) {
+    auto created = video::VideoDecoder::create(codec.value());
+    if (!created) return report(created.error());
+    decoder_ = std::move(created.value());
+  }
+  // A message lost on the way (a slow subscriber's queue dropped it) breaks the pictures that
+  // refer to it: start again at the next key frame.
+  if (have_seq_ && message->header.seq != last_seq_ + 1 && message->header.seq != 0)
+    decoder_->resync();
+  have_seq_ = true;
+  last_seq_ = message->header.seq;
+  Result<bool> pushed = decoder_->push(message->data.data(), message->data.size(),
+                                       message->key_frame, message->header.seq);
+  if (!pushed) {
+    decoder_.reset();  // a fresh decoder from the next key frame
+    return report(pushed.error());
+  }
+  if (!pushed.value()) return;  // waiting for a key frame
+  std::optional<video::DecodedFrame> frame = decoder_->pull(kDecodeTimeout);
+  if (!frame) {
+    decoder_.reset();
+    return report("no picture decoded from a " + message->format + " access unit" +
+                  (last_error_.empty() ? "" : ""));
+  }
+  last_error_.clear();
+  user_cb(to_image(*frame, message->header));
+}
+
+}  // namespace k40t::driver
+
+PLUGINLIB_EXPORT_CLASS(k40t::driver::VideoTransportPublisher, image_transport::PublisherPlugin)
+PLUGINLIB_EXPORT_CLASS(k40t::driver::VideoTransportSubscriber, image_transport::SubscriberPlugin)

@@ -1,0 +1,318 @@
+#include "k40t_driver/video/access_unit_source.h"
+
+#include <gst/app/gstappsink.h>
+#include <gst/gst.h>
+
+#include <cmath>
+#include <condition_variable>
+#include <cstring>
+#include <deque>
+#include <mutex>
+#include <thread>
+#include <utility>
+
+#include "k40t_driver/transport/backoff.h"
+#include "k40t_driver/video/rtsp_probe.h"
+#include "k40t_driver/video/stall_guard.h"
+
+namespace k40t::video {
+
+using Clock = std::chrono::steady_clock;
+
+std::string access_unit_pipeline(const CaptureOptions& options) {
+  const long long open_us = std::llround(options.open_timeout_s * 1e6);
+  const long long read_ms = std::llround(options.read_timeout_s * 1000);
+  return std::string("rtspsrc location=\"") + options.url +
+         "\" latency=0 protocols=" + to_string(options.transport) +
+         " tcp-timeout=" + std::to_string(open_us) + " timeout=" + std::to_string(open_us) +
+         " ! parsebin ! " + kStallGuardElement + " timeout=" + std::to_string(read_ms) +
+         " ! appsink name=units sync=false enable-last-sample=false caps=\"" +
+         access_unit_caps(Codec::kH264) + ";" + access_unit_caps(Codec::kH265) + "\"";
+}
+
+namespace {
+
+int64_t now_us() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(
+             std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+// parsebin picks the parser; every key frame must carry its parameter sets.
+void on_element_added(GstBin*, GstBin*, GstElement* element, gpointer) {
+  GstElementFactory* factory = gst_element_get_factory(element);
+  const char* name = factory ? gst_plugin_feature_get_name(GST_PLUGIN_FEATURE(factory)) : "";
+  if (std::strcmp(name, "h264parse") == 0 || std::strcmp(name, "h265parse") == 0)
+    g_object_set(element, "config-interval", -1, nullptr);
+}
+
+}  // namespace
+
+struct AccessUnitSource::State {
+  CaptureOptions capture;
+  transport::ReconnectPolicy reconnect;
+  UnitSink sink;
+
+  mutable std::mutex mutex;
+  std::condition_variable changed;
+  bool running = false;
+  bool exited = true;
+  bool restart_requested = false;
+  bool decoding_wanted = false;
+  std::optional<GrabbedFrame> latest;
+  uint64_t sequence = 0;
+  uint64_t decoded = 0;
+  GrabberStats stats;
+  bool any_unit = false;  // since the current pipeline started
+
+  // Streaming thread only (and the run loop between pipelines).
+  std::unique_ptr<VideoDecoder> decoder;
+  // Received time and presentation time of the access units in the decoder, by sequence.
+  std::deque<std::pair<uint64_t, std::pair<int64_t, std::optional<double>>>> in_decoder;
+
+  bool pause(std::chrono::milliseconds delay) {
+    std::unique_lock<std::mutex> lock(mutex);
+    changed.wait_for(lock, delay, [this] { return !running; });
+    return running;
+  }
+  bool is_running() const {
+    std::lock_guard<std::mutex> lock(mutex);
+    return running;
+  }
+  void failed(bool opened, const std::string& error) {
+    std::lock_guard<std::mutex> lock(mutex);
+    ++(opened ? stats.read_errors : stats.open_failures);
+    stats.streaming = false;
+    stats.last_error = error;
+  }
+
+  static GstFlowReturn new_sample(GstAppSink* appsink, gpointer self) {
+    GstSample* sample = gst_app_sink_pull_sample(appsink);
+    if (!sample) return GST_FLOW_OK;
+    static_cast<State*>(self)->on_unit(sample);
+    gst_sample_unref(sample);
+    return GST_FLOW_OK;
+  }
+
+  void on_unit(GstSample* sample) {
+    AccessUnit unit;
+    unit.received_us = now_us();
+    GstCaps* caps = gst_sample_get_caps(sample);
+    GstBuffer* buffer = gst_sample_get_buffer(sample);
+    if (!caps || !buffer) return;
+    const GstStructure* s = gst_caps_get_structure(caps, 0);
+    unit.codec = gst_structure_has_name(s, "video/x-h265") ? Codec::kH265 : Codec::kH264;
+    gst_structure_get_int(s, "width", &unit.width);
+    gst_structure_get_int(s, "height", &unit.height);
+    unit.key_frame = !GST_BUFFER_FLAG_IS_SET(buffer, GST_BUFFER_FLAG_DELTA_UNIT);
+    if (GST_BUFFER_PTS_IS_VALID(buffer)) unit.pts_ms = GST_BUFFER_PTS(buffer) / 1e6;
+    GstMapInfo map;
+    if (!gst_buffer_map(buffer, &map, GST_MAP_READ)) return;
+    unit.bytes.assign(map.data, map.data + map.size);
+    gst_buffer_unmap(buffer, &map);
+    bool wanted = false;
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      unit.sequence = ++sequence;
+      ++stats.frames;
+      stats.streaming = true;
+      stats.last_frame = Clock::now();
+      any_unit = true;
+      wanted = decoding_wanted;
+    }
+    if (sink) sink(unit);
+    decode(unit, wanted);
+  }
+
+  void decode(const AccessUnit& unit, bool wanted) {
+    if (!wanted) {
+      if (decoder) decoder->resync();  // what comes next refers to pictures it will not see
+      return;
+    }
+    if (!decoder || decoder->codec() != unit.codec) {
+      auto created = VideoDecoder::create(unit.codec);
+      if (!created) return failed(true, created.error());
+      decoder = std::move(created.value());
+      decoder->on_frame([this](DecodedFrame frame) { on_decoded(std::move(frame)); });
+    }
+    Result<bool> pushed = decoder->push(unit.bytes.data(), unit.bytes.size(), unit.key_frame,
+                                        unit.sequence);
+    if (!pushed) {
+      failed(true, "decoder: " + pushed.error());
+      decoder.reset();  // a new one from the next key frame
+      return;
+    }
+    if (!pushed.value()) return;
+    std::lock_guard<std::mutex> lock(mutex);
+    in_decoder.emplace_back(unit.sequence, std::make_pair(unit.received_us, unit.pts_ms));
+    while (in_decoder.size() > 64) in_decoder.pop_front();
+  }
+
+  // On the decoder's thread.
+  void on_decoded(DecodedFrame decoded) {
+    GrabbedFrame frame;
+    frame.pixels = std::move(decoded.i420);
+    frame.i420 = true;
+    frame.size = decoded.size;
+    frame.sequence = decoded.tag;
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      for (const auto& [sequence, times] : in_decoder) {
+        if (sequence != decoded.tag) continue;
+        frame.received_us = times.first;
+        frame.pts_ms = times.second;
+      }
+      if (latest && latest->sequence >= frame.sequence) return;
+      ++decoded;
+      latest = std::move(frame);
+    }
+    changed.notify_all();
+  }
+
+  // Plays one pipeline until it fails, a restart is asked for or the source stops.
+  void stream(GstElement* pipeline) {
+    GstBus* bus = gst_element_get_bus(pipeline);
+    while (is_running()) {
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (std::exchange(restart_requested, false)) break;
+      }
+      GstMessage* message = gst_bus_timed_pop_filtered(
+          bus, 100 * GST_MSECOND,
+          static_cast<GstMessageType>(GST_MESSAGE_ERROR | GST_MESSAGE_EOS));
+      if (!message) continue;
+      std::string error = "the stream ended or stalled (no frame within the read timeout)";
+      if (GST_MESSAGE_TYPE(message) == GST_MESSAGE_ERROR) {
+        GError* e = nullptr;
+        gst_message_parse_error(message, &e, nullptr);
+        if (e) error = e->message;
+        if (e) g_error_free(e);
+      }
+      gst_message_unref(message);
+      bool opened = false;
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        opened = any_unit;
+      }
+      failed(opened, error);
+      break;
+    }
+    gst_object_unref(bus);
+  }
+
+  Status play_once(bool& any) {
+    if (Status s = probe_rtsp(capture.url, capture.open_timeout_s); !s) return s;
+    if (Status s = register_stall_guard(); !s) return s;
+    GError* error = nullptr;
+    GstElement* pipeline = gst_parse_launch(access_unit_pipeline(capture).c_str(), &error);
+    if (error) {
+      const std::string text = error->message;
+      g_error_free(error);
+      if (pipeline) gst_object_unref(pipeline);
+      return Status::fail("cannot build the stream pipeline: " + text);
+    }
+    g_signal_connect(pipeline, "deep-element-added", G_CALLBACK(on_element_added), nullptr);
+    GstElement* appsink = gst_bin_get_by_name(GST_BIN(pipeline), "units");
+    GstAppSinkCallbacks callbacks{};
+    callbacks.new_sample = &State::new_sample;
+    gst_app_sink_set_callbacks(GST_APP_SINK(appsink), &callbacks, this, nullptr);
+    gst_object_unref(appsink);
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      any_unit = false;
+    }
+    gst_element_set_state(pipeline, GST_STATE_PLAYING);
+    stream(pipeline);
+    gst_element_set_state(pipeline, GST_STATE_NULL);  // joins the streaming threads
+    gst_object_unref(pipeline);
+    if (decoder) decoder->resync();  // the next stream starts afresh
+    std::lock_guard<std::mutex> lock(mutex);
+    any = any_unit;
+    return Status::ok();
+  }
+
+  void run() {
+    transport::Backoff backoff(reconnect);
+    bool ever_streamed = false;
+    while (is_running()) {
+      bool any = false;
+      if (Status s = play_once(any); !s) failed(false, s.message());
+      if (any) {
+        if (ever_streamed) {
+          std::lock_guard<std::mutex> lock(mutex);
+          ++stats.reconnects;
+        }
+        ever_streamed = true;
+        backoff.reset();
+      }
+      if (!pause(backoff.next())) break;
+    }
+    decoder.reset();
+    std::lock_guard<std::mutex> lock(mutex);
+    stats.streaming = false;
+    exited = true;
+    changed.notify_all();
+  }
+};
+
+AccessUnitSource::AccessUnitSource(const CaptureOptions& capture, UnitSink sink,
+                                   const transport::ReconnectPolicy& reconnect)
+    : state_(std::make_shared<State>()) {
+  ensure_gstreamer();
+  state_->capture = capture;
+  state_->reconnect = reconnect;
+  state_->sink = std::move(sink);
+}
+
+AccessUnitSource::~AccessUnitSource() {
+  stop();
+}
+
+void AccessUnitSource::start() {
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  if (state_->running || !state_->exited) return;
+  state_->running = true;
+  state_->exited = false;
+  std::thread([state = state_] { state->run(); }).detach();
+}
+
+void AccessUnitSource::stop() {
+  std::unique_lock<std::mutex> lock(state_->mutex);
+  state_->running = false;
+  state_->changed.notify_all();
+  const auto grace = std::chrono::duration<double>(state_->capture.open_timeout_s +
+                                                   state_->capture.read_timeout_s + 1.0);
+  state_->changed.wait_for(lock, grace, [this] { return state_->exited; });
+}
+
+void AccessUnitSource::restart() {
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  state_->restart_requested = true;
+}
+
+void AccessUnitSource::set_decoding(bool wanted) {
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  state_->decoding_wanted = wanted;
+}
+
+std::optional<GrabbedFrame> AccessUnitSource::wait_newer(uint64_t after,
+                                                         std::chrono::milliseconds timeout) {
+  std::unique_lock<std::mutex> lock(state_->mutex);
+  state_->changed.wait_for(lock, timeout, [&] {
+    return !state_->running || (state_->latest && state_->latest->sequence > after);
+  });
+  if (state_->latest && state_->latest->sequence > after) return state_->latest;
+  return std::nullopt;
+}
+
+GrabberStats AccessUnitSource::stats() const {
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  return state_->stats;
+}
+
+uint64_t AccessUnitSource::decoded_frames() const {
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  return state_->decoded;
+}
+
+}  // namespace k40t::video
