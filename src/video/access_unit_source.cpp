@@ -149,16 +149,16 @@ struct AccessUnitSource::State {
   }
 
   // On the decoder's thread.
-  void on_decoded(DecodedFrame decoded) {
+  void on_decoded(DecodedFrame picture) {
     GrabbedFrame frame;
-    frame.pixels = std::move(decoded.i420);
+    frame.pixels = std::move(picture.i420);
     frame.i420 = true;
-    frame.size = decoded.size;
-    frame.sequence = decoded.tag;
+    frame.size = picture.size;
+    frame.sequence = picture.tag;
     {
       std::lock_guard<std::mutex> lock(mutex);
       for (const auto& [sequence, times] : in_decoder) {
-        if (sequence != decoded.tag) continue;
+        if (sequence != picture.tag) continue;
         frame.received_us = times.first;
         frame.pts_ms = times.second;
       }

@@ -58,7 +58,9 @@ TEST(VideoCodec, KeyFramesComeAtTheIntervalWithTheirParameterSets) {
     EXPECT_EQ(contains(types, 5), key) << "IDR slice in frame " << i;
     EXPECT_EQ(contains(types, 7), key) << "SPS in frame " << i;
     EXPECT_EQ(contains(types, 8), key) << "PPS in frame " << i;
-    if (!key) EXPECT_TRUE(contains(types, 1)) << "non-IDR slice in frame " << i;
+    if (!key) {
+      EXPECT_TRUE(contains(types, 1)) << "non-IDR slice in frame " << i;
+    }
   }
 }
 

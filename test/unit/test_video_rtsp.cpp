@@ -21,6 +21,8 @@ namespace k40t::video {
 namespace {
 
 using sim::video::ImageMode;
+using sim::video::RtspServerOptions;
+using sim::video::RtspStreamServer;
 using std::chrono::milliseconds;
 using std::chrono::seconds;
 using testing::Stream;
