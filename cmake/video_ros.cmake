@@ -25,3 +25,7 @@ target_link_libraries(k40t_video_transport PUBLIC k40t_ros_common k40t_video
                                                   ${K40T_VIDEO_CATKIN_LIBRARIES})
 install(TARGETS k40t_video_transport LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 install(FILES k40t_video_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
+
+# The passthrough benchmark's subscriber (bench/video/run_passthrough_bench.sh).
+add_executable(k40t_passthrough_probe ${PROJECT_SOURCE_DIR}/bench/video/passthrough_probe.cpp)
+target_link_libraries(k40t_passthrough_probe PRIVATE k40t_video_nodelet k40t_sim_model)

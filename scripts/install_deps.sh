@@ -20,7 +20,7 @@ packages=(
   libactionlib-dev python3-actionlib libactionlib-msgs-dev python3-actionlib-msgs ros-actionlib-msgs
   libgstrtspserver-1.0-dev libgstreamer1.0-dev libgstreamer-plugins-base1.0-dev
   gstreamer1.0-plugins-good gstreamer1.0-plugins-bad gstreamer1.0-plugins-ugly gstreamer1.0-libav
-  gstreamer1.0-rtsp gstreamer1.0-tools
+  gstreamer1.0-rtsp gstreamer1.0-tools gstreamer1.0-plugins-base-apps
   libgeographiclib-dev libproj-dev proj-data
   librosbag-storage-dev libyaml-cpp-dev
 )
