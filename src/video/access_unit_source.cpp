@@ -51,6 +51,7 @@ void on_element_added(GstBin*, GstBin*, GstElement* element, gpointer) {
 struct AccessUnitSource::State {
   CaptureOptions capture;
   transport::ReconnectPolicy reconnect;
+  std::mutex sink_mutex;  // held while the sink runs: stop() waits for it, then drops the sink
   UnitSink sink;
 
   mutable std::mutex mutex;
@@ -120,7 +121,10 @@ struct AccessUnitSource::State {
       any_unit = true;
       wanted = decoding_wanted;
     }
-    if (sink) sink(unit);
+    {
+      std::lock_guard<std::mutex> lock(sink_mutex);
+      if (sink) sink(unit);
+    }
     decode(unit, wanted);
   }
 
@@ -283,6 +287,10 @@ void AccessUnitSource::stop() {
   const auto grace = std::chrono::duration<double>(state_->capture.open_timeout_s +
                                                    state_->capture.read_timeout_s + 1.0);
   state_->changed.wait_for(lock, grace, [this] { return state_->exited; });
+  lock.unlock();
+  // A pipeline still tearing down past the grace period must not call into its owner.
+  std::lock_guard<std::mutex> sink_lock(state_->sink_mutex);
+  state_->sink = nullptr;
 }
 
 void AccessUnitSource::restart() {

@@ -34,6 +34,8 @@ class AccessUnitSource : public FrameSource {
   AccessUnitSource& operator=(const AccessUnitSource&) = delete;
 
   void start() override;
+  // Ends the thread; the sink is not called after it returns (not even by a pipeline still
+  // tearing down), so stop() is final.
   void stop() override;
   void restart() override;
   // Whether access units are decoded; turned on, the first picture comes from the next key frame.
