@@ -8,6 +8,7 @@
 #include <cstring>
 #include <deque>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <utility>
 
@@ -25,9 +26,8 @@ std::string access_unit_pipeline(const CaptureOptions& options) {
   return std::string("rtspsrc location=\"") + options.url +
          "\" latency=0 protocols=" + to_string(options.transport) +
          " tcp-timeout=" + std::to_string(open_us) + " timeout=" + std::to_string(open_us) +
-         " ! parsebin ! " + kStallGuardElement + " timeout=" + std::to_string(read_ms) +
-         " ! appsink name=units sync=false enable-last-sample=false caps=\"" +
-         access_unit_caps(Codec::kH264) + ";" + access_unit_caps(Codec::kH265) + "\"";
+         " ! parsebin name=parse " + kStallGuardElement + " name=guard timeout=" +
+         std::to_string(read_ms) + " ! appsink name=units sync=false enable-last-sample=false";
 }
 
 namespace {
@@ -38,12 +38,38 @@ int64_t now_us() {
       .count();
 }
 
-// parsebin picks the parser; every key frame must carry its parameter sets.
-void on_element_added(GstBin*, GstBin*, GstElement* element, gpointer) {
-  GstElementFactory* factory = gst_element_get_factory(element);
-  const char* name = factory ? gst_plugin_feature_get_name(GST_PLUGIN_FEATURE(factory)) : "";
-  if (std::strcmp(name, "h264parse") == 0 || std::strcmp(name, "h265parse") == 0)
-    g_object_set(element, "config-interval", -1, nullptr);
+// parsebin (depayloader + parser, whichever the stream needs) settles on the parser's preferred
+// output (AVC, parameter sets out of band); a second parser of the same codec behind it turns
+// that into Annex B access units with the parameter sets repeated before every key frame.
+void on_parsed_pad(GstElement* parsebin, GstPad* pad, gpointer) {
+  GstCaps* caps = gst_pad_get_current_caps(pad);
+  if (!caps) caps = gst_pad_query_caps(pad, nullptr);
+  const std::string media = gst_structure_get_name(gst_caps_get_structure(caps, 0));
+  gst_caps_unref(caps);
+  std::optional<Codec> codec;
+  if (media == "video/x-h264") codec = Codec::kH264;
+  if (media == "video/x-h265") codec = Codec::kH265;
+  if (!codec) return;  // audio or another stream: left unlinked
+  GstBin* bin = GST_BIN(gst_element_get_parent(parsebin));
+  GstElement* guard = gst_bin_get_by_name(bin, "guard");
+  GstElement* parser = gst_element_factory_make(*codec == Codec::kH265 ? "h265parse" : "h264parse",
+                                                nullptr);
+  GstElement* filter = gst_element_factory_make("capsfilter", nullptr);
+  if (guard && parser && filter) {
+    g_object_set(parser, "config-interval", -1, nullptr);
+    GstCaps* annex_b = gst_caps_from_string(access_unit_caps(*codec).c_str());
+    g_object_set(filter, "caps", annex_b, nullptr);
+    gst_caps_unref(annex_b);
+    gst_bin_add_many(bin, parser, filter, nullptr);
+    gst_element_link_many(parser, filter, guard, nullptr);
+    gst_element_sync_state_with_parent(filter);
+    gst_element_sync_state_with_parent(parser);
+    GstPad* sink = gst_element_get_static_pad(parser, "sink");
+    gst_pad_link(pad, sink);
+    gst_object_unref(sink);
+  }
+  if (guard) gst_object_unref(guard);
+  gst_object_unref(bin);
 }
 
 }  // namespace
@@ -65,6 +91,7 @@ struct AccessUnitSource::State {
   uint64_t decoded = 0;
   GrabberStats stats;
   bool any_unit = false;  // since the current pipeline started
+  bool ever_streamed = false;
 
   // Streaming thread only (and the run loop between pipelines).
   std::unique_ptr<VideoDecoder> decoder;
@@ -118,6 +145,8 @@ struct AccessUnitSource::State {
       ++stats.frames;
       stats.streaming = true;
       stats.last_frame = Clock::now();
+      if (!any_unit && ever_streamed) ++stats.reconnects;  // the first unit of a new stream
+      ever_streamed = true;
       any_unit = true;
       wanted = decoding_wanted;
     }
@@ -215,7 +244,9 @@ struct AccessUnitSource::State {
       if (pipeline) gst_object_unref(pipeline);
       return Status::fail("cannot build the stream pipeline: " + text);
     }
-    g_signal_connect(pipeline, "deep-element-added", G_CALLBACK(on_element_added), nullptr);
+    GstElement* parsebin = gst_bin_get_by_name(GST_BIN(pipeline), "parse");
+    g_signal_connect(parsebin, "pad-added", G_CALLBACK(on_parsed_pad), nullptr);
+    gst_object_unref(parsebin);
     GstElement* appsink = gst_bin_get_by_name(GST_BIN(pipeline), "units");
     GstAppSinkCallbacks callbacks{};
     callbacks.new_sample = &State::new_sample;
@@ -237,18 +268,10 @@ struct AccessUnitSource::State {
 
   void run() {
     transport::Backoff backoff(reconnect);
-    bool ever_streamed = false;
     while (is_running()) {
       bool any = false;
       if (Status s = play_once(any); !s) failed(false, s.message());
-      if (any) {
-        if (ever_streamed) {
-          std::lock_guard<std::mutex> lock(mutex);
-          ++stats.reconnects;
-        }
-        ever_streamed = true;
-        backoff.reset();
-      }
+      if (any) backoff.reset();
       if (!pause(backoff.next())) break;
     }
     decoder.reset();

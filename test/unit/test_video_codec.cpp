@@ -17,13 +17,13 @@ using testing::contains;
 using testing::h264_nal_types;
 using testing::psnr;
 
-// A picture with edges, gradients and text that moves by `shift` pixels per frame.
+// A picture with gradients, a disc and text that moves by `shift` pixels per frame.
 cv::Mat test_picture(int width, int height, int shift) {
   cv::Mat bgr(height, width, CV_8UC3);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x)
-      bgr.at<cv::Vec3b>(y, x) = cv::Vec3b(static_cast<uint8_t>((x + shift) % 256),
-                                          static_cast<uint8_t>(y % 256), 128);
+      bgr.at<cv::Vec3b>(y, x) = cv::Vec3b(static_cast<uint8_t>((x + shift) * 255 / (width + 60)),
+                                          static_cast<uint8_t>(y * 255 / height), 128);
   cv::circle(bgr, {width / 2 + shift, height / 2}, height / 4, {20, 200, 240}, -1);
   cv::putText(bgr, "K40T " + std::to_string(shift), {20, 60}, cv::FONT_HERSHEY_SIMPLEX, 1.5,
               {255, 255, 255}, 3);
