@@ -132,5 +132,49 @@ TEST(VideoPassthrough, AStoppedServerIsNoticedAndTheUnitsComeBack) {
   EXPECT_GE(source.stats().reconnects, 1u);
 }
 
+TEST(VideoPassthrough, TheFrameSizeFollowsTheImageMode) {
+  Stream stream(ImageMode::kThermal, 0, kKeyInterval);
+  std::mutex mutex;
+  cv::Size unit_size;
+  AccessUnitSource source(options_for(stream.url()), [&](const AccessUnit& unit) {
+    std::lock_guard<std::mutex> lock(mutex);
+    unit_size = cv::Size(unit.width, unit.height);
+  });
+  source.set_decoding(true);
+  source.start();
+  auto thermal = source.wait_newer(0, seconds(10));
+  ASSERT_TRUE(thermal) << source.stats().last_error;
+  EXPECT_EQ(thermal->size, cv::Size(640, 512));
+  stream.set_mode(ImageMode::kVisible);
+  std::optional<GrabbedFrame> visible;
+  ASSERT_TRUE(wait_until(
+      [&] {
+        visible = source.wait_newer(0, std::chrono::milliseconds(50));
+        return visible && visible->size == cv::Size(1920, 1080);
+      },
+      seconds(10)));
+  EXPECT_TRUE(sim::video::read_frame_stamp(to_bgr(*visible)));
+  std::lock_guard<std::mutex> lock(mutex);
+  EXPECT_EQ(unit_size, cv::Size(1920, 1080));
+}
+
+TEST(VideoPassthrough, AFrozenServerIsNoticedWithinTheReadTimeout) {
+  testing::SimStreamProcess sim({"--mode", "0", "--key-interval", "10"});
+  ASSERT_FALSE(sim.url().empty());
+  Received received;
+  AccessUnitSource source(options_for(sim.url()), [&](const AccessUnit& unit) {
+    std::lock_guard<std::mutex> lock(received.mutex);
+    received.units.push_back(unit);
+  });
+  source.start();
+  ASSERT_TRUE(wait_until([&] { return received.size() >= 5; }, seconds(10)))
+      << source.stats().last_error;
+  sim.freeze();
+  const auto noticed = wait_until([&] { return !source.stats().streaming; }, seconds(4));
+  ASSERT_TRUE(noticed) << "the stall was never noticed";
+  EXPECT_LT(noticed->count(), 1.0 + 0.8);  // read_timeout plus scheduling slack
+  EXPECT_GE(source.stats().read_errors, 1u);
+}
+
 }  // namespace
 }  // namespace k40t::video
