@@ -4,7 +4,6 @@
 #include <gst/gst.h>
 
 #include <cmath>
-#include <condition_variable>
 #include <cstring>
 #include <deque>
 #include <mutex>
@@ -13,7 +12,9 @@
 #include <utility>
 
 #include "k40t_driver/transport/backoff.h"
+#include "k40t_driver/video/gst_launch.h"
 #include "k40t_driver/video/rtsp_probe.h"
+#include "k40t_driver/video/source_state.h"
 #include "k40t_driver/video/stall_guard.h"
 
 namespace k40t::video {
@@ -74,22 +75,15 @@ void on_parsed_pad(GstElement* parsebin, GstPad* pad, gpointer) {
 
 }  // namespace
 
-struct AccessUnitSource::State {
+struct AccessUnitSource::State : SourceState {
   CaptureOptions capture;
   transport::ReconnectPolicy reconnect;
   std::mutex sink_mutex;  // held while the sink runs: stop() waits for it, then drops the sink
   UnitSink sink;
 
-  mutable std::mutex mutex;
-  std::condition_variable changed;
-  bool running = false;
-  bool exited = true;
-  bool restart_requested = false;
   bool decoding_wanted = false;
-  std::optional<GrabbedFrame> latest;
   uint64_t sequence = 0;
   uint64_t decoded = 0;
-  GrabberStats stats;
   bool any_unit = false;  // since the current pipeline started
   bool ever_streamed = false;
 
@@ -97,22 +91,6 @@ struct AccessUnitSource::State {
   std::unique_ptr<VideoDecoder> decoder;
   // Received time and presentation time of the access units in the decoder, by sequence.
   std::deque<std::pair<uint64_t, std::pair<int64_t, std::optional<double>>>> in_decoder;
-
-  bool pause(std::chrono::milliseconds delay) {
-    std::unique_lock<std::mutex> lock(mutex);
-    changed.wait_for(lock, delay, [this] { return !running; });
-    return running;
-  }
-  bool is_running() const {
-    std::lock_guard<std::mutex> lock(mutex);
-    return running;
-  }
-  void failed(bool opened, const std::string& error) {
-    std::lock_guard<std::mutex> lock(mutex);
-    ++(opened ? stats.read_errors : stats.open_failures);
-    stats.streaming = false;
-    stats.last_error = error;
-  }
 
   static GstFlowReturn new_sample(GstAppSink* appsink, gpointer self) {
     GstSample* sample = gst_app_sink_pull_sample(appsink);
@@ -206,10 +184,7 @@ struct AccessUnitSource::State {
   void stream(GstElement* pipeline) {
     GstBus* bus = gst_element_get_bus(pipeline);
     while (is_running()) {
-      {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (std::exchange(restart_requested, false)) break;
-      }
+      if (take_restart()) break;
       GstMessage* message = gst_bus_timed_pop_filtered(
           bus, 100 * GST_MSECOND,
           static_cast<GstMessageType>(GST_MESSAGE_ERROR | GST_MESSAGE_EOS));
@@ -236,14 +211,9 @@ struct AccessUnitSource::State {
   Status play_once(bool& any) {
     if (Status s = probe_rtsp(capture.url, capture.open_timeout_s); !s) return s;
     if (Status s = register_stall_guard(); !s) return s;
-    GError* error = nullptr;
-    GstElement* pipeline = gst_parse_launch(access_unit_pipeline(capture).c_str(), &error);
-    if (error) {
-      const std::string text = error->message;
-      g_error_free(error);
-      if (pipeline) gst_object_unref(pipeline);
-      return Status::fail("cannot build the stream pipeline: " + text);
-    }
+    Result<GstElement*> launched = launch_pipeline(access_unit_pipeline(capture), "stream");
+    if (!launched) return launched.status();
+    GstElement* pipeline = launched.value();
     GstElement* parsebin = gst_bin_get_by_name(GST_BIN(pipeline), "parse");
     g_signal_connect(parsebin, "pad-added", G_CALLBACK(on_parsed_pad), nullptr);
     gst_object_unref(parsebin);
@@ -275,10 +245,7 @@ struct AccessUnitSource::State {
       if (!pause(backoff.next())) break;
     }
     decoder.reset();
-    std::lock_guard<std::mutex> lock(mutex);
-    stats.streaming = false;
-    exited = true;
-    changed.notify_all();
+    finish_thread();
   }
 };
 
@@ -296,29 +263,19 @@ AccessUnitSource::~AccessUnitSource() {
 }
 
 void AccessUnitSource::start() {
-  std::lock_guard<std::mutex> lock(state_->mutex);
-  if (state_->running || !state_->exited) return;
-  state_->running = true;
-  state_->exited = false;
-  std::thread([state = state_] { state->run(); }).detach();
+  start_source_thread(state_);
 }
 
 void AccessUnitSource::stop() {
-  std::unique_lock<std::mutex> lock(state_->mutex);
-  state_->running = false;
-  state_->changed.notify_all();
-  const auto grace = std::chrono::duration<double>(state_->capture.open_timeout_s +
-                                                   state_->capture.read_timeout_s + 1.0);
-  state_->changed.wait_for(lock, grace, [this] { return state_->exited; });
-  lock.unlock();
+  state_->stop(std::chrono::duration<double>(state_->capture.open_timeout_s +
+                                             state_->capture.read_timeout_s + 1.0));
   // A pipeline still tearing down past the grace period must not call into its owner.
   std::lock_guard<std::mutex> sink_lock(state_->sink_mutex);
   state_->sink = nullptr;
 }
 
 void AccessUnitSource::restart() {
-  std::lock_guard<std::mutex> lock(state_->mutex);
-  state_->restart_requested = true;
+  state_->request_restart();
 }
 
 void AccessUnitSource::set_decoding(bool wanted) {
@@ -328,17 +285,11 @@ void AccessUnitSource::set_decoding(bool wanted) {
 
 std::optional<GrabbedFrame> AccessUnitSource::wait_newer(uint64_t after,
                                                          std::chrono::milliseconds timeout) {
-  std::unique_lock<std::mutex> lock(state_->mutex);
-  state_->changed.wait_for(lock, timeout, [&] {
-    return !state_->running || (state_->latest && state_->latest->sequence > after);
-  });
-  if (state_->latest && state_->latest->sequence > after) return state_->latest;
-  return std::nullopt;
+  return state_->wait_newer(after, timeout);
 }
 
 GrabberStats AccessUnitSource::stats() const {
-  std::lock_guard<std::mutex> lock(state_->mutex);
-  return state_->stats;
+  return state_->stats_now();
 }
 
 uint64_t AccessUnitSource::decoded_frames() const {

@@ -5,10 +5,22 @@
 #include <gst/gst.h>
 #include <gst/video/video.h>
 
+#include "k40t_driver/video/gst_launch.h"
+
 #include <cstring>
 #include <mutex>
 
 namespace k40t::video {
+
+Result<GstElement*> launch_pipeline(const std::string& description, const std::string& what) {
+  GError* error = nullptr;
+  GstElement* pipeline = gst_parse_launch(description.c_str(), &error);
+  if (!error && pipeline) return pipeline;
+  const std::string text = error ? error->message : "no pipeline";
+  if (error) g_error_free(error);
+  if (pipeline) gst_object_unref(pipeline);
+  return Status::fail("cannot build the " + what + " pipeline: " + text);
+}
 
 void ensure_gstreamer() {
   static std::once_flag once;
@@ -140,19 +152,13 @@ Result<std::unique_ptr<AppPipeline>> AppPipeline::create(const std::string& inpu
       "appsrc name=in is-live=true format=time block=false max-bytes=0 caps=\"" + input_caps +
       "\" ! " + middle + " ! appsink name=out sync=false enable-last-sample=false" +
       (output_caps.empty() ? "" : " caps=\"" + output_caps + "\"");
-  GError* error = nullptr;
-  GstElement* pipeline = gst_parse_launch(description.c_str(), &error);
-  if (error) {
-    const std::string text = error->message;
-    g_error_free(error);
-    if (pipeline) gst_object_unref(pipeline);
-    return Status::fail("GStreamer pipeline '" + middle + "': " + text);
-  }
+  Result<GstElement*> pipeline = launch_pipeline(description, "'" + middle + "'");
+  if (!pipeline) return pipeline.status();
   auto impl = std::make_unique<Impl>();
-  impl->pipeline = pipeline;
-  impl->source = gst_bin_get_by_name(GST_BIN(pipeline), "in");
-  impl->sink = gst_bin_get_by_name(GST_BIN(pipeline), "out");
-  if (gst_element_set_state(pipeline, GST_STATE_PLAYING) == GST_STATE_CHANGE_FAILURE) {
+  impl->pipeline = pipeline.value();
+  impl->source = gst_bin_get_by_name(GST_BIN(impl->pipeline), "in");
+  impl->sink = gst_bin_get_by_name(GST_BIN(impl->pipeline), "out");
+  if (gst_element_set_state(impl->pipeline, GST_STATE_PLAYING) == GST_STATE_CHANGE_FAILURE) {
     const std::string text = impl->bus_error();
     return Status::fail("GStreamer pipeline '" + middle + "' does not start: " + text);
   }

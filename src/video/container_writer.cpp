@@ -6,6 +6,8 @@
 
 #include <optional>
 
+#include "k40t_driver/video/gst_launch.h"
+
 namespace k40t::video {
 
 namespace {
@@ -72,20 +74,14 @@ Result<std::unique_ptr<ContainerWriter>> ContainerWriter::open(const std::string
   const std::string description = "appsrc name=in format=time block=true max-bytes=4000000 caps=\"" +
                                   access_unit_caps(codec) + "\" ! " + parser + " ! " + muxer +
                                   " ! filesink location=\"" + path + "\"";
-  GError* error = nullptr;
-  GstElement* pipeline = gst_parse_launch(description.c_str(), &error);
-  if (error) {
-    const std::string text = error->message;
-    g_error_free(error);
-    if (pipeline) gst_object_unref(pipeline);
-    return Status::fail("cannot build the " + muxer + " pipeline: " + text);
-  }
+  Result<GstElement*> pipeline = launch_pipeline(description, muxer);
+  if (!pipeline) return pipeline.status();
   auto impl = std::make_unique<Impl>();
   impl->path = path;
-  impl->pipeline = pipeline;
-  impl->source = gst_bin_get_by_name(GST_BIN(pipeline), "in");
-  if (gst_element_set_state(pipeline, GST_STATE_PLAYING) == GST_STATE_CHANGE_FAILURE) {
-    std::optional<std::string> why = wait_end(pipeline, 0);
+  impl->pipeline = pipeline.value();
+  impl->source = gst_bin_get_by_name(GST_BIN(impl->pipeline), "in");
+  if (gst_element_set_state(impl->pipeline, GST_STATE_PLAYING) == GST_STATE_CHANGE_FAILURE) {
+    std::optional<std::string> why = wait_end(impl->pipeline, 0);
     return Status::fail("cannot write " + path + ": " + why.value_or("the pipeline did not start"));
   }
   return std::unique_ptr<ContainerWriter>(new ContainerWriter(std::move(impl)));

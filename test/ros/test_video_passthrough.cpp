@@ -32,6 +32,7 @@
 
 #include "k40t_driver/CompressedVideo.h"
 #include "k40t_driver/sim/video/frame_stamp.h"
+#include "../unit/video_test_support.h"
 
 namespace {
 
@@ -54,35 +55,17 @@ std::string program_dir() {
   return path.substr(0, path.rfind('/'));
 }
 
-// A child program; with `read_url`, the rtsp:// URL it prints on its first line.
+// A child program, ended with SIGTERM.
 class Child {
  public:
-  Child(std::vector<std::string> args, bool read_url) {
-    int out[2];
-    if (pipe(out) != 0) return;
+  explicit Child(std::vector<std::string> args) {
     pid_ = fork();
     if (pid_ == 0) {
-      if (read_url) dup2(out[1], STDOUT_FILENO);
-      close(out[0]);
-      close(out[1]);
       std::vector<char*> argv;
       for (auto& a : args) argv.push_back(a.data());
       argv.push_back(nullptr);
       execv(argv[0], argv.data());
       _exit(127);
-    }
-    close(out[1]);
-    if (read_url) {
-      FILE* stream = fdopen(out[0], "r");
-      char line[256];
-      if (stream && fgets(line, sizeof line, stream)) {
-        const std::string text(line);
-        const size_t at = text.find("rtsp://");
-        if (at != std::string::npos) url_ = text.substr(at, text.find_last_not_of("\r\n") + 1 - at);
-      }
-      // Left open: the child keeps writing its last line there.
-    } else {
-      close(out[0]);
     }
   }
   ~Child() {
@@ -91,11 +74,9 @@ class Child {
       waitpid(pid_, nullptr, 0);
     }
   }
-  const std::string& url() const { return url_; }
 
  private:
   pid_t pid_ = -1;
-  std::string url_;
 };
 
 struct Arrival {
@@ -158,18 +139,17 @@ class VideoPassthrough : public ::testing::Test {
  protected:
   void SetUp() override {
     const std::string dir = program_dir();
-    sim_ = std::make_unique<Child>(
-        std::vector<std::string>{dir + "/k40t_video_sim", "--port", "0", "--mode", "0",
-                                 "--key-interval", std::to_string(kKeyInterval), "--sweep", "20"},
-        true);
+    sim_ = std::make_unique<k40t::video::testing::SimStreamProcess>(
+        dir + "/k40t_video_sim",
+        std::vector<std::string>{"--mode", "0", "--key-interval", std::to_string(kKeyInterval),
+                                 "--sweep", "20"});
     ASSERT_FALSE(sim_->url().empty()) << "k40t_video_sim did not start";
     video_ = std::make_unique<Child>(
         std::vector<std::string>{dir + "/k40t_video_node", "__name:=video",
                                  "__ns:=" + ros::this_node::getNamespace(), "_url:=" + sim_->url(),
-                                 "_latency:=0.01"},
-        false);
+                                 "_latency:=0.01"});
   }
-  std::unique_ptr<Child> sim_;
+  std::unique_ptr<k40t::video::testing::SimStreamProcess> sim_;
   std::unique_ptr<Child> video_;
 };
 

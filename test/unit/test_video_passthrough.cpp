@@ -38,6 +38,14 @@ struct Received {
   }
 };
 
+// The sink that keeps every access unit in `received`.
+AccessUnitSource::UnitSink keep_in(Received& received) {
+  return [&received](const AccessUnit& unit) {
+    std::lock_guard<std::mutex> lock(received.mutex);
+    received.units.push_back(unit);
+  };
+}
+
 CaptureOptions options_for(const std::string& url) {
   CaptureOptions o;
   o.url = url;
@@ -49,10 +57,7 @@ CaptureOptions options_for(const std::string& url) {
 TEST(VideoPassthrough, AccessUnitsArriveEncodedAndNothingIsDecoded) {
   Stream stream(ImageMode::kThermal, 0, kKeyInterval);
   Received received;
-  AccessUnitSource source(options_for(stream.url()), [&](const AccessUnit& unit) {
-    std::lock_guard<std::mutex> lock(received.mutex);
-    received.units.push_back(unit);
-  });
+  AccessUnitSource source(options_for(stream.url()), keep_in(received));
   source.start();
   ASSERT_TRUE(wait_until([&] { return received.size() >= 3 * kKeyInterval + 1; }, seconds(15)))
       << source.stats().last_error;
@@ -83,10 +88,7 @@ TEST(VideoPassthrough, AccessUnitsArriveEncodedAndNothingIsDecoded) {
 TEST(VideoPassthrough, DecodingStartsAtTheNextKeyFrameWithTheUnitsTimes) {
   Stream stream(ImageMode::kThermal, 0, kKeyInterval);
   Received received;
-  AccessUnitSource source(options_for(stream.url()), [&](const AccessUnit& unit) {
-    std::lock_guard<std::mutex> lock(received.mutex);
-    received.units.push_back(unit);
-  });
+  AccessUnitSource source(options_for(stream.url()), keep_in(received));
   source.start();
   // Joins mid-stream: after a few units, wherever the key frames are.
   ASSERT_TRUE(wait_until([&] { return received.size() >= 5; }, seconds(15)));
@@ -117,10 +119,7 @@ TEST(VideoPassthrough, AStoppedServerIsNoticedAndTheUnitsComeBack) {
   const std::string url = stream->url();
   const int port = std::stoi(url.substr(url.rfind(':') + 1));
   Received received;
-  AccessUnitSource source(options_for(url), [&](const AccessUnit& unit) {
-    std::lock_guard<std::mutex> lock(received.mutex);
-    received.units.push_back(unit);
-  });
+  AccessUnitSource source(options_for(url), keep_in(received));
   source.start();
   ASSERT_TRUE(wait_until([&] { return received.size() >= 5; }, seconds(15)));
   stream.reset();
@@ -162,10 +161,7 @@ TEST(VideoPassthrough, AFrozenServerIsNoticedWithinTheReadTimeout) {
   testing::SimStreamProcess sim({"--mode", "0", "--key-interval", "10"});
   ASSERT_FALSE(sim.url().empty());
   Received received;
-  AccessUnitSource source(options_for(sim.url()), [&](const AccessUnit& unit) {
-    std::lock_guard<std::mutex> lock(received.mutex);
-    received.units.push_back(unit);
-  });
+  AccessUnitSource source(options_for(sim.url()), keep_in(received));
   source.start();
   ASSERT_TRUE(wait_until([&] { return received.size() >= 5; }, seconds(10)))
       << source.stats().last_error;

@@ -1,31 +1,15 @@
 #include "k40t_driver/ros/video/video_streamer.h"
 
-#include <sensor_msgs/image_encodings.h>
+#include <algorithm>
 
 #include "k40t_driver/CompressedVideo.h"
+#include "k40t_driver/ros/video/bgr_message.h"
 #include "k40t_driver/ros/video/video_transport_name.h"
-#include <opencv2/imgproc.hpp>
+#include "k40t_driver/video/capture_open.h"
 
 namespace k40t::driver {
 
 namespace {
-
-// The frame converted (or copied) once, straight into the message's buffer.
-sensor_msgs::ImagePtr to_message(const video::GrabbedFrame& frame) {
-  auto image = boost::make_shared<sensor_msgs::Image>();
-  image->width = static_cast<uint32_t>(frame.size.width);
-  image->height = static_cast<uint32_t>(frame.size.height);
-  image->encoding = sensor_msgs::image_encodings::BGR8;
-  image->step = image->width * 3;
-  image->data.resize(static_cast<size_t>(image->step) * image->height);
-  cv::Mat target(frame.size, CV_8UC3, image->data.data(), image->step);
-  if (frame.i420) {
-    cv::cvtColor(frame.pixels, target, cv::COLOR_YUV2BGR_I420);
-  } else {
-    frame.pixels.copyTo(target);
-  }
-  return image;
-}
 
 // Thermal frames and the others differ in size: the FFmpeg back-end must reopen to follow.
 bool changes_frame_size(std::optional<int> before, int after) {
@@ -161,7 +145,7 @@ void VideoStreamer::publish(const video::GrabbedFrame& frame) {
   if (view.split) publish_split_panels(header.stamp, frame.size, zoom);
   if (publisher_.getNumSubscribers() == 0) return;  // no conversion for nobody
 
-  sensor_msgs::ImagePtr image = to_message(frame);
+  sensor_msgs::ImagePtr image = bgr_message(frame.pixels, frame.i420, frame.size);
   auto info =
       boost::make_shared<sensor_msgs::CameraInfo>(lenses_.camera_info(view, frame.size, zoom));
   image->header = header;

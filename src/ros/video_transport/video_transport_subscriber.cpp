@@ -1,7 +1,7 @@
-#include <pluginlib/class_list_macros.h>
+#include <pluginlib/class_list_macros.hpp>
 #include <ros/console.h>
-#include <sensor_msgs/image_encodings.h>
 
+#include "k40t_driver/ros/video/bgr_message.h"
 #include "k40t_driver/ros/video/video_transport_name.h"
 #include "k40t_driver/ros/video/video_transport_plugins.h"
 
@@ -10,20 +10,6 @@ namespace k40t::driver {
 namespace {
 
 constexpr std::chrono::milliseconds kDecodeTimeout{1000};
-
-sensor_msgs::ImagePtr to_image(const video::DecodedFrame& frame, const std_msgs::Header& header) {
-  auto image = boost::make_shared<sensor_msgs::Image>();
-  image->header = header;
-  image->width = static_cast<uint32_t>(frame.size.width);
-  image->height = static_cast<uint32_t>(frame.size.height);
-  image->encoding = sensor_msgs::image_encodings::BGR8;
-  image->step = image->width * 3;
-  image->data.resize(static_cast<size_t>(image->step) * image->height);
-  cv::Mat target(frame.size, CV_8UC3, image->data.data(), image->step);
-  cv::Mat bgr = video::i420_to_bgr(frame);
-  bgr.copyTo(target);
-  return image;
-}
 
 }  // namespace
 
@@ -60,11 +46,12 @@ void VideoTransportSubscriber::internalCallback(
   std::optional<video::DecodedFrame> frame = decoder_->pull(kDecodeTimeout);
   if (!frame) {
     decoder_.reset();
-    return report("no picture decoded from a " + message->format + " access unit" +
-                  (last_error_.empty() ? "" : ""));
+    return report("no picture decoded from a " + message->format + " access unit");
   }
   last_error_.clear();
-  user_cb(to_image(*frame, message->header));
+  sensor_msgs::ImagePtr image = bgr_message(frame->i420, true, frame->size);
+  image->header = message->header;
+  user_cb(image);
 }
 
 }  // namespace k40t::driver
