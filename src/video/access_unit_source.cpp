@@ -3,6 +3,7 @@
 #include <gst/app/gstappsink.h>
 #include <gst/gst.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <deque>
@@ -146,17 +147,18 @@ struct AccessUnitSource::State : SourceState {
       decoder = std::move(created.value());
       decoder->on_frame([this](DecodedFrame frame) { on_decoded(std::move(frame)); });
     }
+    {
+      // Before the push: the decoder's thread may hand the picture on before push() returns.
+      std::lock_guard<std::mutex> lock(mutex);
+      in_decoder.emplace_back(unit.sequence, std::make_pair(unit.received_us, unit.pts_ms));
+      while (in_decoder.size() > 64) in_decoder.pop_front();
+    }
     Result<bool> pushed = decoder->push(unit.bytes.data(), unit.bytes.size(), unit.key_frame,
                                         unit.sequence);
     if (!pushed) {
       failed(true, "decoder: " + pushed.error());
       decoder.reset();  // a new one from the next key frame
-      return;
     }
-    if (!pushed.value()) return;
-    std::lock_guard<std::mutex> lock(mutex);
-    in_decoder.emplace_back(unit.sequence, std::make_pair(unit.received_us, unit.pts_ms));
-    while (in_decoder.size() > 64) in_decoder.pop_front();
   }
 
   // On the decoder's thread.
@@ -168,11 +170,11 @@ struct AccessUnitSource::State : SourceState {
     frame.sequence = picture.tag;
     {
       std::lock_guard<std::mutex> lock(mutex);
-      for (const auto& [sequence, times] : in_decoder) {
-        if (sequence != picture.tag) continue;
-        frame.received_us = times.first;
-        frame.pts_ms = times.second;
-      }
+      const auto times = std::find_if(in_decoder.begin(), in_decoder.end(),
+                                      [&](const auto& entry) { return entry.first == picture.tag; });
+      if (times == in_decoder.end()) return;  // not a picture of ours (cannot happen): no stamp
+      frame.received_us = times->second.first;
+      frame.pts_ms = times->second.second;
       if (latest && latest->sequence >= frame.sequence) return;
       ++decoded;
       latest = std::move(frame);

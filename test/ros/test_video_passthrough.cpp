@@ -9,6 +9,7 @@
 //     properties for docs/video.md, not asserted;
 //   - a late subscriber through the plugin gets its first picture within one key-frame interval
 //     of access units;
+//   - with only encoded subscribers, the node publishes no image (diagnostics' counters);
 //   - the plugin's publisher side: an image stream of this node encoded to H.264 and decoded back;
 //   - `rosrun image_transport list_transports` lists the transport.
 #include <gtest/gtest.h>
@@ -26,6 +27,7 @@
 #include <thread>
 #include <vector>
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <image_transport/image_transport.h>
 #include <ros/ros.h>
 #include <opencv2/imgproc.hpp>
@@ -227,6 +229,35 @@ TEST_F(VideoPassthrough, PluginPicturesMatchImageRawAndALateSubscriberStartsAtAK
   RecordProperty("late_subscriber_ms", std::to_string(waited_ms));
   // Its connection comes up a few frames after the counter's was already there: allow 3 more.
   EXPECT_LE(*units_before_picture, kKeyInterval + 3);
+
+  // Only encoded subscribers left: the node publishes access units and no image (it decodes
+  // only for image_raw's subscribers), as its diagnostics count them.
+  raw_sub.shutdown();
+  std::mutex diag_mutex;
+  std::vector<std::pair<long, long>> counts;  // (frames published, access units published)
+  ros::Subscriber diagnostics = nh.subscribe<diagnostic_msgs::DiagnosticArray>(
+      "/diagnostics", 20, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& array) {
+        for (const auto& status : array->status) {
+          long frames = -1, units = -1;
+          for (const auto& kv : status.values) {
+            if (kv.key == "frames published") frames = std::stol(kv.value);
+            if (kv.key == "access units published (passthrough)") units = std::stol(kv.value);
+          }
+          std::lock_guard<std::mutex> lock(diag_mutex);
+          if (frames >= 0 && units >= 0) counts.emplace_back(frames, units);
+        }
+      });
+  std::this_thread::sleep_for(std::chrono::milliseconds(700));  // image_raw's last frames go out
+  {
+    std::lock_guard<std::mutex> lock(diag_mutex);
+    counts.clear();
+  }
+  ASSERT_TRUE(wait_until([&] {
+    std::lock_guard<std::mutex> lock(diag_mutex);
+    return counts.size() >= 2 && counts.back().second - counts.front().second >= 30;
+  }, 5)) << "no diagnostics, or no access units";
+  std::lock_guard<std::mutex> lock(diag_mutex);
+  EXPECT_EQ(counts.back().first, counts.front().first) << "images published without subscribers";
 }
 
 TEST(VideoTransport, ThePublisherSideEncodesAnyImageStream) {

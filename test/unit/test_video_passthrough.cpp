@@ -131,6 +131,33 @@ TEST(VideoPassthrough, AStoppedServerIsNoticedAndTheUnitsComeBack) {
   EXPECT_GE(source.stats().reconnects, 1u);
 }
 
+// What the k40t_video subscriber plugin relies on: from the first key frame on, each access unit
+// of the stream gives one picture, at once.
+TEST(VideoPassthrough, EachAccessUnitDecodesToOnePictureAtOnce) {
+  Stream stream(ImageMode::kThermal, 0, kKeyInterval);
+  Received received;
+  AccessUnitSource source(options_for(stream.url()), keep_in(received));
+  source.start();
+  ASSERT_TRUE(wait_until([&] { return received.size() >= 3 * kKeyInterval; }, seconds(15)));
+  source.stop();
+  auto decoder = VideoDecoder::create(Codec::kH264);
+  ASSERT_TRUE(decoder) << decoder.error();
+  int pictures = 0;
+  for (const AccessUnit& unit : received.copy()) {
+    Result<bool> pushed =
+        decoder.value()->push(unit.bytes.data(), unit.bytes.size(), unit.key_frame, unit.sequence);
+    ASSERT_TRUE(pushed) << pushed.error();
+    if (!pushed.value()) continue;
+    auto picture = decoder.value()->pull(std::chrono::milliseconds(1000));
+    ASSERT_TRUE(picture) << "unit " << unit.sequence << " (" << unit.bytes.size()
+                         << " bytes, key " << unit.key_frame << ") after " << pictures
+                         << " pictures: " << decoder.value()->error();
+    EXPECT_EQ(picture->tag, unit.sequence);
+    ++pictures;
+  }
+  EXPECT_GE(pictures, 2 * kKeyInterval);
+}
+
 TEST(VideoPassthrough, TheFrameSizeFollowsTheImageMode) {
   Stream stream(ImageMode::kThermal, 0, kKeyInterval);
   std::mutex mutex;

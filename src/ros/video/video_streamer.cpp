@@ -21,7 +21,7 @@ bool changes_frame_size(std::optional<int> before, int after) {
 image_transport::CameraPublisher advertise_raw(ros::NodeHandle& nh,
                                                image_transport::ImageTransport& transport) {
   nh.setParam("image_raw/disable_pub_plugins",
-              std::vector<std::string>{kVideoTransportPublisherPlugin});
+              std::vector<std::string>{kVideoTransportLookupName});
   return transport.advertiseCamera("image_raw", 1);
 }
 
@@ -122,6 +122,9 @@ void VideoStreamer::publish_unit(const video::AccessUnit& unit) {
   auto message = boost::make_shared<k40t_driver::CompressedVideo>();
   message->header = header_for(unit.sequence, unit.received_us, unit.pts_ms,
                                cv::Size(unit.width, unit.height));
+  // Consecutive while the stream runs: a subscriber sees a lost message as a gap and waits for
+  // the next key frame instead of decoding pictures whose references are missing.
+  message->header.seq = static_cast<uint32_t>(unit.sequence);
   message->format = video::to_string(unit.codec);
   message->data = unit.bytes;
   message->key_frame = unit.key_frame;

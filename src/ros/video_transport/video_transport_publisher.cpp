@@ -44,6 +44,7 @@ void VideoTransportPublisher::publish(const sensor_msgs::Image& image,
   last_error_.clear();
   k40t_driver::CompressedVideo message;
   message.header = image.header;
+  message.header.seq = ++seq_;  // consecutive: the subscriber notices a lost message
   message.format = video::to_string(video::Codec::kH264);
   message.data = std::move(unit->bytes);
   message.key_frame = unit->key_frame;

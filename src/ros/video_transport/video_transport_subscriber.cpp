@@ -9,7 +9,8 @@ namespace k40t::driver {
 
 namespace {
 
-constexpr std::chrono::milliseconds kDecodeTimeout{1000};
+// Far above a frame's decoding time; a picture the decoder drops (damaged) costs this once.
+constexpr std::chrono::milliseconds kDecodeTimeout{500};
 
 }  // namespace
 

@@ -37,6 +37,7 @@ class VideoTransportPublisher
   mutable std::mutex mutex_;
   mutable std::unique_ptr<video::VideoEncoder> encoder_;
   mutable std::string last_error_;  // logged once per new error, not per frame
+  mutable uint32_t seq_ = 0;
 };
 
 class VideoTransportSubscriber
