@@ -71,8 +71,9 @@ int main(int argc, char** argv) {
   if (kind == "passthrough") {
     units = nh.subscribe("image_raw/k40t_video", 30, &on_unit, ros::TransportHints().tcpNoDelay());
   } else {
-    images = it.subscribe("image_raw", 2, &on_image, ros::VoidPtr(),
-                          image_transport::TransportHints(kind, ros::TransportHints().tcpNoDelay()));
+    images =
+        it.subscribe("image_raw", 2, &on_image, ros::VoidPtr(),
+                     image_transport::TransportHints(kind, ros::TransportHints().tcpNoDelay()));
   }
   ros::AsyncSpinner spinner(1);
   spinner.start();
@@ -84,9 +85,10 @@ int main(int argc, char** argv) {
   }
   ros::WallDuration(seconds).sleep();
   std::lock_guard<std::mutex> lock(mutex);
-  std::printf("%s: %.1f msg/s, %.0f bytes/s (%.3f MB/s), latency render->here p50 %.1f ms p90 %.1f ms\n",
-              label.c_str(), messages / seconds, bytes / seconds, bytes / seconds / 1e6,
-              percentile(latency_ms, 0.5), percentile(latency_ms, 0.9));
+  std::printf(
+      "%s: %.1f msg/s, %.0f bytes/s (%.3f MB/s), latency render->here p50 %.1f ms p90 %.1f ms\n",
+      label.c_str(), messages / seconds, bytes / seconds, bytes / seconds / 1e6,
+      percentile(latency_ms, 0.5), percentile(latency_ms, 0.9));
   std::fflush(stdout);
   return 0;
 }

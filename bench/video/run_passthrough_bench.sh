@@ -40,12 +40,15 @@ sleep 3
 measure() {  # measure TITLE MODE
   local title="$1" mode="$2"
   echo "== $title" | tee -a "$results"
-  coproc SIM { exec "$bin/k40t_video_sim" --port 0 --mode "$mode" --gimbal 0,-4 --sweep 2; }
-  local sim_pid=$SIM_PID
+  "$bin/k40t_video_sim" --port 0 --mode "$mode" --gimbal 0,-4 --sweep 2 > "$out/sim-$mode.log" 2>&1 &
+  local sim_pid=$!
   pids+=("$sim_pid")
-  local line url
-  read -r line <&"${SIM[0]}"
-  url="rtsp://${line#*rtsp://}"
+  local url=""
+  for _ in $(seq 50); do  # its first line: "k40t_video_sim: serving rtsp://..."
+    url="$(grep -o 'rtsp://[^ ]*' "$out/sim-$mode.log" | head -1)"
+    [ -n "$url" ] && break
+    sleep 0.1
+  done
   "$bin/k40t_video_node" __name:=video __ns:=/bench _url:="$url" _latency:=0.0 \
     > "$out/video-$mode.log" 2>&1 &
   local video_pid=$!

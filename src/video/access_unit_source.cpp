@@ -25,11 +25,11 @@ using Clock = std::chrono::steady_clock;
 std::string access_unit_pipeline(const CaptureOptions& options) {
   const long long open_us = std::llround(options.open_timeout_s * 1e6);
   const long long read_ms = std::llround(options.read_timeout_s * 1000);
-  return std::string("rtspsrc location=\"") + options.url +
+  return std::string("rtspsrc name=source location=\"") + options.url +
          "\" latency=0 protocols=" + to_string(options.transport) +
-         " tcp-timeout=" + std::to_string(open_us) + " timeout=" + std::to_string(open_us) +
-         " ! parsebin name=parse " + kStallGuardElement + " name=guard timeout=" +
-         std::to_string(read_ms) + " ! appsink name=units sync=false enable-last-sample=false";
+         " tcp-timeout=" + std::to_string(open_us) + " timeout=" + std::to_string(open_us) + " " +
+         kStallGuardElement + " name=guard timeout=" + std::to_string(read_ms) +
+         " ! appsink name=units sync=false enable-last-sample=false";
 }
 
 namespace {
@@ -40,38 +40,40 @@ int64_t now_us() {
       .count();
 }
 
-// parsebin (depayloader + parser, whichever the stream needs) settles on the parser's preferred
-// output (AVC, parameter sets out of band); a second parser of the same codec behind it turns
-// that into Annex B access units with the parameter sets repeated before every key frame.
-void on_parsed_pad(GstElement* parsebin, GstPad* pad, gpointer) {
+// The depayloader and parser of the codec rtspsrc announces (RTP caps' encoding-name), linked
+// in when its pad appears. The capsfilter before the parser makes the depayloader hand on whole
+// access units (it completes one at the RTP marker bit); left to choose, it sends single NAL
+// units and the parser can close an access unit only when the next one starts: a frame late.
+// config-interval=-1 repeats the parameter sets before every key frame, also when the pod sends
+// them only in the SDP.
+void on_rtp_pad(GstElement* rtspsrc, GstPad* pad, gpointer) {
   GstCaps* caps = gst_pad_get_current_caps(pad);
   if (!caps) caps = gst_pad_query_caps(pad, nullptr);
-  const std::string media = gst_structure_get_name(gst_caps_get_structure(caps, 0));
-  gst_caps_unref(caps);
+  const gchar* encoding =
+      gst_structure_get_string(gst_caps_get_structure(caps, 0), "encoding-name");
   std::optional<Codec> codec;
-  if (media == "video/x-h264") codec = Codec::kH264;
-  if (media == "video/x-h265") codec = Codec::kH265;
+  if (encoding && std::strcmp(encoding, "H264") == 0) codec = Codec::kH264;
+  if (encoding && std::strcmp(encoding, "H265") == 0) codec = Codec::kH265;
+  gst_caps_unref(caps);
   if (!codec) return;  // audio or another stream: left unlinked
-  GstBin* bin = GST_BIN(gst_element_get_parent(parsebin));
-  GstElement* guard = gst_bin_get_by_name(bin, "guard");
-  GstElement* parser = gst_element_factory_make(*codec == Codec::kH265 ? "h265parse" : "h264parse",
-                                                nullptr);
-  GstElement* filter = gst_element_factory_make("capsfilter", nullptr);
-  if (guard && parser && filter) {
-    g_object_set(parser, "config-interval", -1, nullptr);
-    GstCaps* annex_b = gst_caps_from_string(access_unit_caps(*codec).c_str());
-    g_object_set(filter, "caps", annex_b, nullptr);
-    gst_caps_unref(annex_b);
-    gst_bin_add_many(bin, parser, filter, nullptr);
-    gst_element_link_many(parser, filter, guard, nullptr);
-    gst_element_sync_state_with_parent(filter);
-    gst_element_sync_state_with_parent(parser);
-    GstPad* sink = gst_element_get_static_pad(parser, "sink");
-    gst_pad_link(pad, sink);
-    gst_object_unref(sink);
-  }
-  if (guard) gst_object_unref(guard);
-  gst_object_unref(bin);
+  const std::string name = *codec == Codec::kH265 ? "h265" : "h264";
+  const std::string chain = "rtp" + name + "depay ! video/x-" + name + ",alignment=au ! " + name +
+                            "parse config-interval=-1 ! capsfilter caps=\"" +
+                            access_unit_caps(*codec) + "\"";
+  GError* error = nullptr;
+  GstElement* bin = gst_parse_bin_from_description(chain.c_str(), TRUE, &error);
+  if (error) g_error_free(error);
+  if (!bin) return;  // the stall guard ends the stream: reported, retried
+  GstBin* pipeline = GST_BIN(gst_element_get_parent(rtspsrc));
+  GstElement* guard = gst_bin_get_by_name(pipeline, "guard");
+  gst_bin_add(pipeline, bin);
+  gst_element_link(bin, guard);
+  gst_element_sync_state_with_parent(bin);
+  GstPad* sink = gst_element_get_static_pad(bin, "sink");
+  gst_pad_link(pad, sink);
+  gst_object_unref(sink);
+  gst_object_unref(guard);
+  gst_object_unref(pipeline);
 }
 
 }  // namespace
@@ -153,8 +155,8 @@ struct AccessUnitSource::State : SourceState {
       in_decoder.emplace_back(unit.sequence, std::make_pair(unit.received_us, unit.pts_ms));
       while (in_decoder.size() > 64) in_decoder.pop_front();
     }
-    Result<bool> pushed = decoder->push(unit.bytes.data(), unit.bytes.size(), unit.key_frame,
-                                        unit.sequence);
+    Result<bool> pushed =
+        decoder->push(unit.bytes.data(), unit.bytes.size(), unit.key_frame, unit.sequence);
     if (!pushed) {
       failed(true, "decoder: " + pushed.error());
       decoder.reset();  // a new one from the next key frame
@@ -170,8 +172,9 @@ struct AccessUnitSource::State : SourceState {
     frame.sequence = picture.tag;
     {
       std::lock_guard<std::mutex> lock(mutex);
-      const auto times = std::find_if(in_decoder.begin(), in_decoder.end(),
-                                      [&](const auto& entry) { return entry.first == picture.tag; });
+      const auto times = std::find_if(in_decoder.begin(), in_decoder.end(), [&](const auto& entry) {
+        return entry.first == picture.tag;
+      });
       if (times == in_decoder.end()) return;  // not a picture of ours (cannot happen): no stamp
       frame.received_us = times->second.first;
       frame.pts_ms = times->second.second;
@@ -188,8 +191,7 @@ struct AccessUnitSource::State : SourceState {
     while (is_running()) {
       if (take_restart()) break;
       GstMessage* message = gst_bus_timed_pop_filtered(
-          bus, 100 * GST_MSECOND,
-          static_cast<GstMessageType>(GST_MESSAGE_ERROR | GST_MESSAGE_EOS));
+          bus, 100 * GST_MSECOND, static_cast<GstMessageType>(GST_MESSAGE_ERROR | GST_MESSAGE_EOS));
       if (!message) continue;
       std::string error = "the stream ended or stalled (no frame within the read timeout)";
       if (GST_MESSAGE_TYPE(message) == GST_MESSAGE_ERROR) {
@@ -216,9 +218,9 @@ struct AccessUnitSource::State : SourceState {
     Result<GstElement*> launched = launch_pipeline(access_unit_pipeline(capture), "stream");
     if (!launched) return launched.status();
     GstElement* pipeline = launched.value();
-    GstElement* parsebin = gst_bin_get_by_name(GST_BIN(pipeline), "parse");
-    g_signal_connect(parsebin, "pad-added", G_CALLBACK(on_parsed_pad), nullptr);
-    gst_object_unref(parsebin);
+    GstElement* rtspsrc = gst_bin_get_by_name(GST_BIN(pipeline), "source");
+    g_signal_connect(rtspsrc, "pad-added", G_CALLBACK(on_rtp_pad), nullptr);
+    gst_object_unref(rtspsrc);
     GstElement* appsink = gst_bin_get_by_name(GST_BIN(pipeline), "units");
     GstAppSinkCallbacks callbacks{};
     callbacks.new_sample = &State::new_sample;

@@ -13,7 +13,8 @@ namespace k40t::video {
 namespace {
 
 bool ends_with(const std::string& text, const std::string& tail) {
-  return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+  return text.size() >= tail.size() &&
+         text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
 }
 
 // The bus's first error (or nothing), waiting up to `timeout` for it or for end-of-stream.
@@ -71,9 +72,9 @@ Result<std::unique_ptr<ContainerWriter>> ContainerWriter::open(const std::string
   const std::string parser = codec == Codec::kH265 ? "h265parse" : "h264parse";
   const std::string muxer = container.value() == Container::kMp4 ? "mp4mux" : "matroskamux";
   // Not live, blocking when 4 MB are queued: a long bag streams through in bounded memory.
-  const std::string description = "appsrc name=in format=time block=true max-bytes=4000000 caps=\"" +
-                                  access_unit_caps(codec) + "\" ! " + parser + " ! " + muxer +
-                                  " ! filesink location=\"" + path + "\"";
+  const std::string description =
+      "appsrc name=in format=time block=true max-bytes=4000000 caps=\"" + access_unit_caps(codec) +
+      "\" ! " + parser + " ! " + muxer + " ! filesink location=\"" + path + "\"";
   Result<GstElement*> pipeline = launch_pipeline(description, muxer);
   if (!pipeline) return pipeline.status();
   auto impl = std::make_unique<Impl>();

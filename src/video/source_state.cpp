@@ -49,8 +49,7 @@ void SourceState::stop(std::chrono::duration<double> grace) {
 std::optional<GrabbedFrame> SourceState::wait_newer(uint64_t after,
                                                     std::chrono::milliseconds timeout) {
   std::unique_lock<std::mutex> lock(mutex);
-  changed.wait_for(lock, timeout,
-                   [&] { return !running || (latest && latest->sequence > after); });
+  changed.wait_for(lock, timeout, [&] { return !running || (latest && latest->sequence > after); });
   if (latest && latest->sequence > after) return latest;
   return std::nullopt;
 }

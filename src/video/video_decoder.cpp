@@ -48,8 +48,7 @@ Result<std::unique_ptr<VideoDecoder>> VideoDecoder::create(Codec codec) {
   // Slice threads only: libav's frame threads hold one frame per thread back. No corrupt frames:
   // a picture whose references are missing is dropped, not shown grey.
   auto pipeline = AppPipeline::create(
-      access_unit_caps(codec),
-      decoder + " thread-type=slice output-corrupt=false ! videoconvert",
+      access_unit_caps(codec), decoder + " thread-type=slice output-corrupt=false ! videoconvert",
       "video/x-raw,format=I420");
   if (!pipeline) return pipeline.status();
   return std::unique_ptr<VideoDecoder>(new VideoDecoder(codec, std::move(pipeline.value())));
@@ -70,7 +69,8 @@ std::optional<DecodedFrame> VideoDecoder::pull(std::chrono::milliseconds timeout
 
 void VideoDecoder::on_frame(std::function<void(DecodedFrame)> callback) {
   pipeline_->on_sample([callback = std::move(callback)](PipelineSample sample) {
-    if (std::optional<DecodedFrame> frame = to_frame(std::move(sample))) callback(std::move(*frame));
+    if (std::optional<DecodedFrame> frame = to_frame(std::move(sample)))
+      callback(std::move(*frame));
   });
 }
 

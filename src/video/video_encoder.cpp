@@ -49,9 +49,9 @@ Result<std::unique_ptr<VideoEncoder>> VideoEncoder::create(const std::string& en
   if (!has_gstreamer_element("x264enc"))
     return Status::fail("GStreamer has no x264enc (Debian: gstreamer1.0-plugins-ugly)");
   const std::string input = std::string("video/x-raw,format=") + format->second.gstreamer +
-                            ",width=" + std::to_string(width) + ",height=" +
-                            std::to_string(height) + ",framerate=" + std::to_string(options.fps) +
-                            "/1";
+                            ",width=" + std::to_string(width) +
+                            ",height=" + std::to_string(height) +
+                            ",framerate=" + std::to_string(options.fps) + "/1";
   // Zero-latency tuning: no B-frames, no look-ahead, one access unit out per frame in; the
   // parser repeats SPS/PPS before every key frame so that a late subscriber can start there.
   const std::string middle =

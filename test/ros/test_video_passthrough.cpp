@@ -32,9 +32,9 @@
 #include <ros/ros.h>
 #include <opencv2/imgproc.hpp>
 
+#include "../unit/video_test_support.h"
 #include "k40t_driver/CompressedVideo.h"
 #include "k40t_driver/sim/video/frame_stamp.h"
-#include "../unit/video_test_support.h"
 
 namespace {
 
@@ -146,10 +146,9 @@ class VideoPassthrough : public ::testing::Test {
         std::vector<std::string>{"--mode", "0", "--key-interval", std::to_string(kKeyInterval),
                                  "--sweep", "20"});
     ASSERT_FALSE(sim_->url().empty()) << "k40t_video_sim did not start";
-    video_ = std::make_unique<Child>(
-        std::vector<std::string>{dir + "/k40t_video_node", "__name:=video",
-                                 "__ns:=" + ros::this_node::getNamespace(), "_url:=" + sim_->url(),
-                                 "_latency:=0.01"});
+    video_ = std::make_unique<Child>(std::vector<std::string>{
+        dir + "/k40t_video_node", "__name:=video", "__ns:=" + ros::this_node::getNamespace(),
+        "_url:=" + sim_->url(), "_latency:=0.01"});
   }
   std::unique_ptr<k40t::video::testing::SimStreamProcess> sim_;
   std::unique_ptr<Child> video_;
@@ -160,11 +159,12 @@ TEST_F(VideoPassthrough, PluginPicturesMatchImageRawAndALateSubscriberStartsAtAK
   image_transport::ImageTransport it(nh);
   ImageLog raw;
   ImageLog decoded;
-  auto raw_sub = it.subscribe("image_raw", 10, [&](const sensor_msgs::ImageConstPtr& m) { raw.add(m); },
-                              ros::VoidPtr(), image_transport::TransportHints("raw"));
-  auto video_sub =
-      it.subscribe("image_raw", 10, [&](const sensor_msgs::ImageConstPtr& m) { decoded.add(m); },
-                   ros::VoidPtr(), image_transport::TransportHints("k40t_video"));
+  auto raw_sub = it.subscribe(
+      "image_raw", 10, [&](const sensor_msgs::ImageConstPtr& m) { raw.add(m); }, ros::VoidPtr(),
+      image_transport::TransportHints("raw"));
+  auto video_sub = it.subscribe(
+      "image_raw", 10, [&](const sensor_msgs::ImageConstPtr& m) { decoded.add(m); }, ros::VoidPtr(),
+      image_transport::TransportHints("k40t_video"));
   ASSERT_EQ(video_sub.getTransport(), "k40t_video");
   ASSERT_TRUE(wait_until([&] { return raw.size() > 0 && decoded.size() > 0; }, 15))
       << "raw " << raw.size() << ", through the plugin " << decoded.size();
@@ -187,9 +187,10 @@ TEST_F(VideoPassthrough, PluginPicturesMatchImageRawAndALateSubscriberStartsAtAK
   }
   // image_raw drops frames when its subscriber is slow; most stamps are in both.
   EXPECT_GE(matched, decoded_frames.size() / 2) << matched << " of " << decoded_frames.size();
-  std::printf("[ MEASURED ] plugin after image_raw p50 %.1f ms; render->image_raw p50 %.1f ms; "
-              "render->plugin p50 %.1f ms (%zu frames)\n",
-              median(extra_ms), median(raw_ms), median(plugin_ms), matched);
+  std::printf(
+      "[ MEASURED ] plugin after image_raw p50 %.1f ms; render->image_raw p50 %.1f ms; "
+      "render->plugin p50 %.1f ms (%zu frames)\n",
+      median(extra_ms), median(raw_ms), median(plugin_ms), matched);
   RecordProperty("plugin_after_raw_p50_ms", std::to_string(median(extra_ms)));
   RecordProperty("render_to_raw_p50_ms", std::to_string(median(raw_ms)));
   RecordProperty("render_to_plugin_p50_ms", std::to_string(median(plugin_ms)));
@@ -203,10 +204,12 @@ TEST_F(VideoPassthrough, PluginPicturesMatchImageRawAndALateSubscriberStartsAtAK
         std::lock_guard<std::mutex> lock(mutex);
         ++units_seen;
       });
-  ASSERT_TRUE(wait_until([&] {
-    std::lock_guard<std::mutex> lock(mutex);
-    return units_seen > 0;
-  }, 5));
+  ASSERT_TRUE(wait_until(
+      [&] {
+        std::lock_guard<std::mutex> lock(mutex);
+        return units_seen > 0;
+      },
+      5));
   {
     std::lock_guard<std::mutex> lock(mutex);
     units_seen = 0;
@@ -219,10 +222,13 @@ TEST_F(VideoPassthrough, PluginPicturesMatchImageRawAndALateSubscriberStartsAtAK
         if (!units_before_picture) units_before_picture = units_seen;
       },
       ros::VoidPtr(), image_transport::TransportHints("k40t_video"));
-  ASSERT_TRUE(wait_until([&] {
-    std::lock_guard<std::mutex> lock(mutex);
-    return units_before_picture.has_value();
-  }, 10)) << "no picture for the late subscriber";
+  ASSERT_TRUE(wait_until(
+      [&] {
+        std::lock_guard<std::mutex> lock(mutex);
+        return units_before_picture.has_value();
+      },
+      10))
+      << "no picture for the late subscriber";
   const double waited_ms = std::chrono::duration<double, std::milli>(Clock::now() - joined).count();
   std::printf("[ MEASURED ] late subscriber: first picture after %d access units, %.0f ms\n",
               *units_before_picture, waited_ms);
@@ -252,10 +258,13 @@ TEST_F(VideoPassthrough, PluginPicturesMatchImageRawAndALateSubscriberStartsAtAK
     std::lock_guard<std::mutex> lock(diag_mutex);
     counts.clear();
   }
-  ASSERT_TRUE(wait_until([&] {
-    std::lock_guard<std::mutex> lock(diag_mutex);
-    return counts.size() >= 2 && counts.back().second - counts.front().second >= 30;
-  }, 5)) << "no diagnostics, or no access units";
+  ASSERT_TRUE(wait_until(
+      [&] {
+        std::lock_guard<std::mutex> lock(diag_mutex);
+        return counts.size() >= 2 && counts.back().second - counts.front().second >= 30;
+      },
+      5))
+      << "no diagnostics, or no access units";
   std::lock_guard<std::mutex> lock(diag_mutex);
   EXPECT_EQ(counts.back().first, counts.front().first) << "images published without subscribers";
 }
@@ -265,9 +274,9 @@ TEST(VideoTransport, ThePublisherSideEncodesAnyImageStream) {
   image_transport::ImageTransport it(nh);
   image_transport::Publisher pub = it.advertise("other_camera/image", 5);
   ImageLog decoded;
-  auto sub = it.subscribe("other_camera/image", 50,
-                          [&](const sensor_msgs::ImageConstPtr& m) { decoded.add(m); },
-                          ros::VoidPtr(), image_transport::TransportHints("k40t_video"));
+  auto sub = it.subscribe(
+      "other_camera/image", 50, [&](const sensor_msgs::ImageConstPtr& m) { decoded.add(m); },
+      ros::VoidPtr(), image_transport::TransportHints("k40t_video"));
   ASSERT_TRUE(wait_until([&] { return pub.getNumSubscribers() > 0; }, 5));
   std::map<uint64_t, cv::Mat> sent;
   for (int i = 0; i < 40 && ros::ok(); ++i) {

@@ -30,7 +30,8 @@ cv::Mat test_picture(int width, int height, int shift) {
   return bgr;
 }
 
-std::vector<EncodedUnit> encode_frames(int count, int key_interval, std::vector<cv::Mat>* pictures) {
+std::vector<EncodedUnit> encode_frames(int count, int key_interval,
+                                       std::vector<cv::Mat>* pictures) {
   EncoderOptions options;
   options.key_frame_interval = key_interval;
   auto encoder = VideoEncoder::create("bgr8", 640, 480, options);

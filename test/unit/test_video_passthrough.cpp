@@ -149,8 +149,8 @@ TEST(VideoPassthrough, EachAccessUnitDecodesToOnePictureAtOnce) {
     ASSERT_TRUE(pushed) << pushed.error();
     if (!pushed.value()) continue;
     auto picture = decoder.value()->pull(std::chrono::milliseconds(1000));
-    ASSERT_TRUE(picture) << "unit " << unit.sequence << " (" << unit.bytes.size()
-                         << " bytes, key " << unit.key_frame << ") after " << pictures
+    ASSERT_TRUE(picture) << "unit " << unit.sequence << " (" << unit.bytes.size() << " bytes, key "
+                         << unit.key_frame << ") after " << pictures
                          << " pictures: " << decoder.value()->error();
     EXPECT_EQ(picture->tag, unit.sequence);
     ++pictures;

@@ -129,7 +129,8 @@ int run_video_export(const Command& self, const ParsedArgs& args) {
 int run_bag(const Command& self, const ParsedArgs& args) {
   if (args.positional.empty()) return usage_error(self, "give at least one bag");
   if (args.has("--video") || args.has("--video-frames")) return run_video_export(self, args);
-  if (args.has("--video-topic")) return usage_error(self, "--video-topic goes with --video or --video-frames");
+  if (args.has("--video-topic"))
+    return usage_error(self, "--video-topic goes with --video or --video-frames");
   if (args.has("--output") && args.positional.size() != 1)
     return usage_error(self, "--output takes one input bag; use --out-dir for several");
   Result<driver::RosPodConfig> config = read_config(args);
@@ -211,9 +212,11 @@ const Command& bag_command() {
         "one for every pod, or per namespace (/pod_a=pod_a_,/pod_b=pod_b_)"},
        {"--jsonl", "FILE", "also write every raw frame (rx and tx), decoded, as JSON lines"},
        {"--csv", "DIR", "also write every raw frame's fields to DIR/<id>_<name>.csv"},
-       {"--video", "FILE", "export the passthrough video to FILE (.mp4, .m4v, .mkv), no re-encoding"},
+       {"--video", "FILE",
+        "export the passthrough video to FILE (.mp4, .m4v, .mkv), no re-encoding"},
        {"--video-frames", "DIR", "export the passthrough video as PNG frames + frames.csv"},
-       {"--video-topic", "TOPIC", "the video topic (default: the bag's only CompressedVideo topic)"}},
+       {"--video-topic", "TOPIC",
+        "the video topic (default: the bag's only CompressedVideo topic)"}},
       &run_bag};
   return command;
 }

@@ -1,11 +1,13 @@
-// The pod's stream kept encoded: native GStreamer (rtspsrc ! parsebin — the RTP depayloader and
-// the H.264/H.265 parser — ! h264parse|h265parse ! k40tstallguard ! appsink) delivers one access
-// unit per coded picture, in Annex B form with the parameter sets repeated before every key frame
-// (the second parser's config-interval=-1: a pod that sends SPS/PPS only in the SDP still gives a
-// decodable key frame). Each access unit goes to the sink at once (the passthrough topic); it is decoded only
-// while someone wants pixels (set_decoding), from the next key frame on, and the newest decoded
-// frame waits for the consumer as with the OpenCV grabber (frames it was too slow for are
-// replaced, never queued). Reconnects as frame_grabber.h does: stall guard, RTSP probe, back-off.
+// The pod's stream kept encoded: native GStreamer (rtspsrc ! rtph264depay|rtph265depay !
+// h264parse|h265parse ! k40tstallguard ! appsink, the codec's elements linked in for the stream
+// rtspsrc announces) delivers one access unit per coded picture as soon as its last RTP packet
+// is in, in Annex B form with the parameter sets repeated before every key frame (the parser's
+// config-interval=-1: a pod that sends SPS/PPS only in the SDP still gives a decodable key
+// frame). Each access unit goes to the sink at once (the passthrough topic); it is
+// decoded only while someone wants pixels (set_decoding), from the next key frame on, and the
+// newest decoded frame waits for the consumer as with the OpenCV grabber (frames it was too slow
+// for are replaced, never queued). Reconnects as frame_grabber.h does: stall guard, RTSP probe,
+// back-off.
 #pragma once
 
 #include <functional>
@@ -19,8 +21,8 @@
 
 namespace k40t::video {
 
-// The pipeline description (rtspsrc ... parsebin name=parse, guard ! appsink name=units); the
-// second parser is linked in when parsebin has found the codec.
+// The pipeline description (rtspsrc name=source ..., guard ! appsink name=units); the codec's
+// depayloader and parser are linked in between when rtspsrc has announced the stream.
 std::string access_unit_pipeline(const CaptureOptions& options);
 
 class AccessUnitSource : public FrameSource {

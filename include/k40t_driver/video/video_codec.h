@@ -26,7 +26,7 @@ namespace k40t::video {
 enum class Codec { kH264, kH265 };
 
 Result<Codec> parse_codec(const std::string& format);  // "h264" | "h265"
-const char* to_string(Codec codec);                     // the message's `format`
+const char* to_string(Codec codec);                    // the message's `format`
 // GStreamer caps of one access unit per buffer in Annex B form.
 std::string access_unit_caps(Codec codec);
 

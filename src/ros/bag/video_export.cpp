@@ -9,9 +9,9 @@
 #include <optional>
 #include <set>
 
-#include <opencv2/imgcodecs.hpp>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
+#include <opencv2/imgcodecs.hpp>
 
 #include "k40t_driver/CompressedVideo.h"
 #include "k40t_driver/video/container_writer.h"
@@ -32,8 +32,8 @@ Result<std::string> pick_topic(rosbag::Bag& bag, const std::string& wanted) {
   if (!wanted.empty()) {
     if (video.count(wanted)) return wanted;
     return Result<std::string>::fail(
-        "topic " + wanted + (others.count(wanted) ? " is not " + std::string(kVideoType)
-                                                  : " is not in the bag"));
+        "topic " + wanted +
+        (others.count(wanted) ? " is not " + std::string(kVideoType) : " is not in the bag"));
   }
   if (video.size() == 1) return *video.begin();
   if (video.empty())
@@ -98,8 +98,8 @@ struct Exporter {
   Status add(const k40t_driver::CompressedVideo& m) {
     ++summary.messages;
     Result<video::Codec> codec = video::parse_codec(m.format);
-    if (!codec) return Status::fail("message " + std::to_string(summary.messages) + ": " +
-                                    codec.error());
+    if (!codec)
+      return Status::fail("message " + std::to_string(summary.messages) + ": " + codec.error());
     if (summary.format.empty()) summary.format = m.format;
     if (summary.format != m.format)
       return Status::fail("the topic changes format from " + summary.format + " to " + m.format);

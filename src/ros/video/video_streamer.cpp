@@ -20,8 +20,7 @@ bool changes_frame_size(std::optional<int> before, int after) {
 // the plugin would re-encode the decoded frames into the same topic.
 image_transport::CameraPublisher advertise_raw(ros::NodeHandle& nh,
                                                image_transport::ImageTransport& transport) {
-  nh.setParam("image_raw/disable_pub_plugins",
-              std::vector<std::string>{kVideoTransportLookupName});
+  nh.setParam("image_raw/disable_pub_plugins", std::vector<std::string>{kVideoTransportLookupName});
   return transport.advertiseCamera("image_raw", 1);
 }
 
@@ -120,8 +119,8 @@ std_msgs::Header VideoStreamer::header_for(uint64_t sequence, int64_t received_u
 void VideoStreamer::publish_unit(const video::AccessUnit& unit) {
   if (passthrough_.getNumSubscribers() == 0) return;  // not even the stamp
   auto message = boost::make_shared<k40t_driver::CompressedVideo>();
-  message->header = header_for(unit.sequence, unit.received_us, unit.pts_ms,
-                               cv::Size(unit.width, unit.height));
+  message->header =
+      header_for(unit.sequence, unit.received_us, unit.pts_ms, cv::Size(unit.width, unit.height));
   // Consecutive while the stream runs: a subscriber sees a lost message as a gap and waits for
   // the next key frame instead of decoding pictures whose references are missing.
   message->header.seq = static_cast<uint32_t>(unit.sequence);

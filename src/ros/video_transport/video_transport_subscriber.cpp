@@ -1,5 +1,5 @@
-#include <pluginlib/class_list_macros.hpp>
 #include <ros/console.h>
+#include <pluginlib/class_list_macros.hpp>
 
 #include "k40t_driver/ros/video/bgr_message.h"
 #include "k40t_driver/ros/video/video_transport_name.h"

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
+#include <rosbag/bag.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
-#include <rosbag/bag.h>
 
 #include "k40t_driver/CompressedVideo.h"
 #include "k40t_driver/Frame.h"

@@ -16,18 +16,18 @@
 namespace k40t::driver {
 
 struct VideoExportOptions {
-  std::string topic;        // empty: the bag's only CompressedVideo topic
-  std::string video_file;   // empty: none
-  std::string frames_dir;   // empty: none
+  std::string topic;       // empty: the bag's only CompressedVideo topic
+  std::string video_file;  // empty: none
+  std::string frames_dir;  // empty: none
 };
 
 struct VideoExportSummary {
   std::string topic;
-  std::string format;        // h264 / h265
-  uint64_t messages = 0;     // read from the topic
-  uint64_t written = 0;      // access units in the video file
-  uint64_t frames = 0;       // PNG files
-  double duration_s = 0;     // first key frame to last message, by stamp
+  std::string format;     // h264 / h265
+  uint64_t messages = 0;  // read from the topic
+  uint64_t written = 0;   // access units in the video file
+  uint64_t frames = 0;    // PNG files
+  double duration_s = 0;  // first key frame to last message, by stamp
 };
 
 Result<VideoExportSummary> export_video(const std::string& bag_path,

@@ -3,9 +3,9 @@
 // publish their pictures with it.
 #pragma once
 
-#include <boost/make_shared.hpp>
 #include <sensor_msgs/Image.h>
 #include <sensor_msgs/image_encodings.h>
+#include <boost/make_shared.hpp>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
