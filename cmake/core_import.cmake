@@ -10,7 +10,8 @@ endif()
 find_package(OpenSSL REQUIRED)
 find_package(Boost 1.71 REQUIRED)  # k40t_core links Boost::headers
 find_package(PkgConfig REQUIRED)
-pkg_check_modules(K40T_GST REQUIRED IMPORTED_TARGET gstreamer-1.0 gstreamer-app-1.0 gstreamer-rtsp-1.0)
+pkg_check_modules(K40T_GST REQUIRED IMPORTED_TARGET gstreamer-1.0 gstreamer-app-1.0 gstreamer-rtsp-1.0
+                  gstreamer-video-1.0)
 pkg_check_modules(K40T_GST_RTSP_SERVER REQUIRED IMPORTED_TARGET gstreamer-rtsp-server-1.0)
 find_package(OpenCV REQUIRED COMPONENTS core imgproc videoio calib3d)
 include(${K40T_TARGETS_FILE})

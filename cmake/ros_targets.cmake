@@ -98,6 +98,8 @@ if(CATKIN_ENABLE_TESTING)
     target_link_libraries(${name} PRIVATE k40t_pod_nodelet k40t_video_nodelet k40t_skyport_nodelet
                                   GTest::gtest)
   endforeach()
+  # The passthrough test reads the simulator's frame stamps (render time) in the pixels.
+  target_link_libraries(test_video_passthrough PRIVATE k40t_sim_model)
 endif()
 
 # End-to-end benchmarks of the ROS layer (bench/ros/, run by bench/ros/run_ros_bench.sh): the

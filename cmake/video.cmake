@@ -1,13 +1,15 @@
 # Video, ROS-free:
 #   k40t_video      the RTSP client (src/video/): OpenCV videoio capture with the GStreamer or
-#                   FFmpeg back-end, the newest-frame grabber, stamps, zoom intrinsics;
+#                   FFmpeg back-end, the newest-frame grabber, the native GStreamer access-unit
+#                   source (passthrough), H.264 encoder/decoder, stamps, zoom intrinsics;
 #   src/sim/video/  the simulated pod's RTSP server and renderers, part of k40t_sim_model (sim.cmake
 #                   globs src/sim/ recursively): here it gets GStreamer's RTSP server and OpenCV,
 #                   and k40t_video for the split-screen layout both sides share; the unit tests and
 #                   benchmarks reach k40t_video through k40t_sim_model;
 #   k40t_video_sim  the standalone simulated stream (tools/k40t_video_sim/).
 find_package(PkgConfig REQUIRED)
-pkg_check_modules(K40T_GST REQUIRED IMPORTED_TARGET gstreamer-1.0 gstreamer-app-1.0 gstreamer-rtsp-1.0)
+pkg_check_modules(K40T_GST REQUIRED IMPORTED_TARGET gstreamer-1.0 gstreamer-app-1.0 gstreamer-rtsp-1.0
+                  gstreamer-video-1.0)
 pkg_check_modules(K40T_GST_RTSP_SERVER REQUIRED IMPORTED_TARGET gstreamer-rtsp-server-1.0)
 find_package(OpenCV REQUIRED COMPONENTS core imgproc videoio)
 

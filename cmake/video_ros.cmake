@@ -8,6 +8,7 @@ find_package(catkin REQUIRED COMPONENTS image_transport camera_info_manager)
 add_library(k40t_video_nodelet SHARED ${K40T_ROS_VIDEO_SOURCES})
 target_include_directories(k40t_video_nodelet SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
 target_link_libraries(k40t_video_nodelet PUBLIC k40t_ros_common k40t_video ${catkin_LIBRARIES})
+set(K40T_VIDEO_CATKIN_LIBRARIES ${catkin_LIBRARIES})
 set(catkin_INCLUDE_DIRS ${K40T_SAVED_CATKIN_INCLUDE_DIRS})
 set(catkin_LIBRARIES ${K40T_SAVED_CATKIN_LIBRARIES})
 
@@ -15,3 +16,16 @@ set(catkin_LIBRARIES ${K40T_SAVED_CATKIN_LIBRARIES})
 # in bench/bench_nodelet_plugins.xml): it reads the simulator's frame stamps.
 add_library(k40t_video_bench SHARED ${PROJECT_SOURCE_DIR}/bench/video/video_latency_probe.cpp)
 target_link_libraries(k40t_video_bench PUBLIC k40t_video_nodelet k40t_sim_model)
+
+# The k40t_video image_transport plugin pair (src/ros/video_transport/, k40t_video_plugins.xml):
+# H.264 through GStreamer both ways, for any image_transport publisher and subscriber.
+file(GLOB K40T_VIDEO_TRANSPORT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/video_transport/*.cpp)
+add_library(k40t_video_transport SHARED ${K40T_VIDEO_TRANSPORT_SOURCES})
+target_link_libraries(k40t_video_transport PUBLIC k40t_ros_common k40t_video
+                                                  ${K40T_VIDEO_CATKIN_LIBRARIES})
+install(TARGETS k40t_video_transport LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
+install(FILES k40t_video_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
+
+# The passthrough benchmark's subscriber (bench/video/run_passthrough_bench.sh).
+add_executable(k40t_passthrough_probe ${PROJECT_SOURCE_DIR}/bench/video/passthrough_probe.cpp)
+target_link_libraries(k40t_passthrough_probe PRIVATE k40t_video_nodelet k40t_sim_model)

@@ -8,7 +8,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev libboost-dev
   catkin ros-base-dev python3-rostest rosbash python3-rosbag python3-roslaunch
   libnodeletlib-tools libnodelet-dev pluginlib-dev
-  libtf2-ros-dev libtf2-geometry-msgs-dev libimage-transport-dev libcamera-info-manager-dev
+  libtf2-ros-dev libtf2-geometry-msgs-dev libimage-transport-dev image-transport-tools
+  libcamera-info-manager-dev
   libdiagnostic-updater-dev libcv-bridge-dev libopencv-dev python3-dynamic-reconfigure
   libdynamic-reconfigure-config-init-mutex-dev ros-robot-state-publisher
   ros-std-srvs libstd-srvs-dev ros-sensor-msgs libsensor-msgs-dev ros-nav-msgs libnav-msgs-dev
@@ -19,7 +20,7 @@ packages=(
   libactionlib-dev python3-actionlib libactionlib-msgs-dev python3-actionlib-msgs ros-actionlib-msgs
   libgstrtspserver-1.0-dev libgstreamer1.0-dev libgstreamer-plugins-base1.0-dev
   gstreamer1.0-plugins-good gstreamer1.0-plugins-bad gstreamer1.0-plugins-ugly gstreamer1.0-libav
-  gstreamer1.0-rtsp gstreamer1.0-tools
+  gstreamer1.0-rtsp gstreamer1.0-tools gstreamer1.0-plugins-base-apps
   libgeographiclib-dev libproj-dev proj-data
   librosbag-storage-dev libyaml-cpp-dev
 )

@@ -146,6 +146,10 @@ const std::vector<OptionSpec>& option_table() {
          o.rtsp_port = static_cast<int>(*port);
          return Status::ok();
        }},
+      Kinds::number<int>("--rtsp-key-interval", "N",
+                         "frames between key frames of the --rtsp-port stream (default 30: a "
+                         "late subscriber to the passthrough video waits up to N frames)",
+                         1, 600, [](SimOptions& o) -> int& { return o.rtsp_key_interval; }),
       Kinds::flag("--verbose", "print every frame sent and received",
                   [](SimOptions& o) -> bool& { return o.verbose; }),
       Kinds::flag("--help", "this text", [](SimOptions& o) -> bool& { return o.help; }),

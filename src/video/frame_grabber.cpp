@@ -1,7 +1,6 @@
 #include "k40t_driver/video/frame_grabber.h"
 
 #include <algorithm>
-#include <condition_variable>
 #include <mutex>
 #include <thread>
 #include <utility>
@@ -12,6 +11,7 @@
 #include "k40t_driver/transport/thread_name.h"
 #include "k40t_driver/video/capture_open.h"
 #include "k40t_driver/video/opencv_log_scope.h"
+#include "k40t_driver/video/source_state.h"
 
 namespace k40t::video {
 
@@ -24,36 +24,11 @@ cv::Mat to_bgr(const GrabbedFrame& frame) {
   return bgr;
 }
 
-// Shared by the grabber and its thread, so that a thread left blocked in a read after stop()
-// still has valid state to return to.
-struct FrameGrabber::State {
+// Shared by the grabber and its thread (source_state.h).
+struct FrameGrabber::State : SourceState {
   CaptureOptions capture;
   transport::ReconnectPolicy reconnect;
-
-  mutable std::mutex mutex;
-  std::condition_variable changed;
-  bool running = false;
-  bool exited = true;
-  bool restart_requested = false;
-  std::optional<GrabbedFrame> latest;
   uint64_t sequence = 0;
-  GrabberStats stats;
-
-  // Sleeps up to `delay` unless stopped; false once stopped.
-  bool pause(std::chrono::milliseconds delay) {
-    std::unique_lock<std::mutex> lock(mutex);
-    changed.wait_for(lock, delay, [this] { return !running; });
-    return running;
-  }
-  bool is_running() const {
-    std::lock_guard<std::mutex> lock(mutex);
-    return running;
-  }
-  // True once per restart() call.
-  bool take_restart() {
-    std::lock_guard<std::mutex> lock(mutex);
-    return std::exchange(restart_requested, false);
-  }
 
   void publish(cv::Mat pixels, int64_t received_us, std::optional<double> pts_ms) {
     GrabbedFrame frame;
@@ -71,13 +46,6 @@ struct FrameGrabber::State {
       stats.last_frame = Clock::now();
     }
     changed.notify_all();
-  }
-
-  void failed(bool opened, const std::string& error) {
-    std::lock_guard<std::mutex> lock(mutex);
-    ++(opened ? stats.read_errors : stats.open_failures);
-    stats.streaming = false;
-    stats.last_error = error;
   }
 
   enum class StreamEnd { kFailed, kRestart, kStopped };
@@ -136,10 +104,7 @@ struct FrameGrabber::State {
       }
       if (!pause(backoff.next())) break;
     }
-    std::lock_guard<std::mutex> lock(mutex);
-    stats.streaming = false;
-    exited = true;
-    changed.notify_all();
+    finish_thread();
   }
 };
 
@@ -163,41 +128,26 @@ FrameGrabber::~FrameGrabber() {
 }
 
 void FrameGrabber::start() {
-  std::lock_guard<std::mutex> lock(state_->mutex);
-  if (state_->running || !state_->exited) return;
-  state_->running = true;
-  state_->exited = false;
-  std::thread([state = state_] { state->run(); }).detach();
+  start_source_thread(state_);
 }
 
 void FrameGrabber::stop() {
-  std::unique_lock<std::mutex> lock(state_->mutex);
-  state_->running = false;
-  state_->changed.notify_all();
   // Every timeout the tuned configurations set ends a blocked read well within this.
-  const auto grace = std::chrono::duration<double>(state_->capture.open_timeout_s +
-                                                   state_->capture.read_timeout_s + 1.0);
-  state_->changed.wait_for(lock, grace, [this] { return state_->exited; });
+  state_->stop(std::chrono::duration<double>(state_->capture.open_timeout_s +
+                                             state_->capture.read_timeout_s + 1.0));
 }
 
 std::optional<GrabbedFrame> FrameGrabber::wait_newer(uint64_t after,
                                                      std::chrono::milliseconds timeout) {
-  std::unique_lock<std::mutex> lock(state_->mutex);
-  state_->changed.wait_for(lock, timeout, [&] {
-    return !state_->running || (state_->latest && state_->latest->sequence > after);
-  });
-  if (state_->latest && state_->latest->sequence > after) return state_->latest;
-  return std::nullopt;
+  return state_->wait_newer(after, timeout);
 }
 
 void FrameGrabber::restart() {
-  std::lock_guard<std::mutex> lock(state_->mutex);
-  state_->restart_requested = true;
+  state_->request_restart();
 }
 
 GrabberStats FrameGrabber::stats() const {
-  std::lock_guard<std::mutex> lock(state_->mutex);
-  return state_->stats;
+  return state_->stats_now();
 }
 
 }  // namespace k40t::video

@@ -81,6 +81,14 @@ TEST(SimOptions, EveryKindOfOptionIsParsed) {
   EXPECT_DOUBLE_EQ(options->pod.camera.sd.capacity_mb, 1000);
 }
 
+TEST(SimOptions, TheVideoKeyFrameIntervalIsSettable) {
+  EXPECT_EQ(parse_sim_options({})->rtsp_key_interval, 30);
+  const auto options = parse_sim_options({"--rtsp-port", "0", "--rtsp-key-interval", "15"});
+  ASSERT_TRUE(options) << options.error();
+  EXPECT_EQ(options->rtsp_key_interval, 15);
+  EXPECT_FALSE(parse_sim_options({"--rtsp-key-interval", "0"}));
+}
+
 TEST(SimOptions, RoslaunchArgumentsAreIgnored) {
   const auto options =
       parse_sim_options({"__name:=pod_sim", "--help", "__log:=/tmp/log/pod_sim-1.log"});

@@ -14,6 +14,7 @@
 #include "k40t_driver/sim/video/rtsp_stream_server.h"
 #include "k40t_driver/video/capture_open.h"
 #include "k40t_driver/video/frame_grabber.h"
+#include "video_stream_fixture.h"
 #include "video_test_support.h"
 
 namespace k40t::video {
@@ -22,37 +23,10 @@ namespace {
 using sim::video::ImageMode;
 using sim::video::RtspServerOptions;
 using sim::video::RtspStreamServer;
-using sim::video::VideoSnapshot;
 using std::chrono::milliseconds;
 using std::chrono::seconds;
+using testing::Stream;
 using testing::wait_until;
-
-class Stream {
- public:
-  explicit Stream(ImageMode mode, int port = 0) {
-    snapshot_.image_mode = mode;
-    RtspServerOptions options;
-    options.port = port;
-    options.key_frame_interval = 10;  // a new client gets a picture within a third of a second
-    auto server = RtspStreamServer::start(options, [this] {
-      std::lock_guard<std::mutex> lock(mutex_);
-      return snapshot_;
-    });
-    EXPECT_TRUE(server) << server.error();
-    if (server) server_ = std::move(server.value());
-  }
-  std::string url() const { return server_ ? server_->url() : ""; }
-  void set_mode(ImageMode mode) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    snapshot_.image_mode = mode;
-  }
-  void stop() { server_.reset(); }
-
- private:
-  std::mutex mutex_;
-  VideoSnapshot snapshot_;
-  std::unique_ptr<RtspStreamServer> server_;
-};
 
 CaptureOptions options_for(const std::string& url, Backend backend) {
   CaptureOptions o;

@@ -16,10 +16,15 @@
 
 namespace k40t::video::testing {
 
-// k40t_video_sim started with `args` (plus --port 0); url() is what it printed it serves.
+// k40t_video_sim (the unit tests': K40T_BINARY_DIR's; or `program`) started with `args` (plus
+// --port 0); url() is what it printed it serves. Also used by the passthrough rostest.
 class SimStreamProcess {
  public:
-  explicit SimStreamProcess(std::vector<std::string> args) {
+#ifdef K40T_BINARY_DIR
+  explicit SimStreamProcess(std::vector<std::string> args)
+      : SimStreamProcess(std::string(K40T_BINARY_DIR) + "/k40t_video_sim", std::move(args)) {}
+#endif
+  SimStreamProcess(const std::string& program, std::vector<std::string> args) {
     int out[2];
     if (pipe(out) != 0) return;
     pid_ = fork();
@@ -27,7 +32,6 @@ class SimStreamProcess {
       dup2(out[1], STDOUT_FILENO);
       close(out[0]);
       close(out[1]);
-      const std::string program = std::string(K40T_BINARY_DIR) + "/k40t_video_sim";
       std::vector<std::string> all{program, "--port", "0"};
       all.insert(all.end(), args.begin(), args.end());
       std::vector<char*> argv;

@@ -14,6 +14,7 @@
 
 #include "command.h"  // tools/k40t: argument parsing and help shared with the other subcommands
 #include "k40t_driver/ros/bag/bag_decoder.h"
+#include "k40t_driver/ros/bag/video_export.h"
 #include "k40t_driver/ros/bag/yaml_params.h"
 #include "progress_bar.h"
 
@@ -103,8 +104,39 @@ bool decode_one(const std::string& input, const std::string& output, BagDecodeOp
   return true;
 }
 
+// --video / --video-frames: the recorded passthrough topic out of one bag (video_export.h).
+int run_video_export(const Command& self, const ParsedArgs& args) {
+  if (args.positional.size() != 1)
+    return usage_error(self, "--video and --video-frames take one input bag");
+  driver::VideoExportOptions options;
+  auto option = [&](const char* name) {
+    return args.has(name) ? args.options.at(name) : std::string();
+  };
+  options.topic = option("--video-topic");
+  options.video_file = option("--video");
+  options.frames_dir = option("--video-frames");
+  Result<driver::VideoExportSummary> summary = driver::export_video(args.positional[0], options);
+  if (!summary) {
+    std::fprintf(stderr, "k40t bag: %s\n", summary.error().c_str());
+    return kExitFailed;
+  }
+  std::fprintf(stderr,
+               "k40t bag: %s %s: %llu access units (%s, %.1f s) -> %llu in %s, %llu PNG frames "
+               "in %s\n",
+               args.positional[0].c_str(), summary->topic.c_str(),
+               static_cast<unsigned long long>(summary->messages), summary->format.c_str(),
+               summary->duration_s, static_cast<unsigned long long>(summary->written),
+               options.video_file.empty() ? "-" : options.video_file.c_str(),
+               static_cast<unsigned long long>(summary->frames),
+               options.frames_dir.empty() ? "-" : options.frames_dir.c_str());
+  return kExitOk;
+}
+
 int run_bag(const Command& self, const ParsedArgs& args) {
   if (args.positional.empty()) return usage_error(self, "give at least one bag");
+  if (args.has("--video") || args.has("--video-frames")) return run_video_export(self, args);
+  if (args.has("--video-topic"))
+    return usage_error(self, "--video-topic goes with --video or --video-frames");
   if (args.has("--output") && args.positional.size() != 1)
     return usage_error(self, "--output takes one input bag; use --out-dir for several");
   Result<driver::RosPodConfig> config = read_config(args);
@@ -161,7 +193,8 @@ const Command& bag_command() {
   static const Command command{
       "bag",
       "bag BAG... [--out-dir DIR | --output FILE] [--config FILE] [--conventions FILE] "
-      "[--jsonl FILE] [--csv DIR]",
+      "[--jsonl FILE] [--csv DIR]\n"
+      "       k40t bag BAG [--video FILE.mp4|.mkv] [--video-frames DIR] [--video-topic TOPIC]",
       "recorded flights -> bags of the decoded topics, at full speed (ROS build)",
       "Decodes the raw frames (<ns>/raw/rx, k40t_driver/Frame) of each BAG as replay.launch\n"
       "would, without a ROS master and at full speed, and writes every topic the driver\n"
@@ -171,7 +204,11 @@ const Command& bag_command() {
       "with the first frame; diagnostics (wall-clock driven) are not decoded.\n"
       "A bag that cannot be read (no raw/rx, truncated, not a bag) is reported and skipped;\n"
       "the others are still decoded, and the exit code is 1.\n"
-      "A progress bar is drawn on stderr when it is a terminal.",
+      "A progress bar is drawn on stderr when it is a terminal.\n"
+      "With --video or --video-frames it exports the bag's passthrough video topic instead\n"
+      "(k40t_driver/CompressedVideo, <ns>/image_raw/k40t_video): the access units muxed into\n"
+      "an MP4 or MKV without re-encoding, and/or every frame as DIR/frame_NNNNNN.png with\n"
+      "DIR/frames.csv (frame, stamp_ns, key_frame, file); both from the first key frame.",
       {{"--out-dir", "DIR", "write the decoded bags there (default: next to each input)"},
        {"--output", "FILE", "the decoded bag's path (one input only)"},
        {"--config", "FILE",
@@ -184,7 +221,12 @@ const Command& bag_command() {
         "frame and joint prefix the pods were recorded with, as replay.launch's frame_prefix: "
         "one for every pod, or per namespace (/pod_a=pod_a_,/pod_b=pod_b_)"},
        {"--jsonl", "FILE", "also write every raw frame (rx and tx), decoded, as JSON lines"},
-       {"--csv", "DIR", "also write every raw frame's fields to DIR/<id>_<name>.csv"}},
+       {"--csv", "DIR", "also write every raw frame's fields to DIR/<id>_<name>.csv"},
+       {"--video", "FILE",
+        "export the passthrough video to FILE (.mp4, .m4v, .mkv), no re-encoding"},
+       {"--video-frames", "DIR", "export the passthrough video as PNG frames + frames.csv"},
+       {"--video-topic", "TOPIC",
+        "the video topic (default: the bag's only CompressedVideo topic)"}},
       &run_bag};
   return command;
 }

@@ -58,6 +58,7 @@ int main(int argc, char** argv) {
   if (options->rtsp_port) {
     k40t::sim::video::RtspServerOptions video_options;
     video_options.port = *options->rtsp_port;
+    video_options.key_frame_interval = options->rtsp_key_interval;
     auto started_video = k40t::sim::video::RtspStreamServer::start(video_options, [&server] {
       k40t::sim::video::VideoSnapshot snapshot;
       server.with_model(

@@ -35,6 +35,7 @@ struct SimOptions {
   std::optional<std::string> capture_prefix;
   std::optional<std::string> control_endpoint;
   std::optional<int> rtsp_port;  // serve the video on rtsp://127.0.0.1:PORT/live/single (0: any)
+  int rtsp_key_interval = 30;    // frames between the stream's key frames
   double tick_s = 0.01;          // model step and report scheduling period
   // The GPS request (0x000310) leaves this long after its photo (a real pod's processing), so
   // the time of day it carries is in the past by then.

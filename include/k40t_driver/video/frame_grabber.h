@@ -16,55 +16,38 @@
 
 #include "k40t_driver/transport/transport.h"
 #include "k40t_driver/video/capture_options.h"
+#include "k40t_driver/video/frame_source.h"
 
 namespace k40t::video {
-
-struct GrabbedFrame {
-  cv::Mat pixels;  // as read: BGR (CV_8UC3), or I420 (CV_8UC1, height * 3 / 2 rows) if `i420`
-  bool i420 = false;
-  cv::Size size;                 // the picture's size
-  int64_t received_us = 0;       // system clock when read() returned it
-  std::optional<double> pts_ms;  // the back-end's presentation time, if it gives one
-  uint64_t sequence = 0;         // 1, 2, 3... over the grabber's life, across reconnects
-};
 
 // The frame as BGR (a conversion for I420, the same pixels otherwise).
 cv::Mat to_bgr(const GrabbedFrame& frame);
 
-struct GrabberStats {
-  uint64_t frames = 0;         // frames read
-  uint64_t read_errors = 0;    // reads that failed on an open stream (decode error, EOS, stall)
-  uint64_t open_failures = 0;  // opens that failed
-  uint64_t reconnects = 0;     // opens after the first successful one
-  bool streaming = false;      // open, and the last read succeeded
-  std::optional<std::chrono::steady_clock::time_point> last_frame;
-  std::string last_error;
-};
-
 // The video default: 250 ms, doubling, at most 4 s between attempts.
 transport::ReconnectPolicy default_video_reconnect_policy();
 
-class FrameGrabber {
+class FrameGrabber : public FrameSource {
  public:
   FrameGrabber(const CaptureOptions& capture,
                const transport::ReconnectPolicy& reconnect = default_video_reconnect_policy());
-  ~FrameGrabber();  // stop()
+  ~FrameGrabber() override;  // stop()
   FrameGrabber(const FrameGrabber&) = delete;
   FrameGrabber& operator=(const FrameGrabber&) = delete;
 
-  void start();
+  void start() override;
   // Ends the thread. A read blocked inside the back-end past every timeout (possible only with
   // OpenCV's default settings) is left to finish on its own, detached.
-  void stop();
+  void stop() override;
 
   // Closes the capture after the frame being read and opens it again at once. For the FFmpeg
   // back-end after the stream's frame size changed: OpenCV 4.6 keeps converting to the first size
   // there ("Slice parameters ... are invalid") and repeats the last good frame for ever.
-  void restart();
+  void restart() override;
 
   // The newest frame with a sequence above `after`, waiting up to `timeout` for one.
-  std::optional<GrabbedFrame> wait_newer(uint64_t after, std::chrono::milliseconds timeout);
-  GrabberStats stats() const;
+  std::optional<GrabbedFrame> wait_newer(uint64_t after,
+                                         std::chrono::milliseconds timeout) override;
+  GrabberStats stats() const override;
 
   struct State;
 

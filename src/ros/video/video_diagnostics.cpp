@@ -53,6 +53,7 @@ void VideoDiagnostics::report(diagnostic_updater::DiagnosticStatusWrapper& stat)
   stat.addf("age of the newest frame (s)", "%.3f", age);
   stat.add("frames", s.frames);
   stat.add("frames published", p.published);
+  stat.add("access units published (passthrough)", p.units_published);
   stat.add("read errors", s.read_errors);
   stat.add("open failures", s.open_failures);
   stat.add("reconnects", s.reconnects);

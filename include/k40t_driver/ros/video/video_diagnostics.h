@@ -5,8 +5,8 @@
 //   WARN   frame rate below half the expected one;
 //   OK     otherwise.
 // Values: URL, back-end, frame rate received and published, age of the newest frame, frames,
-// read (decode) errors, open failures, reconnects, last error, frame size, frame id, latency
-// estimate.
+// frames and access units published, read (decode) errors, open failures, reconnects, last error,
+// frame size, frame id, latency estimate.
 #pragma once
 
 #include <chrono>
@@ -25,7 +25,8 @@ namespace k40t::driver {
 
 // What the publisher side adds to the grabber's counters.
 struct PublishedState {
-  uint64_t published = 0;
+  uint64_t published = 0;        // image_raw
+  uint64_t units_published = 0;  // image_raw/k40t_video (passthrough)
   std::string frame_id;
   int width = 0;
   int height = 0;
