@@ -71,6 +71,30 @@ int monitor_file(const std::string& path, const WireOptions& wire) {
   return kExitOk;
 }
 
+// Waits for SIGINT/SIGTERM. On udp:// with nothing received after kUdpHintAfter, says why that is
+// likely: a UDP pod, and k40t_sim --link udp://, answer the peer that last wrote to them, and
+// monitor never writes.
+int wait_with_udp_hint(const sigset_t& stop_signals, const std::string& url,
+                       const transport::Transport& link) {
+  constexpr time_t kUdpHintAfter = 2;
+  if (url.rfind("udp://", 0) == 0) {
+    const timespec timeout{kUdpHintAfter, 0};
+    const int early = sigtimedwait(&stop_signals, nullptr, &timeout);
+    if (early > 0) return early;
+    if (link.stats().bytes_received == 0) {
+      std::fprintf(stderr,
+                   "k40t monitor: nothing received from %s in %lld s: over UDP the pod (and "
+                   "k40t_sim --link udp://) sends only to the peer that last wrote to it, and "
+                   "monitor only listens; watch the driver's raw/rx topic, or use a serial or tcp "
+                   "link\n",
+                   url.c_str(), static_cast<long long>(kUdpHintAfter));
+    }
+  }
+  int signal_number = 0;
+  sigwait(&stop_signals, &signal_number);
+  return signal_number;
+}
+
 int monitor_link(const Command& self, const std::string& url, const WireOptions& wire) {
   Result<std::unique_ptr<transport::Transport>> link = transport::make_transport(url);
   if (!link) return usage_error(self, link.error());
@@ -98,8 +122,7 @@ int monitor_link(const Command& self, const std::string& url, const WireOptions&
     std::fprintf(stderr, "k40t monitor: %s\n", opened.message().c_str());
     return kExitFailed;
   }
-  int signal_number = 0;
-  sigwait(&stop_signals, &signal_number);
+  int signal_number = wait_with_udp_hint(stop_signals, url, t);
   t.close();
   const transport::LinkStats link_stats = t.stats();
   std::fprintf(stderr, "k40t monitor: stopped by %s; %s; %llu bytes received\n",

@@ -54,6 +54,10 @@ class LayoutValidator {
     if (d.limits.set) {
       range(p.value_name, static_cast<double>(*p.value), d.limits.lo, d.limits.hi, d.limits.unit);
     }
+    if (options_ != nullptr && result_.is_ok()) {
+      keep(detail::check_magnitude(p.value_name, static_cast<double>(*p.value), d,
+                                   detail::option(options_, d.scale)));
+    }
   }
   template <class T, class Tag, class Rule>
   void operator()(const char* name, const T& v, const wire::Ruled<Tag, Rule>& r) const {
@@ -118,6 +122,7 @@ class LayoutValidator {
           limits.unit);
   }
   Status& result_;
+  const CodecOptions* options_;
 };
 
 }  // namespace k40t::codec
