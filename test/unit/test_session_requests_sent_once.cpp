@@ -17,46 +17,48 @@ using namespace std::chrono_literals;
 using protocol::FrameView;
 using protocol::Payload;
 
-// The pod answers each request `delay` after it came (on a thread of its own, as a pod that first
-// asks for GPS would), or never when `delay` is negative.
-void answer_after(SessionLink& link, protocol::MessageId id, std::chrono::milliseconds delay,
-                  Collector<protocol::FrameHeader>& seen, std::vector<std::thread>& answers) {
-  link.pod->set_request_handler(
-      id, [&link, &seen, &answers, delay](const FrameView& f) -> std::optional<Payload> {
-        seen.add(f.header);
-        if (delay.count() < 0) return std::nullopt;
-        answers.emplace_back([&link, header = f.header, delay] {
-          std::this_thread::sleep_for(delay);
-          const Payload ok = ack_payload(0);
-          link.pod->send_ack(header, ok.data(), ok.size);
-        });
-        return std::nullopt;
-      });
-}
-
-TEST(SessionSentOnce, ALatePhotoAckIsWaitedForWithoutASecondPhoto) {
-  SessionLink link(host_options(40ms, 2));  // attempts of 40 ms, three in all: 120 ms
+// A host with attempts of `timeout` (three in all) and a pod that answers each request `id`
+// `delay` after it came (on a thread of its own, as a pod that first asks for GPS would), or never
+// when `delay` is negative.
+struct LatePod {
   Collector<protocol::FrameHeader> seen;
   std::vector<std::thread> answers;
-  answer_after(link, protocol::TakePhotoRequest::kId, 90ms, seen, answers);
-  link.start();
-  const session::AckResult r = link.host->request(protocol::TakePhotoRequest{});
+  SessionLink link;  // last: stopped before what its handlers use goes
+
+  LatePod(std::chrono::milliseconds timeout, protocol::MessageId id,
+          std::chrono::milliseconds delay)
+      : link(host_options(timeout, 2)) {
+    link.pod->set_request_handler(id, [this, delay](const FrameView& f) -> std::optional<Payload> {
+      seen.add(f.header);
+      if (delay.count() < 0) return std::nullopt;
+      answers.emplace_back([this, header = f.header, delay] {
+        std::this_thread::sleep_for(delay);
+        const Payload ok = ack_payload(0);
+        link.pod->send_ack(header, ok.data(), ok.size);
+      });
+      return std::nullopt;
+    });
+    link.start();
+  }
+  ~LatePod() {
+    for (std::thread& t : answers) t.join();
+  }
+};
+
+TEST(SessionSentOnce, ALatePhotoAckIsWaitedForWithoutASecondPhoto) {
+  LatePod pod(40ms, protocol::TakePhotoRequest::kId, 90ms);  // 120 ms in all, the ACK at 90 ms
+  const session::AckResult r = pod.link.host->request(protocol::TakePhotoRequest{});
   EXPECT_TRUE(r.ok()) << r.message;
   EXPECT_EQ(r.attempts, 1);
   std::this_thread::sleep_for(100ms);  // a retry, had there been one, would have arrived
-  EXPECT_EQ(seen.items().size(), 1u) << "one photo request on the wire";
-  EXPECT_EQ(link.host->stats().retries, 0u);
-  for (std::thread& t : answers) t.join();
+  EXPECT_EQ(pod.seen.items().size(), 1u) << "one photo request on the wire";
+  EXPECT_EQ(pod.link.host->stats().retries, 0u);
 }
 
 TEST(SessionSentOnce, NoAckSaysItWasNotRepeatedAndMayHaveHappened) {
-  SessionLink link(host_options(20ms, 2));
-  Collector<protocol::FrameHeader> seen;
-  std::vector<std::thread> answers;
-  answer_after(link, protocol::RecordRequest::kId, -1ms, seen, answers);
-  link.start();
+  LatePod pod(20ms, protocol::RecordRequest::kId, -1ms);
   const auto start = std::chrono::steady_clock::now();
-  const session::AckResult r = link.host->request(protocol::RecordRequest{});
+  const session::AckResult r = pod.link.host->request(protocol::RecordRequest{});
   EXPECT_GE(std::chrono::steady_clock::now() - start, 60ms) << "as long as three attempts";
   EXPECT_TRUE(r.sent);
   EXPECT_FALSE(r.received);
@@ -66,23 +68,19 @@ TEST(SessionSentOnce, NoAckSaysItWasNotRepeatedAndMayHaveHappened) {
             std::string::npos)
       << r.message;
   EXPECT_NE(r.message.find("the pod may have done it"), std::string::npos) << r.message;
-  EXPECT_EQ(seen.items().size(), 1u);
-  EXPECT_EQ(link.host->stats().ack_timeouts, 1u);
+  EXPECT_EQ(pod.seen.items().size(), 1u);
+  EXPECT_EQ(pod.link.host->stats().ack_timeouts, 1u);
 }
 
 TEST(SessionSentOnce, AZoomStepIsSentOnceAContinuousZoomIsRetried) {
-  SessionLink link(host_options(20ms, 2));
-  Collector<protocol::FrameHeader> seen;
-  std::vector<std::thread> answers;
-  answer_after(link, protocol::ContinuousZoomRequest::kId, -1ms, seen, answers);
-  link.start();
+  LatePod pod(20ms, protocol::ContinuousZoomRequest::kId, -1ms);
   protocol::ContinuousZoomRequest step;
   step.command = protocol::ZoomCommand::kStepIn;
-  EXPECT_EQ(link.host->request(step).attempts, 1);
+  EXPECT_EQ(pod.link.host->request(step).attempts, 1);
   protocol::ContinuousZoomRequest zoom;
   zoom.command = protocol::ZoomCommand::kZoomIn;  // a state: the same again does no harm
-  EXPECT_EQ(link.host->request(zoom).attempts, 3);
-  ASSERT_TRUE(seen.wait_for_count(4));
+  EXPECT_EQ(pod.link.host->request(zoom).attempts, 3);
+  ASSERT_TRUE(pod.seen.wait_for_count(4));
 }
 
 // Section 3.2.4.6: byte 1 of 0x000306 is the command, 3 / 4 one step in / out.
