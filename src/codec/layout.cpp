@@ -1,6 +1,8 @@
 #include "k40t_driver/codec/layout.h"
 
+#include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace k40t::codec::detail {
 
@@ -8,6 +10,11 @@ namespace {
 std::string hex_byte(uint8_t v) {
   char text[8];
   std::snprintf(text, sizeof(text), "0x%02X", static_cast<unsigned>(v));
+  return text;
+}
+std::string number_text(double v) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", v);
   return text;
 }
 }  // namespace
@@ -32,6 +39,22 @@ std::string flag_error(const char* field, size_t index, const wire::Flag& flag, 
 
 std::string scale_error(const wire::Directed& directed, int scale) {
   return std::string(directed.scale_name) + " must be positive, got " + std::to_string(scale);
+}
+
+Status check_magnitude(const char* field, double value, const wire::Directed& directed, int scale) {
+  if (scale <= 0) return Status::fail(scale_error(directed, scale));
+  constexpr double kMost = std::numeric_limits<uint16_t>::max();
+  const double magnitude = std::round(std::fabs(value) * scale);
+  if (magnitude <= kMost) return Status::ok();
+  std::string why = std::string("field '") + field + "' " + number_text(value) + " x " +
+                    directed.scale_name + " " + std::to_string(scale) + " = " +
+                    number_text(magnitude) + " does not fit the 16-bit magnitude (at most 65535)";
+  if (directed.limits.set) {
+    const double widest = std::max(std::fabs(directed.limits.lo), std::fabs(directed.limits.hi));
+    why += ": " + std::string(directed.scale_name) + " must be 1.." +
+           std::to_string(static_cast<int>(kMost / widest)) + " to carry the whole range";
+  }
+  return Status::fail(why);
 }
 
 std::string direction_error(const char* field, const wire::Directed& directed, uint8_t got) {

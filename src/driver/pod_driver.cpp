@@ -104,6 +104,8 @@ Status PodDriver::start() {
   if (session_) {
     session_->on_frame_sent([this](const FrameView& frame) {
       observe_sent(frame);
+      track_dial_speed(frame);
+      box_tracking_.frame_sent(frame, codec());
       const StampNs stamp = clock_();
       for (const FrameHandler& handler : tx_handlers_) handler(frame, stamp);
     });
@@ -166,6 +168,7 @@ void PodDriver::handle_rx_frame(const FrameView& frame) {
           ? replay_stamp_
           : clock_() - static_cast<StampNs>(std::llround(frame.size * seconds_per_byte_ * 1e9));
   current_stamp_ = stamp;
+  box_tracking_.frame_received(frame, codec());
   if (!replayer_) {
     const SteadyClock::time_point now = SteadyClock::now();
     std::unique_lock<std::mutex> lock(mutex_);
@@ -177,6 +180,7 @@ void PodDriver::handle_rx_frame(const FrameView& frame) {
     reconnected_since_frame_ = false;
     if (online) {
       online_pending_ = true;
+      rate_.forget_speed();  // back after silence: it may have restarted
       ++counters_.pod_online_events;
     }
     lock.unlock();
@@ -239,22 +243,6 @@ std::optional<protocol::Payload> PodDriver::answer_gps_request(const FrameView& 
     counters_.last_geotag_gap_s = gap_s;
   }
   return payload.value();
-}
-
-void PodDriver::command_rate(double pitch_deg_s, double yaw_deg_s) {
-  RateCommander::Output output;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    output = rate_.command(pitch_deg_s, yaw_deg_s, SteadyClock::now());
-  }
-  wake_.notify_all();  // the dead-man deadline moved
-  send_rate_output(output);
-}
-
-void PodDriver::send_rate_output(const RateCommander::Output& output) {
-  auto ignore = [](const AckResult&) {};  // failures show in the session's counters
-  if (output.speed) request_async(*output.speed, ignore);
-  if (output.control) request_async(*output.control, ignore);
 }
 
 void PodDriver::set_clock_offset_ms(int64_t offset_ms) {

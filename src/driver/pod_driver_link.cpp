@@ -28,6 +28,7 @@ void PodDriver::handle_link_state(transport::LinkState state, const std::string&
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (state == transport::LinkState::kConnected) reconnected_since_frame_ = true;
+    rate_.forget_speed();  // a pod (re)connected may be another, or restarted
     report = shutting_down ? link_monitor_.on_stop()
                            : link_monitor_.on_transport(state, reason, SteadyClock::now());
   }

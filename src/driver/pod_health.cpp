@@ -183,7 +183,21 @@ HealthCheck sd_card_health(const std::optional<p::CameraSystemStatus>& camera) {
   });
 }
 
-HealthCheck alarms_health(const std::optional<p::ThermalStatus>& thermal) {
+HealthCheck alarms_health(const std::optional<p::ThermalStatus>& thermal,
+                          const ThermalContext& context) {
+  HealthCheck check;
+  // The last flags are the pod's no more: measuring off, or the reports stopped.
+  if (!context.measuring) {
+    check.set(HealthLevel::kOk, "temperature measurement off: no alarms (no 0x000004)");
+    return check;
+  }
+  if (thermal && context.report_age_s > kThermalReportStaleS) {
+    char text[80];
+    std::snprintf(text, sizeof text, "no thermal report for %.1f s: alarms unknown",
+                  context.report_age_s);
+    check.set(HealthLevel::kWarn, text);
+    return check;
+  }
   return when_reported(thermal, "thermal", [](const auto& t, HealthCheck& check) {
     const std::initializer_list<Flag> alarms = {{"high temperature", t.high_alarm},
                                                 {"low temperature", t.low_alarm},

@@ -80,6 +80,20 @@ RateCommander::Output RateCommander::tick(Clock::time_point now) {
   return out;
 }
 
+void RateCommander::speed_sent(const GimbalDialSpeedRequest& sent) {
+  const auto wire = [](double deg_s) {
+    return static_cast<int>(std::lround(deg_s * GimbalDialSpeedRequest::kWirePerDegS));
+  };
+  if (wire(sent.pitch_speed_deg_s) != pitch_speed_wire_ ||
+      wire(sent.yaw_speed_deg_s) != yaw_speed_wire_)
+    forget_speed();
+}
+
+void RateCommander::forget_speed() {
+  pitch_speed_wire_ = 0;
+  yaw_speed_wire_ = 0;
+}
+
 std::optional<RateCommander::Clock::time_point> RateCommander::deadline() const {
   if (!moving_) return std::nullopt;
   return last_command_ + std::chrono::duration_cast<Clock::duration>(timeout_);

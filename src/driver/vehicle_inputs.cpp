@@ -1,6 +1,7 @@
 #include "k40t_driver/driver/vehicle_inputs.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "k40t_driver/geo/geodesy.h"
 
@@ -10,15 +11,17 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / M_PI;
 
-// 0x000320 byte 2: 1 no position, 3 3D fix, 4 DGPS/SBAS, 6 RTK fixed.
-uint8_t pod_gps_status(GnssFix::Quality quality) {
-  switch (quality) {
+// 0x000320 byte 2 (section 3.2.4.24): 1 connected, no position; 2 2D; 3 3D; 4 3D with DGPS/SBAS;
+// 5 float RTK; 6 fixed RTK. NavSatFix cannot tell 2D from 3D but by a missing altitude, and
+// its GBAS ("ground-based augmentation") covers DGPS and float RTK as well as fixed RTK, so it is
+// sent as 4: the pod's target solver must not be told of more accuracy than there is.
+uint8_t pod_gps_status(const GnssFix& fix) {
+  switch (fix.quality) {
     case GnssFix::Quality::kFix:
-      return 3;
+      return std::isfinite(fix.altitude_m) ? 3 : 2;
     case GnssFix::Quality::kSbas:
-      return 4;
     case GnssFix::Quality::kGbas:
-      return 6;
+      return std::isfinite(fix.altitude_m) ? 4 : 2;
     case GnssFix::Quality::kNone:
       break;
   }
@@ -31,7 +34,7 @@ void apply_fix(VehicleState& state, const GnssFix& fix, double* reference_altitu
   const bool usable = fix.quality != GnssFix::Quality::kNone && std::isfinite(fix.latitude_deg) &&
                       std::isfinite(fix.longitude_deg);
   state.has_fix = usable;
-  state.gps_status = pod_gps_status(fix.quality);
+  state.gps_status = pod_gps_status(fix);
   if (!usable) return;
   const double altitude = std::isfinite(fix.altitude_m) ? fix.altitude_m : 0.0;
   // Fix heights are above the ellipsoid; the pod wants sea level. Without the geoid (no

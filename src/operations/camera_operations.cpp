@@ -1,6 +1,7 @@
 #include "k40t_driver/operations/camera_operations.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "k40t_driver/codec/enum_names.h"
 
@@ -29,6 +30,12 @@ std::string state_text(E state) {
 template <class E, size_t N>
 Step step_for(E state, const EnumTo<E, Phase> (&phases)[N]) {
   return step(lookup(phases, state, Phase::kFailed), state_text(state));
+}
+
+std::string ratio_text(double ratio_x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1fx", ratio_x);
+  return text;
 }
 
 }  // namespace
@@ -78,8 +85,29 @@ Result<ZoomTo> ZoomTo::create(double ratio_x, double timeout_s, double now_s) {
 }
 
 ZoomTo::ZoomTo(const p::ZoomRatioRequest& request, double timeout_s, double now_s)
-    : TrackedOperation("zoom", "zoom status 0x020304 'done'", timeout_s, now_s),
+    : TrackedOperation("zoom", "the ratio in visible status 0x000005", timeout_s, now_s),
       request_(request) {}
+
+bool ZoomTo::arrived() const {
+  // Both carry the ratio x10 on the wire: equal to a tenth.
+  return ratio_x_ && std::lround(*ratio_x_ * 10) == std::lround(request_.zoom_x * 10);
+}
+
+void ZoomTo::on_status(const p::ZoomStatus& status) {
+  const Step step = zoom_step(status);
+  if (step.phase != Phase::kSucceeded) return tracker().report(step);
+  if (arrived()) return tracker().report(step);
+  reports_after_done_ = 0;  // the next reports decide
+}
+
+void ZoomTo::on_visible(const p::VisibleStatus& status) {
+  ratio_x_ = status.zoom_x;
+  if (arrived()) return tracker().report(step(Phase::kSucceeded, "at " + ratio_text(*ratio_x_)));
+  if (reports_after_done_ < 0 || ++reports_after_done_ < kReportsAfterDone) return;
+  tracker().report(step(Phase::kFailed, "the pod reported done at " + ratio_text(*ratio_x_) +
+                                            ", not the " + ratio_text(request_.zoom_x) +
+                                            " asked for"));
+}
 
 // ---- SD format -------------------------------------------------------------------------------
 
@@ -117,7 +145,9 @@ Result<p::PreciseReshootRequest> reshoot_request(const ReshootArgs& args,
   p::PreciseReshootRequest r;
   r.lens = static_cast<p::PhotoLensMode>(args.lens);
   r.resolution = static_cast<p::ReshootResolution>(args.resolution);
-  r.zoom_x = zoom;
+  // What the wire carries (uint16 x10, rounded as the encoder rounds), so that the service's and
+  // the action's "what was sent" is the ratio sent, not the one asked for (2.34 goes out as 2.3).
+  r.zoom_x = std::round(zoom * 10) / 10;
   r.focal_length_raw = static_cast<uint16_t>(std::lround(focal_mm * kReshootFocalUnitsPerMm));
   r.folder = args.folder;
   r.name = args.name;

@@ -69,7 +69,7 @@ Result<long> parse_number(const ConventionInfo& info, const std::string& text, l
 }
 
 Status set_scale(const ConventionInfo& info, ConventionRefs refs, const std::string& text) {
-  Result<long> v = parse_number(info, text, 1, 1000);
+  Result<long> v = parse_number(info, text, 1, kMaxAngleCommandScale);
   if (!v) return v.status();
   refs.codec.angle_command_scale = static_cast<int>(*v);
   return Status::ok();
@@ -126,7 +126,7 @@ const std::vector<ConventionInfo> kTable = {
     {"angle_command_scale",
      "3.1.2.2 (0x000012)",
      {},
-     "1..1000",
+     "1..364",
      "100",
      "0x000012's angle magnitudes are degrees x this (decisions.md#a4)",
      &set_scale,

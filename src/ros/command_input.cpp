@@ -3,6 +3,7 @@
 #include <ros/console.h>
 
 #include "k40t_driver/geo/body_velocity.h"
+#include "k40t_driver/operations/gimbal_operations.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/ros/conversions.h"
 
@@ -31,11 +32,15 @@ CommandInput::CommandInput(ros::NodeHandle nh, PodDriver& driver) : driver_(driv
 }
 
 void CommandInput::on_cmd_angle(const geometry_msgs::Vector3Stamped::ConstPtr& msg) {
-  const PodAngles pod = pod_from_rep103({msg->vector.z, msg->vector.x, msg->vector.y});
-  protocol::GimbalAngleRequest request;
-  request.pitch_deg = pod.pitch_deg;
-  request.yaw_deg = pod.yaw_deg;
-  driver_.request_async(request, [](const session::AckResult& result) {
+  // Checked in the topic's units and signs (REP 103 radians), as gimbal/set_angle does: an error
+  // in the pod's degrees and signs would name values the caller never sent.
+  const Result<protocol::GimbalAngleRequest> request =
+      operations::angle_request_from_rep103(msg->vector.y, msg->vector.z);
+  if (!request) {
+    ROS_WARN_THROTTLE(1.0, "gimbal/cmd_angle not applied: %s", request.error().c_str());
+    return;
+  }
+  driver_.request_async(request.value(), [](const session::AckResult& result) {
     if (!result.ok())
       ROS_WARN_THROTTLE(1.0, "gimbal/cmd_angle not applied: %s", result.message.c_str());
   });

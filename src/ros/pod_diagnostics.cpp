@@ -53,25 +53,46 @@ PodDiagnostics::PodDiagnostics(ros::NodeHandle nh, ros::NodeHandle private_nh, P
   add_rate_check<p::GimbalStatus>(driver, "gimbal status report (0x000001)", 2.0);
   add_rate_check<p::GimbalAttitude>(driver, "gimbal attitude report (0x000002)", 10.0);
   add_rate_check<p::CameraSystemStatus>(driver, "camera status report (0x000003)", 1.0);
-  add_rate_check<p::ThermalStatus>(driver, "thermal report (0x000004)", 5.0);
+  // Only while the pod measures temperatures (section 3.2.2.4); off, no report is the right rate.
+  add_rate_check<p::ThermalStatus>(driver, "thermal report (0x000004)", 5.0, [this] {
+    return measurement_.measuring() ? std::string()
+                                    : std::string("temperature measurement off: none expected");
+  });
   add_rate_check<p::VisibleStatus>(driver, "visible report (0x000005)", 5.0);
   add_report_check("self-test", gimbal_, self_test_health);
   add_report_check("stabilisation", gimbal_, stabilisation_health);
   add_report_check("SD card", camera_, sd_card_health);
-  add_report_check("temperature alarms", thermal_, alarms_health);
+  add_check("temperature alarms", [this] {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ThermalContext context;
+    context.measuring = measurement_.measuring();
+    context.report_age_s = std::chrono::duration<double>(SteadyClock::now() - thermal_at_).count();
+    return alarms_health(thermal_, context);
+  });
   if (settings_) add_check("settings", [this] { return settings_health(settings_->state()); });
   add_check("conventions", [this] { return conventions_health(driver_.conventions_report()); });
 
   keep_latest(driver, mutex_, gimbal_);
   keep_latest(driver, mutex_, camera_);
-  keep_latest(driver, mutex_, thermal_);
+  driver.on<p::ThermalStatus>([this](const p::ThermalStatus& report, StampNs) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    thermal_ = report;
+    thermal_at_ = SteadyClock::now();
+  });
+  driver.on_tx_frame([this](const p::FrameView& frame, StampNs) {
+    measurement_.frame_sent(frame, driver_.codec());
+  });
+  driver.on_rx_frame([this](const p::FrameView& frame, StampNs) {
+    measurement_.frame_received(frame, driver_.codec());
+  });
 
   timer_ = nh.createSteadyTimer(ros::WallDuration(period_s_),
                                 [this](const ros::SteadyTimerEvent&) { update(); });
 }
 
 template <class Msg>
-void PodDiagnostics::add_rate_check(PodDriver& driver, const std::string& name, double rate_hz) {
+void PodDiagnostics::add_rate_check(PodDriver& driver, const std::string& name, double rate_hz,
+                                    std::function<std::string()> not_expected) {
   auto check = std::make_unique<RateCheck>();
   check->min_hz = rate_hz * (1.0 - config_.rate_tolerance);
   check->max_hz = rate_hz * (1.0 + config_.rate_tolerance);
@@ -82,7 +103,17 @@ void PodDiagnostics::add_rate_check(PodDriver& driver, const std::string& name, 
       diagnostic_updater::FrequencyStatusParam(&check->min_hz, &check->max_hz, 0.0, window), name);
   diagnostic_updater::FrequencyStatus* status = check->status.get();
   driver.on<Msg>([status](const Msg&, StampNs) { status->tick(); });
-  updater_.add(*status);
+  if (!not_expected) {
+    updater_.add(*status);
+  } else {
+    // The window slides on as usual (no stale counts when the reports resume); while the reason
+    // holds, silence is what the pod should do.
+    updater_.add(name, [status, not_expected](DiagnosticStatusWrapper& stat) {
+      status->run(stat);
+      const std::string reason = not_expected();
+      if (!reason.empty()) stat.summary(diagnostic_msgs::DiagnosticStatus::OK, reason);
+    });
+  }
   rates_.push_back(std::move(check));
 }
 

@@ -27,6 +27,7 @@
 #include "k40t_driver/Zoom.h"
 #include "k40t_driver/driver/pod_queries.h"
 #include "k40t_driver/driver/sbus_write.h"
+#include "k40t_driver/operations/ai_request.h"
 #include "k40t_driver/operations/gimbal_operations.h"
 #include "k40t_driver/protocol/convention_readings.h"
 #include "k40t_driver/protocol/messages/camera_capture.h"
@@ -143,24 +144,27 @@ void PodServices::advertise_camera() {
     r.area_right_px = req.x2;
     r.area_bottom_px = req.y2;
   });
+  // The pod does not answer either in the other capture mode: refused before sending, with why.
+  driver_.on_tx_frame(
+      [this](const p::FrameView& frame, StampNs) { mode_.frame_sent(frame, driver_.codec()); });
+  driver_.on_rx_frame(
+      [this](const p::FrameView& frame, StampNs) { mode_.frame_received(frame, driver_.codec()); });
   serve<k40t_driver::TakePhoto>("take_photo", [this](auto& req, auto& res) {
     const p::PhotoAction action = req.stop ? p::PhotoAction::kStop : p::PhotoAction::kStart;
-    fill(res, driver_.request(file_capture<p::TakePhotoRequest>(req, action)));
+    fill(res, in_mode(p::CaptureMode::kPhoto, "photo requests",
+                      file_capture<p::TakePhotoRequest>(req, action)));
   });
   serve<k40t_driver::Record>("record", [this](auto& req, auto& res) {
     const p::RecordAction action = req.start ? p::RecordAction::kStart : p::RecordAction::kStop;
-    fill(res, driver_.request(file_capture<p::RecordRequest>(req, action)));
+    fill(res, in_mode(p::CaptureMode::kVideo, "record requests",
+                      file_capture<p::RecordRequest>(req, action)));
   });
   serve<k40t_driver::SetAiRecognition>("ai/recognition", [this](auto& req, auto& res) {
-    p::AiRecognitionRequest r;
-    if (req.classes.size() > r.classes.size()) {
-      return fail(res, "field 'classes' must hold at most 10 class ids, got " +
-                           std::to_string(req.classes.size()));
-    }
-    r.recognition = req.enable ? p::FeatureSwitch::kOn : p::FeatureSwitch::kOff;
-    r.model = req.model;
-    std::copy(req.classes.begin(), req.classes.end(), r.classes.begin());
-    fill(res, driver_.request(r));
+    // Unused class slots repeat the last class (operations/ai_request.h), never class 0.
+    Result<p::AiRecognitionRequest> r =
+        operations::ai_recognition_request(req.enable, req.model, req.classes);
+    if (!r) return fail(res, r.error());
+    fill(res, driver_.request(r.value()));
   });
   serve_request<k40t_driver::Track, p::BoxTrackingRequest>("ai/track", [](auto& req, auto& r) {
     r.tracking = req.enable ? p::FeatureSwitch::kOn : p::FeatureSwitch::kOff;
@@ -169,6 +173,16 @@ void PodServices::advertise_camera() {
     r.width_px = req.width;
     r.height_px = req.height;
   });
+}
+
+template <class Req>
+AckResult PodServices::in_mode(p::CaptureMode mode, const char* what, const Req& request) {
+  // The arguments first: a bad one is the caller's error in any mode.
+  if (const Status valid = request.validate(); !valid)
+    return AckResult::not_sent(std::string(Req::kName) + ": " + valid.message());
+  if (const Status allowed = mode_.allows(mode, what); !allowed)
+    return AckResult::not_sent(allowed.message());
+  return driver_.request(request);
 }
 
 void PodServices::advertise_gimbal() {

@@ -1,5 +1,6 @@
 #include "k40t_driver/ros/ros_params.h"
 
+#include <cmath>
 #include <set>
 #include <string>
 #include <vector>
@@ -73,7 +74,9 @@ Result<RosPodConfig> read_params(ParamReader& p) {
   }
   s.codec.gimbal_address.system = static_cast<uint8_t>(p.number("gimbal_system_id", 3, 0, 255));
   s.codec.camera_address.system = static_cast<uint8_t>(p.number("camera_system_id", 4, 0, 255));
-  s.codec.angle_command_scale = static_cast<int>(p.number("angle_command_scale", 100, 1, 1000));
+  const double scale = p.number("angle_command_scale", 100, 1, protocol::kMaxAngleCommandScale);
+  if (scale != std::floor(scale)) p.fail("angle_command_scale", "must be a whole number");
+  s.codec.angle_command_scale = static_cast<int>(scale);
   read_conventions(p, s, d.conventions_from_parameters);
   s.ack_timeout = std::chrono::milliseconds(
       static_cast<int64_t>(1000 * p.number("ack_timeout", 0.3, 0.01, 10)));

@@ -39,8 +39,11 @@ std::vector<SettingBinding> general_and_gimbal() {
           .service("set_photo_mode"),
       one_field<p::GimbalStabilisationRequest>(
           "stabilisation", &p::GimbalStabilisationRequest::enable, &C::stabilisation)
+          // Only "stabilising" is on: 2 (failed) and 3 (feature lost) are not stabilising
+          // (0x000001 byte 4, section 3.1.1.1); switching it on again retries. Why it is not is
+          // the diagnostics' "stabilisation" check.
           .reads_with<Gimbal>([](C& c, const Gimbal& g) {
-            c.stabilisation = g.stabilisation != p::GimbalStabilisationState::kOff;
+            c.stabilisation = g.stabilisation == p::GimbalStabilisationState::kStabilising;
           }),
       group(
           "dial_speed",

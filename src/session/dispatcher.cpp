@@ -64,6 +64,10 @@ const protocol::ParserStats& Dispatcher::parser_stats() const {
   return parser_.stats();
 }
 
+size_t Dispatcher::buffered_bytes() const {
+  return parser_.buffered_bytes();
+}
+
 uint64_t Dispatcher::decode_errors() const {
   return decode_errors_.load(std::memory_order_relaxed);
 }

@@ -8,6 +8,7 @@
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/transport/thread_name.h"
+#include "k40t_driver/protocol/repeat_safety.h"
 
 namespace k40t::session {
 
@@ -20,6 +21,13 @@ std::string code_hex(uint16_t code) {
 }
 
 }  // namespace
+
+std::string RequestTracker::not_repeated_message(protocol::MessageId id) const {
+  return "no ACK for " + protocol::display_name(id) + " within " +
+         std::to_string((ack_timeout_ * max_attempts_).count()) +
+         " ms; not sent again, since a repeat would repeat the action: the pod may have done it "
+         "(see its status reports)";
+}
 
 RequestTracker::RequestTracker(SendAttempt send, std::chrono::milliseconds ack_timeout, int retries,
                                const protocol::CodecOptions& codec)
@@ -68,6 +76,7 @@ void RequestTracker::submit(protocol::MessageId id, const protocol::Payload& pay
   pending.payload = payload;
   pending.destination = destination;
   pending.done = std::move(done);
+  pending.once = !protocol::repeat_safe(id, payload.data(), payload.size);
   slots_[protocol::request_id_of(id)].queue.push_back(std::move(pending));
   lock.unlock();
   wake_.notify_all();
@@ -162,17 +171,19 @@ void RequestTracker::step(Slot& slot, Clock::time_point now) {
     complete_with_ack(slot);
   } else if (slot.state == SlotState::kWaiting && slot.deadline <= now) {
     Pending& pending = slot.queue.front();
-    if (pending.result.attempts < max_attempts_) {
+    if (!pending.once && pending.result.attempts < max_attempts_) {
       ++counters_.retries;
       start_attempt(slot);
     } else {
       ++counters_.ack_timeouts;
       pending.result.received = false;
       pending.result.code = protocol::ResponseCode::kTimeout;
-      pending.result.message = "no ACK for " + protocol::display_name(pending.id) + " after " +
-                               std::to_string(pending.result.attempts) +
-                               (pending.result.attempts == 1 ? " attempt" : " attempts") +
-                               " (timeout " + std::to_string(ack_timeout_.count()) + " ms each)";
+      pending.result.message =
+          pending.once ? not_repeated_message(pending.id)
+                       : "no ACK for " + protocol::display_name(pending.id) + " after " +
+                             std::to_string(pending.result.attempts) +
+                             (pending.result.attempts == 1 ? " attempt" : " attempts") +
+                             " (timeout " + std::to_string(ack_timeout_.count()) + " ms each)";
       finish_front(slot);
     }
   }
@@ -209,7 +220,8 @@ void RequestTracker::after_attempt(const Attempt& attempt, Clock::time_point now
   pending.result.sent = true;
   if (slot.state == SlotState::kSending) {
     slot.state = SlotState::kWaiting;
-    slot.deadline = now + ack_timeout_;
+    // Sent once: as long as every attempt of a repeatable request would have waited.
+    slot.deadline = now + (pending.once ? ack_timeout_ * max_attempts_ : ack_timeout_);
   }
 }
 

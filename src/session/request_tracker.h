@@ -1,8 +1,9 @@
 // The request side of a session (docs/protocol/decisions.md#a5): one outstanding request per
 // message id, the others for that id queued behind it; ACKs matched by id; timeouts and retries;
-// AckResult messages. It owns the thread that writes attempts, watches deadlines and runs
-// completion callbacks, so neither the transport's I/O thread nor a caller's thread ever waits on
-// the link.
+// AckResult messages. A request whose repeat would repeat an action (protocol/repeat_safety.h) is
+// written once and waited for as long as all the attempts would take. It owns the thread that
+// writes attempts, watches deadlines and runs completion callbacks, so neither the transport's I/O
+// thread nor a caller's thread ever waits on the link.
 #pragma once
 
 #include <atomic>
@@ -71,6 +72,7 @@ class RequestTracker {
     protocol::Address destination;
     Done done;
     AckResult result;
+    bool once = false;  // not repeat-safe (protocol/repeat_safety.h): one attempt, a long wait
   };
   enum class SlotState { kIdle, kSending, kWaiting, kAcked };
   // One per request id: queue.front() is the outstanding request whenever state != kIdle.
@@ -98,6 +100,7 @@ class RequestTracker {
   void finish_front(Slot& slot);
   void complete_with_ack(Slot& slot);
   void fail_everything();
+  std::string not_repeated_message(protocol::MessageId id) const;
 
   const SendAttempt send_;
   const std::chrono::milliseconds ack_timeout_;

@@ -84,6 +84,13 @@ Status PodServer::start() {
   }
   const Status opened = session_->start();
   if (!opened) return opened;
+  // The link is made in the background and retried for ever; one the simulator cannot open at all
+  // (a pty in a missing directory, a port in use, an address not on this machine) is a start-up
+  // failure, which docs/simulator.md promises as exit 1 with the reason.
+  if (const Status link = first_attempt(); !link) {
+    session_->stop();
+    return link;
+  }
 
   if (options_.control_endpoint) {
     const Status control = control_.start(
@@ -98,6 +105,22 @@ Status PodServer::start() {
   started_at_ = SteadyClock::now();
   running_ = true;
   thread_ = std::thread([this] { run(); });
+  return Status::ok();
+}
+
+Status PodServer::first_attempt() const {
+  // A tcp-server waits for its client while kConnecting: after this long that is a success.
+  constexpr auto kPatience = std::chrono::seconds(2);
+  const auto deadline = SteadyClock::now() + kPatience;
+  while (SteadyClock::now() < deadline) {
+    const transport::LinkState state = session_->link_state();
+    if (state == transport::LinkState::kConnected) return Status::ok();
+    if (state == transport::LinkState::kReconnecting) {
+      const std::string why = session_->stats().link.last_error;
+      return Status::fail("cannot open " + options_.link + ": " + why);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
   return Status::ok();
 }
 

@@ -53,7 +53,8 @@ const std::vector<OptionSpec>& option_table() {
           [](SimOptions& o) -> protocol::ByteOrder& { return o.codec.laser_status_byte_order; }),
       Kinds::number<int>(
           "--angle-scale", "N",
-          "docs/protocol/decisions.md#a4: 0x000012 angles are degrees x N (default 100)", 1, 1000,
+          "docs/protocol/decisions.md#a4: 0x000012 angles are degrees x N (default 100)", 1,
+          protocol::kMaxAngleCommandScale,
           [](SimOptions& o) -> int& { return o.codec.angle_command_scale; }),
       Kinds::number<uint8_t>(
           "--gimbal-system-id", "N",

@@ -152,17 +152,15 @@ class Actions(unittest.TestCase):
         self.assertEqual(state, GoalStatus.SUCCEEDED, result.message)
         return result
 
-    def test_zoom_to_ends_on_done_with_ratio_feedback(self):
+    def test_zoom_to_ends_at_the_ratio_with_ratio_feedback(self):
         self.zoom_to(1.0)
         run = self.run_goal("zoom_to", ZoomToGoal(ratio=8.0))
         state, result = run.wait(20.0)
         self.assertEqual(state, GoalStatus.SUCCEEDED, result.message)
-        self.assertIn("done", result.message)
-        # The result carries the last 0x000005 before "done" (5 Hz); the next one shows 8.0. The
-        # simulated zoom doubles every 0.5 s, so a report up to 0.2 s old reads 8 / 2^0.4 = 6.06x.
-        self.assertGreaterEqual(result.ratio, 6.0)
-        self.assertLessEqual(result.ratio, 8.05)
-        self.assertTrue(wait_until(lambda: abs(self.visible.latest().zoom_ratio - 8.0) < 0.05, 1.0))
+        # Arrived means 0x000005 shows the ratio asked for ("done" alone is not enough: a pod may
+        # stop elsewhere), so the result carries it.
+        self.assertRegex(result.message, r"zoom: (done|at 8\.0x)")
+        self.assertAlmostEqual(result.ratio, 8.0, delta=0.05)
         ratios = [f.ratio for f in run.feedback if not math.isnan(f.ratio)]
         self.assertGreater(len(ratios), 2, "no ratio feedback")
         self.assertLess(ratios[0], ratios[-1])
@@ -181,7 +179,7 @@ class Actions(unittest.TestCase):
         state, result = self.run_goal("zoom_to", ZoomToGoal(ratio=160.0, timeout=0.5)).wait(10.0)
         self.assertEqual(state, GoalStatus.ABORTED, result.message)
         self.assertIn("timed out after 0.5 s", result.message)
-        self.assertIn("0x020304", result.message)
+        self.assertIn("0x000005", result.message)
         self.assertIn("zoom stopped", result.message)
 
     def test_zoom_to_refuses_bad_goals(self):

@@ -18,7 +18,7 @@ from dynamic_reconfigure.client import Client as ReconfigureClient
 from std_srvs.srv import Trigger
 
 from k40t_driver.srv import Send, SetPalette
-from k40t_test_support import WARN, name, service, start_driver_test, wait_until
+from k40t_test_support import OK, WARN, name, service, start_driver_test, wait_until
 
 PKG = "k40t_driver"
 
@@ -241,6 +241,21 @@ class Reconfigure(unittest.TestCase):
         self.assertTrue(response.success, response.message)
         config = self.client.get_configuration(timeout=5.0)
         self.assertEqual((config["palette"], config["last_refusal"]), (6, ""))
+    def test_measurement_off_expects_no_thermal_report(self):
+        # Section 3.2.2.4: with temperature measurement off the pod sends no 0x000004. That is no
+        # missing report (it used to go ERROR "No events recorded") and no alarm (the last flags
+        # used to stay shown).
+        report, alarms = "thermal report (0x000004)", "temperature alarms"
+        self.client.update_configuration({"thermal_measurement": False})
+        try:
+            time.sleep(1.5)  # two rate windows of silence
+            self.assertTrue(self.diagnostics.wait_level(report, OK, 2.0), self.diagnostics.status(report))
+            self.assertIn("measurement off", self.diagnostics.status(report).message)
+            self.assertTrue(self.diagnostics.wait_level(alarms, OK, 2.0), self.diagnostics.status(alarms))
+            self.assertIn("measurement off", self.diagnostics.status(alarms).message)
+        finally:
+            self.client.update_configuration({"thermal_measurement": True})
+        self.assertTrue(wait_until(lambda: "measurement off" not in self.diagnostics.status(report).message, 3.0))
 
     def test_pod_settings_become_the_configuration_on_connect(self):
         # Change the pod behind the driver's back (raw 0x000106 palette 17), then reconnect.

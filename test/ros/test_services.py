@@ -144,6 +144,14 @@ class Services(unittest.TestCase):
             reconfigure.update_configuration({"camera_mode": 0})
         self.assert_rejected_without_sending("record", Record, "lens", start=True, lens=9, folder="", name="")
 
+    def test_capture_in_the_other_mode_is_refused_with_the_reason(self):
+        # Section 3.2.4.1: in photo mode (the default) the pod does not answer a record request;
+        # the service says so at once instead of "no ACK", and sends nothing.
+        self.assertTrue(wait_until(lambda: self.camera.latest() is not None, 5.0), "no camera/status")
+        self.assertEqual(self.camera.latest().mode, CameraStatus.MODE_PHOTO)
+        self.assert_rejected_without_sending("record", Record, "photo mode", start=True,
+                                             lens=Record._request_class.LENS_STREAM, folder="", name="")
+
     def test_set_photo_mode(self):
         self.call_ok("set_photo_mode", SetPhotoMode, mode=SetPhotoMode._request_class.BURST, timelapse_interval_s=5,
                      burst_count=5)
@@ -215,6 +223,25 @@ class Services(unittest.TestCase):
         self.assertIsNotNone(restarted, "gimbal/status never showed the restart")
         self.assertTrue(wait_until(lambda: self.gimbal.latest().gimbal_link_ok, 15.0))
         self.assertTrue(wait_until(lambda: service("gimbal/center", Trigger)().success, 10.0, step=0.5))
+
+    def test_cmd_angle_out_of_range_is_logged_in_the_topics_units(self):
+        # The topic is REP 103 radians: the error names those, not the pod's degrees and signs.
+        from rosgraph_msgs.msg import Log
+        logs = []
+        rosout = rospy.Subscriber("/rosout", Log, lambda m: logs.append(m.msg))
+        angle_pub = rospy.Publisher(name("gimbal/cmd_angle"), Vector3Stamped, queue_size=1)
+        wait_until(lambda: angle_pub.get_num_connections() > 0, 5.0)
+        up_too_far = Vector3Stamped()
+        up_too_far.vector.y = -1.0  # 57 deg up; the limit is 30 deg up (-0.52 rad)
+        logged = lambda: [m for m in logs if "gimbal/cmd_angle not applied" in m]
+        for _ in range(20):
+            angle_pub.publish(up_too_far)
+            if wait_until(logged, 0.25):
+                break
+        rosout.unregister()
+        self.assertTrue(logged(), "no warning logged for an out-of-range cmd_angle")
+        self.assertIn("field 'pitch'", logged()[0])
+        self.assertIn("rad (positive = down)", logged()[0])
 
     def test_cmd_angle_and_cmd_rate_dead_man(self):
         angle_pub = rospy.Publisher(name("gimbal/cmd_angle"), Vector3Stamped, queue_size=1)

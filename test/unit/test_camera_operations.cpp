@@ -100,7 +100,40 @@ TEST(ZoomTo, ValidatesTheRatioAndEndsOnDone) {
   zoom->tracker().acknowledged(true, "ok");
   EXPECT_EQ(phases_after<p::ZoomStatus>(zoom, &p::ZoomStatus::progress,
                                         {p::ZoomProgress::kZooming, p::ZoomProgress::kDone}),
-            (std::vector{Phase::kRunning, Phase::kSucceeded}));
+            (std::vector{Phase::kRunning, Phase::kRunning}))
+      << "done, but 0x000005 still says 4.2x: its next report decides";
+  visible.zoom_x = 10;
+  zoom->on_visible(visible);
+  EXPECT_EQ(zoom->tracker().phase(), Phase::kSucceeded);
+}
+
+// A "done" at another ratio than asked is no success (it used to be one); a goal at the current
+// ratio ends when 0x000005 shows it, with no "done" frame (the document promises none for it).
+TEST(ZoomTo, TheRatioReachedDecides) {
+  Result<ZoomTo> clamped = ZoomTo::create(2.0, 0, 0);
+  ASSERT_TRUE(clamped);
+  clamped->tracker().acknowledged(true, "ok");
+  p::ZoomStatus done;
+  done.progress = p::ZoomProgress::kDone;
+  p::VisibleStatus visible;
+  visible.zoom_x = 3.5;
+  clamped->on_visible(visible);
+  clamped->on_status(done);
+  for (int i = 0; i < ZoomTo::kReportsAfterDone; ++i) {
+    EXPECT_EQ(clamped->tracker().phase(), Phase::kRunning);
+    clamped->on_visible(visible);
+  }
+  EXPECT_EQ(clamped->tracker().phase(), Phase::kFailed);
+  EXPECT_EQ(clamped->tracker().reason(),
+            "zoom failed: the pod reported done at 3.5x, not the 2.0x asked for");
+
+  Result<ZoomTo> here = ZoomTo::create(3.5, 0, 0);
+  ASSERT_TRUE(here);
+  here->on_visible(visible);  // already there, before the ACK: the ACK decides
+  EXPECT_EQ(here->tracker().phase(), Phase::kRunning);
+  here->tracker().acknowledged(true, "ok");
+  EXPECT_EQ(here->tracker().phase(), Phase::kSucceeded);
+  EXPECT_EQ(here->tracker().reason(), "zoom: at 3.5x");
 }
 
 TEST(SdFormat, TimeoutChoice) {

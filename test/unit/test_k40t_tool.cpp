@@ -2,11 +2,14 @@
 // and of the sample capture, list.
 #include <gtest/gtest.h>
 
+#include <sys/socket.h>
+
 #include <string>
 #include <vector>
 
 #include "golden_checks.h"
 #include "run_tool.h"
+#include "transport_test_support.h"
 
 namespace k40t::test {
 namespace {
@@ -116,6 +119,34 @@ TEST(K40tTool, DecodeReadsHexFromStdinAndReportsUndecodablePayloads) {
   EXPECT_NE(run.err.find("good frames 2"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("unknown ids 1"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("decode errors 1"), std::string::npos) << run.err;
+}
+
+// The laser request, then the ACK's first 10 of 16 bytes: the second frame is cut short.
+TEST(K40tTool, DecodeSaysWhenTheInputEndsInsideAFrame) {
+  const ToolRun run = run_k40t(std::string("decode --hex '") + kLaserRequestHex +
+                               " FD 04 01 01 00 04 01 00 04 01'");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("good frames 1"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("the input ends inside a frame: its last 10 bytes (from offset 14) start "
+                         "a frame that is cut short"),
+            std::string::npos)
+      << run.err;
+  const ToolRun whole = run_k40t(std::string("decode --hex '") + kLaserRequestHex + "'");
+  EXPECT_EQ(whole.err.find("cut short"), std::string::npos) << whole.err;
+}
+
+// Over UDP the pod (and k40t_sim) answers the peer that last wrote to it; monitor never writes, so
+// it hears nothing: after 2 s it says why instead of staying silent.
+TEST(K40tTool, MonitorOverUdpHintsWhyNothingArrives) {
+  const uint16_t port = transport::testing::free_loopback_port(SOCK_DGRAM);
+  const std::string url = "udp://127.0.0.1:" + std::to_string(port);
+  const ToolRun run =
+      run_shell("timeout --preserve-status -s TERM 3 '" + k40t_path() + "' monitor " + url);
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("nothing received from " + url + " in 2 s: over UDP the pod"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("stopped by SIGTERM"), std::string::npos) << run.err;
 }
 
 TEST(K40tTool, DecodeOfAMissingFileFails) {

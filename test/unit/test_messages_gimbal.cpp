@@ -160,6 +160,39 @@ TEST(GimbalAngle, ScaleComesFromTheCodecOptions) {
   EXPECT_DOUBLE_EQ(back->yaw_deg, 90);
 }
 
+// docs/protocol/decisions.md#a4: the magnitudes are uint16, at most 65535. At scale 364 the yaw
+// limit 180 deg is 65520 = 0xFFF0 (low byte first: F0 FF); at 1000 90 deg would be 90000 and
+// used to go out saturated as 65535 (65.5 deg). Such a request is refused, nothing is encoded.
+TEST(GimbalAngle, AnAngleTheScaleCannotCarryIsRefused) {
+  CodecOptions most;
+  most.angle_command_scale = 364;
+  GimbalAngleRequest m;
+  m.pitch_move = false;
+  m.yaw_deg = -180;  // direction 0 (left)
+  auto p = encode_payload(m, most);
+  ASSERT_TRUE(p) << p.error();
+  const std::vector<uint8_t> expected = {0x02, 0x00, 0x00, 0x00, 0xF0, 0xFF, 0x00};
+  EXPECT_EQ(std::vector<uint8_t>(p->data(), p->data() + p->size), expected);
+
+  CodecOptions large;
+  large.angle_command_scale = 1000;
+  m.yaw_deg = 90;
+  auto refused = encode_payload(m, large);
+  ASSERT_FALSE(refused);
+  EXPECT_NE(refused.error().find("field 'yaw_deg' 90 x angle_command_scale 1000 = 90000 does not "
+                                 "fit the 16-bit magnitude"),
+            std::string::npos)
+      << refused.error();
+  EXPECT_NE(refused.error().find("angle_command_scale must be 1..364"), std::string::npos)
+      << refused.error();
+  m.yaw_deg = 65;  // 65000 fits
+  EXPECT_TRUE(encode_payload(m, large));
+  m.yaw_move = false;  // no movement: sent as 0 whatever the angle
+  m.yaw_deg = 90;
+  EXPECT_TRUE(encode_payload(m, large));
+  EXPECT_TRUE(m.validate());  // the document's ranges alone still hold
+}
+
 TEST(GimbalAngle, RejectsUndefinedDirectionsAndAZeroScale) {
   expect_decode_error<GimbalAngleRequest>({0x03, 0, 0, 0x00, 0, 0, 0}, "pitch direction byte");
   expect_decode_error<GimbalAngleRequest>({0x00, 0, 0, 0x07, 0, 0, 0}, "yaw direction byte");

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <unistd.h>
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <optional>
@@ -112,6 +113,111 @@ TEST(PodDriver, RateCommandsStopHalfASecondAfterTheLast) {
   EXPECT_LT(after_s, 0.8);
   EXPECT_EQ(pod.frames_with_id(protocol::GimbalDialSpeedRequest::kId).size(), 1u);
   EXPECT_EQ(driver->stats().deadman_stops, 1u);
+}
+
+// The 0x000017 frames the pod got, as deg/s (pitch, yaw).
+std::vector<std::pair<double, double>> dial_speeds(FakePod& pod) {
+  std::vector<std::pair<double, double>> out;
+  for (const SentFrame& f : pod.frames_with_id(protocol::GimbalDialSpeedRequest::kId)) {
+    Result<protocol::GimbalDialSpeedRequest> speed =
+        protocol::decode_payload<protocol::GimbalDialSpeedRequest>(f.payload.data(),
+                                                                   f.payload.size());
+    EXPECT_TRUE(speed) << speed.error();
+    if (speed) out.emplace_back(speed->pitch_speed_deg_s, speed->yaw_speed_deg_s);
+  }
+  return out;
+}
+
+// cmd_rate sends 0x000017 only when its speed changes; "changes" is against what the pod was last
+// told by anyone: the reconfigure dial speed, a gimbal restart and a refused 0x000017 all make the
+// next rate command send its speed again (it used to turn at 30 deg/s when 10 were commanded).
+TEST(PodDriver, RateCommandsResendTheirSpeedWhenAnotherChangedIt) {
+  const std::string pty = unique_pty("dialspeed");
+  FakePod pod(pty);
+  std::unique_ptr<PodDriver> driver = started_driver(pod, options_for(pty));
+  const auto speeds_after = [&](size_t n) {
+    pod.wait_for(FakePod::count_of(protocol::GimbalDialSpeedRequest::kId, n), milliseconds(2000));
+    return dial_speeds(pod);
+  };
+  driver->command_rate(10.0, 0.0);
+  ASSERT_EQ(speeds_after(1).size(), 1u);
+  driver->command_rate(10.0, 0.0);  // the same speed: nothing new
+  protocol::GimbalDialSpeedRequest reconfigure;
+  reconfigure.pitch_speed_deg_s = 30;
+  reconfigure.yaw_speed_deg_s = 30;
+  ASSERT_TRUE(driver->request(reconfigure).ok());
+  ASSERT_EQ(speeds_after(2).size(), 2u);
+  driver->command_rate(10.0, 0.0);
+  std::vector<std::pair<double, double>> sent = speeds_after(3);
+  ASSERT_EQ(sent.size(), 3u) << "the pod would turn at the reconfigure's 30 deg/s";
+  EXPECT_EQ(sent[2], std::make_pair(10.0, 10.0));
+
+  ASSERT_TRUE(driver->request(protocol::GimbalRestartRequest{}).ok());
+  driver->command_rate(10.0, 0.0);
+  ASSERT_EQ(speeds_after(4).size(), 4u) << "a restarted gimbal's speed is unknown";
+
+  pod.set_auto_ack(false);  // the pod refuses (here: never answers) the next speed
+  driver->command_rate(20.0, 0.0);
+  pod.wait_for(FakePod::count_of(protocol::GimbalDialSpeedRequest::kId, 7), milliseconds(2000));
+  std::this_thread::sleep_for(milliseconds(200));  // the request's last timeout
+  pod.set_auto_ack(true);
+  const size_t before = dial_speeds(pod).size();
+  driver->command_rate(20.0, 0.0);
+  sent = speeds_after(before + 1);
+  ASSERT_EQ(sent.size(), before + 1) << "a speed that did not take is sent again";
+  EXPECT_EQ(sent.back(), std::make_pair(20.0, 20.0));
+}
+
+// The ids of the frames the pod got, in order, from the `from`th on.
+std::vector<protocol::MessageId> ids_from(FakePod& pod, size_t from) {
+  std::vector<protocol::MessageId> ids;
+  const std::vector<SentFrame> frames =
+      pod.wait_for([](const auto&) { return true; }, milliseconds(0));
+  for (size_t i = from; i < frames.size(); ++i) ids.push_back(frames[i].id);
+  return ids;
+}
+
+// Section 3.2.4.25's note: box tracking goes off before the gimbal is driven, or the request is
+// refused with the reason (it used to be sent with the tracker still steering).
+TEST(PodDriver, BoxTrackingIsSwitchedOffBeforeTheGimbalIsDriven) {
+  const std::string pty = unique_pty("tracking");
+  FakePod pod(pty);
+  std::unique_ptr<PodDriver> driver = started_driver(pod, options_for(pty));
+  constexpr protocol::MessageId kTracking = protocol::BoxTrackingRequest::kId;
+  constexpr protocol::MessageId kAngle = protocol::GimbalAngleRequest::kId;
+  protocol::BoxTrackingRequest on;
+  on.width_px = 100;
+  on.height_px = 80;
+  ASSERT_TRUE(driver->request(on).ok());
+  protocol::GimbalAngleRequest angle;
+  angle.yaw_deg = 10;
+  size_t from = pod.wait_for([](const auto&) { return true; }, milliseconds(0)).size();
+  ASSERT_TRUE(driver->request(angle).ok());
+  EXPECT_EQ(ids_from(pod, from), (std::vector<protocol::MessageId>{kTracking, kAngle}));
+  const std::vector<SentFrame> off = pod.frames_with_id(kTracking);
+  ASSERT_EQ(off.size(), 2u);
+  EXPECT_EQ(off[1].payload[0], 2) << "byte 1: 2 = off";
+  from += 2;
+  ASSERT_TRUE(driver->request(angle).ok());
+  EXPECT_EQ(ids_from(pod, from), (std::vector<protocol::MessageId>{kAngle})) << "already off";
+
+  // cmd_rate (asynchronous) too; its dead-man stop is only a stop and goes at once.
+  ASSERT_TRUE(driver->request(on).ok());
+  driver->command_rate(0.0, 10.0);
+  pod.wait_for(FakePod::count_of(protocol::GimbalControlRequest::kId, 2), milliseconds(2000));
+  const std::vector<protocol::MessageId> ids = ids_from(pod, from + 2);  // after angle and "on"
+  const auto at = [&ids](protocol::MessageId id) { return std::find(ids.begin(), ids.end(), id); };
+  ASSERT_NE(at(kTracking), ids.end());
+  EXPECT_LT(at(kTracking), at(protocol::GimbalControlRequest::kId)) << "off before turning";
+
+  ASSERT_TRUE(driver->request(on).ok());
+  pod.set_auto_ack(false);  // the pod does not switch it off
+  const size_t angles = pod.frames_with_id(kAngle).size();
+  const session::AckResult refused = driver->request(angle);
+  EXPECT_FALSE(refused.ok());
+  EXPECT_FALSE(refused.sent);
+  EXPECT_NE(refused.message.find("box tracking is on"), std::string::npos) << refused.message;
+  EXPECT_EQ(pod.frames_with_id(kAngle).size(), angles) << "the angle was not sent";
 }
 
 // The first `count` time syncs of a driver that syncs every 0.25 s, its clock `offset_ms` off the

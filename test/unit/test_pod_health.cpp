@@ -185,6 +185,29 @@ TEST(PodHealthAlarms, ActiveAlarmsAreListed) {
   EXPECT_FALSE(value_of<bool>(check, "low temperature"));
 }
 
+// Section 3.2.2.4: with measurement off the pod stops 0x000004, so its last flags are not the
+// pod's any more; neither are those of a report that stopped coming.
+TEST(PodHealthAlarms, NoFlagsWhileNotMeasuringOrWhenStale) {
+  p::ThermalStatus t;
+  t.high_alarm = true;
+  ThermalContext off;
+  off.measuring = false;
+  const HealthCheck not_measuring = alarms_health(t, off);
+  EXPECT_EQ(shown(not_measuring),
+            Shown(HealthLevel::kOk, "temperature measurement off: no alarms (no 0x000004)"));
+  EXPECT_EQ(not_measuring.value("high temperature"), nullptr);
+  EXPECT_EQ(shown(alarms_health(std::nullopt, off)).first, HealthLevel::kOk);
+
+  ThermalContext stale;
+  stale.report_age_s = 2.5;
+  const HealthCheck old = alarms_health(t, stale);
+  EXPECT_EQ(shown(old), Shown(HealthLevel::kWarn, "no thermal report for 2.5 s: alarms unknown"));
+  EXPECT_EQ(old.value("high temperature"), nullptr);
+  ThermalContext fresh;
+  fresh.report_age_s = 0.2;
+  EXPECT_EQ(shown(alarms_health(t, fresh)), Shown(HealthLevel::kWarn, "alarm: high temperature"));
+}
+
 TEST(PodHealthSettings, EachStateHasItsText) {
   SettingsState s;
   EXPECT_EQ(shown(settings_health(s)),

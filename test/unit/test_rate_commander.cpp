@@ -39,6 +39,26 @@ TEST_F(RateCommanderTest, RepeatedCommandSendsNothing) {
   EXPECT_TRUE(rate.command(10.05, 5.0, t0 + milliseconds(200)).empty());
 }
 
+TEST_F(RateCommanderTest, SpeedSetElsewhereIsSentAgain) {
+  rate.command(10.0, 5.0, t0);
+  protocol::GimbalDialSpeedRequest own;
+  own.pitch_speed_deg_s = 10.0;
+  own.yaw_speed_deg_s = 5.0;
+  rate.speed_sent(own);  // its own frame going out: still the pod's speed
+  EXPECT_TRUE(rate.command(10.0, 5.0, t0 + milliseconds(100)).empty());
+  protocol::GimbalDialSpeedRequest reconfigure;
+  reconfigure.pitch_speed_deg_s = 30.0;
+  reconfigure.yaw_speed_deg_s = 30.0;
+  rate.speed_sent(reconfigure);
+  RateCommander::Output out = rate.command(10.0, 5.0, t0 + milliseconds(200));
+  ASSERT_TRUE(out.speed.has_value());
+  EXPECT_DOUBLE_EQ(out.speed->pitch_speed_deg_s, 10.0);
+  EXPECT_DOUBLE_EQ(out.speed->yaw_speed_deg_s, 5.0);
+  EXPECT_FALSE(out.control.has_value());
+  rate.forget_speed();  // reconnect, restart, refusal
+  EXPECT_TRUE(rate.command(10.0, 5.0, t0 + milliseconds(300)).speed.has_value());
+}
+
 TEST_F(RateCommanderTest, SpeedChangeKeepsDirections) {
   rate.command(10.0, 5.0, t0);
   const RateCommander::Output out = rate.command(20.0, 5.0, t0 + milliseconds(100));

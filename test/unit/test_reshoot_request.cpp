@@ -44,6 +44,22 @@ TEST(ReshootRequest, ExplicitValuesAreSentAsGiven) {
   EXPECT_EQ(payload->bytes[5], 0x0E);
 }
 
+// Bytes 3-4 carry the ratio x10 (section 3.2.4.7): 2.34 goes out as 23 = 2.3, and the request (what
+// precise_reshoot answers as "what was sent") says 2.3, not 2.34.
+TEST(ReshootRequest, TheZoomIsTheOneTheWireCarries) {
+  ReshootArgs args = visible_4000x3000();
+  args.zoom_ratio = 2.34;
+  Result<p::PreciseReshootRequest> r = reshoot_request(args, std::nullopt);
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_DOUBLE_EQ(r->zoom_x, 2.3);
+  Result<p::Payload> payload = p::encode_payload(r.value());
+  ASSERT_TRUE(payload) << payload.error();
+  EXPECT_EQ(payload->bytes[2], 23);
+  EXPECT_EQ(payload->bytes[3], 0);
+  args.zoom_ratio = 2.36;
+  EXPECT_DOUBLE_EQ(reshoot_request(args, std::nullopt)->zoom_x, 2.4);
+}
+
 TEST(ReshootRequest, ZeroMeansTheLatestVisibleReport) {
   ReshootArgs args = visible_4000x3000();
   args.zoom_ratio = 0;

@@ -44,6 +44,12 @@ TEST_F(SimGimbal, EachAxisUsesItsOwnDialSpeed) {
   EXPECT_NEAR(gimbal.pose().rate_deg_s.yaw, -5.0, 1e-6);
 }
 
+// docs/protocol/gimbal_laser_sbus.md, 0x000017: the project's one default dial speed.
+TEST_F(SimGimbal, BeforeAnyDialSpeedItTurnsAtTheProjectsDefault) {
+  EXPECT_DOUBLE_EQ(gimbal.pitch_dial_speed_deg_s(), protocol::GimbalDialSpeedRequest::kDefaultDegS);
+  EXPECT_DOUBLE_EQ(gimbal.yaw_dial_speed_deg_s(), 20.0);
+}
+
 TEST_F(SimGimbal, DialSpeedOutsideOneToThirtyIsRefused) {
   EXPECT_EQ(gimbal.set_dial_speed(0.5, 10), Outcome::kFailure);
   EXPECT_EQ(gimbal.set_dial_speed(10, 31), Outcome::kFailure);

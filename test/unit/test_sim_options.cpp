@@ -132,6 +132,15 @@ TEST(SimOptions, ConventionsAreRepeatableAndCheckedByName) {
             std::string::npos);
 }
 
+// 0x000012 carries 180 deg of yaw in a uint16 only up to a scale of 364 (65535 / 180).
+TEST(SimOptions, AnAngleScaleTooLargeForTheMagnitudeIsRefused) {
+  EXPECT_EQ(parse_sim_options({"--angle-scale", "365"}).error(),
+            "--angle-scale must be 1..364, got 365");
+  const auto most = parse_sim_options({"--angle-scale", "364"});
+  ASSERT_TRUE(most) << most.error();
+  EXPECT_EQ(most->codec.angle_command_scale, 364);
+}
+
 TEST(SimOptions, UsageListsEveryOption) {
   const std::string usage = sim_usage();
   for (const char* option :

@@ -60,5 +60,33 @@ TEST(VehicleState, FirstFixIsTheRelativeAltitudeReference) {
   EXPECT_FALSE(s.has_fix);
 }
 
+// 0x000320 byte 2 (section 3.2.4.24): 2 = 2D, 3 = 3D, 4 = 3D with DGPS/SBAS, 6 = fixed RTK. A
+// GBAS fix (DGPS, float or fixed RTK alike) used to go out as fixed RTK, a fix without a height
+// as 3D.
+TEST(VehicleState, TheGpsStatusClaimsNoMoreThanTheFixHas) {
+  VehicleState s;
+  double reference = std::nan("");
+  GnssFix fix;
+  fix.latitude_deg = 47.1;
+  fix.longitude_deg = 8.5;
+  fix.altitude_m = 500.0;
+  const std::pair<GnssFix::Quality, int> with_height[] = {{GnssFix::Quality::kNone, 1},
+                                                          {GnssFix::Quality::kFix, 3},
+                                                          {GnssFix::Quality::kSbas, 4},
+                                                          {GnssFix::Quality::kGbas, 4}};
+  for (const auto& [quality, status] : with_height) {
+    fix.quality = quality;
+    apply_fix(s, fix, &reference);
+    EXPECT_EQ(s.gps_status, status) << static_cast<int>(quality);
+  }
+  fix.altitude_m = std::nan("");
+  fix.quality = GnssFix::Quality::kFix;
+  apply_fix(s, fix, &reference);
+  EXPECT_EQ(s.gps_status, 2) << "no height: 2D";
+  fix.quality = GnssFix::Quality::kGbas;
+  apply_fix(s, fix, &reference);
+  EXPECT_EQ(s.gps_status, 2);
+}
+
 }  // namespace
 }  // namespace k40t::driver

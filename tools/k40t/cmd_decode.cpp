@@ -54,6 +54,13 @@ int run_decode(const Command& self, const ParsedArgs& args) {
   feed_capture(dispatcher, bytes, cursor);
   std::fflush(stdout);
   std::fprintf(stderr, "k40t decode: %s\n", counters_text(dispatcher.stats(), undecodable).c_str());
+  // A frame that began but never ended is no frame; said, not silently dropped.
+  if (const size_t cut = dispatcher.buffered_bytes(); cut > 0) {
+    std::fprintf(stderr,
+                 "k40t decode: the input ends inside a frame: its last %zu bytes (from offset "
+                 "%zu) start a frame that is cut short\n",
+                 cut, bytes.size() - cut);
+  }
   return kExitOk;
 }
 
@@ -70,7 +77,8 @@ const Command& decode_command() {
       "the decoded fields (units are in the field names), or an \"error\" member when the\n"
       "payload does not decode. Hex text may contain whitespace, commas and 0x prefixes.\n"
       "At the end, the counters (good frames, checksum errors, discarded bytes, unknown ids,\n"
-      "sequence gaps, decode errors) go to stderr.",
+      "sequence gaps, decode errors) go to stderr, and a frame cut short by the end of the\n"
+      "input is named there.",
       {{"--hex", "HEX", "decode these bytes, e.g. \"FD 02 04 01 00 01 01 00 04 00 01 00 A2 56\""},
        kCrcCoverageOption,
        kAckByteOrderOption},

@@ -1,6 +1,7 @@
 // k40t monitor: live decode of a link (or of a capture file), one human line per frame, counters
 // at the end (Ctrl-C / SIGTERM on a link, end of file for a capture).
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <string>
@@ -42,12 +43,29 @@ constexpr const char* kBusyHint =
     "k40t monitor: to watch a running driver's link, read its topics instead: "
     "k40t monitor ros:///NAMESPACE (e.g. ros:///k40t)";
 
-// The stop signal that arrived, or 0 as soon as `given_up` is set.
-int wait_for_stop(const sigset_t& stop_signals, const std::atomic<bool>& given_up) {
+// The stop signal that arrived, or 0 as soon as `given_up` is set (the device is busy). On udp://
+// with nothing received after kUdpHintAfter, says why that is likely: a UDP pod, and k40t_sim
+// --link udp://, answer the peer that last wrote to them, and monitor never writes.
+int wait_for_stop(const sigset_t& stop_signals, const std::atomic<bool>& given_up,
+                  const std::string& url, const transport::Transport& link) {
+  constexpr auto kUdpHintAfter = std::chrono::seconds(2);
+  const auto started = std::chrono::steady_clock::now();
+  bool hint_due = url.rfind("udp://", 0) == 0;
   const timespec poll_period{0, 50 * 1000 * 1000};
   while (!given_up) {
     const int signal_number = sigtimedwait(&stop_signals, nullptr, &poll_period);
     if (signal_number > 0) return signal_number;
+    if (hint_due && std::chrono::steady_clock::now() - started >= kUdpHintAfter) {
+      hint_due = false;
+      if (link.stats().bytes_received == 0) {
+        std::fprintf(stderr,
+                     "k40t monitor: nothing received from %s in %lld s: over UDP the pod (and "
+                     "k40t_sim --link udp://) sends only to the peer that last wrote to it, and "
+                     "monitor only listens; watch the driver's raw/rx topic, or use a serial or "
+                     "tcp link\n",
+                     url.c_str(), static_cast<long long>(kUdpHintAfter.count()));
+      }
+    }
   }
   return 0;
 }
@@ -88,7 +106,7 @@ int monitor_link(const Command& self, const std::string& url, const WireOptions&
     std::fprintf(stderr, "k40t monitor: %s\n", opened.message().c_str());
     return kExitFailed;
   }
-  const int signal_number = wait_for_stop(stop_signals, busy);
+  const int signal_number = wait_for_stop(stop_signals, busy, url, t);
   t.close();
   if (signal_number == 0) return kExitFailed;  // busy
   const transport::LinkStats link_stats = t.stats();

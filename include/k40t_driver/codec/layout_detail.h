@@ -123,6 +123,10 @@ inline int option(const CodecOptions* options, int CodecOptions::*member) {
 }
 // "angle_command_scale must be positive, got 0"
 std::string scale_error(const wire::Directed& directed, int scale);
+// A directed value at `scale` must be carried by the uint16 magnitude (a larger one would saturate
+// and move the gimbal to another angle): "field 'yaw_deg' 180 x angle_command_scale 1000 = 180000
+// does not fit the 16-bit magnitude (at most 65535): angle_command_scale must be 1..364".
+Status check_magnitude(const char* field, double value, const wire::Directed& directed, int scale);
 // "pitch direction byte must be 0 (up), 1 (down) or 2 (no movement), got 3"
 std::string direction_error(const char* field, const wire::Directed& directed, uint8_t got);
 

@@ -16,10 +16,12 @@ namespace k40t::codec {
 
 // The checks a layout implies, in wire order, keeping the first failure: the ranges it gives,
 // enum codes the document defines, values a scaled integer or a float can carry, text that
-// fits, bit fields that fit their width.
+// fits, bit fields that fit their width. With `options` (encoding), also what depends on them: a
+// directed magnitude must fit its uint16 at the scale the options give.
 class LayoutValidator {
  public:
-  explicit LayoutValidator(Status& result) : result_(result) {}
+  explicit LayoutValidator(Status& result, const CodecOptions* options = nullptr)
+      : result_(result), options_(options) {}
   template <class T, class Int>
   void operator()(const char* name, const T& v, wire::Raw<Int> t) const {
     if constexpr (std::is_enum_v<T>) {
@@ -53,6 +55,11 @@ class LayoutValidator {
   void operator()(const char*, const wire::Switchable<B, D>& p, const wire::Directed& d) const {
     if (d.limits.set) {
       range(p.value_name, static_cast<double>(*p.value), d.limits.lo, d.limits.hi, d.limits.unit);
+    }
+    if (options_ != nullptr && result_.is_ok()) {
+      // A "no movement" axis sends 0 whatever its value.
+      const double sent = *p.on ? static_cast<double>(*p.value) : 0.0;
+      keep(detail::check_magnitude(p.value_name, sent, d, detail::option(options_, d.scale)));
     }
   }
   template <class T, class Tag, class Rule>
@@ -118,6 +125,7 @@ class LayoutValidator {
           limits.unit);
   }
   Status& result_;
+  const CodecOptions* options_;
 };
 
 }  // namespace k40t::codec

@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "k40t_driver/driver/convention_tracker.h"
+#include "k40t_driver/driver/box_tracking_guard.h"
 #include "k40t_driver/driver/driver_options.h"
 #include "k40t_driver/driver/link_monitor.h"
 #include "k40t_driver/driver/rate_commander.h"
@@ -160,6 +161,12 @@ class PodDriver {
   void send_time_sync();
   void send_laser_target_request();
   void send_rate_output(const RateCommander::Output& output);
+  void track_dial_speed(const protocol::FrameView& frame);
+  // docs: driver/box_tracking_guard.h. Blocking: ok when tracking is off (or now switched off).
+  Status box_tracking_off_first();
+  // Non-blocking: tracking off, then the request (its `done` gets the refusal of either).
+  void box_tracking_off_then(protocol::MessageId id, const protocol::Payload& payload,
+                             std::function<void(const session::AckResult&)> done);
 
   using SteadyClock = std::chrono::steady_clock;
 
@@ -195,6 +202,7 @@ class PodDriver {
   int64_t clock_offset_ms_ = 0;
   RateCommander rate_;
   LinkMonitor link_monitor_;
+  BoxTrackingGuard box_tracking_;
   DriverStats counters_;  // the driver's own counters (session stats are read live)
 
   std::thread timer_thread_;
@@ -218,6 +226,13 @@ void PodDriver::on(std::function<void(const Msg&, StampNs)> handler) {
 template <class Req>
 session::AckResult PodDriver::request(const Req& request) {
   if (!session_) return not_sent_in_replay();
+  if (drives_gimbal(request)) {
+    Result<protocol::Payload> payload = protocol::encode_payload(request, codec());
+    if (!payload) return session::AckResult::not_sent(payload.error());
+    const Status off = box_tracking_off_first();
+    if (!off) return session::AckResult::not_sent(off.message());
+    return session_->request_raw(Req::kId, payload->data(), payload->size);
+  }
   return session_->request(request);
 }
 
@@ -250,6 +265,10 @@ void PodDriver::request_async(const Req& request,
     session::AckResult failed;
     failed.message = payload.error();
     done(failed);
+    return;
+  }
+  if (drives_gimbal(request) && box_tracking_.tracking()) {
+    box_tracking_off_then(Req::kId, payload.value(), std::move(done));
     return;
   }
   session_->request_async(Req::kId, payload.value(), std::move(done));

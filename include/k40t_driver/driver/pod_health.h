@@ -9,7 +9,7 @@
 //   self-test          per sensor, from 0x000001; gimbal/camera link and upgrade state
 //   stabilisation      from 0x000001
 //   SD card            from 0x000003
-//   temperature alarms from 0x000004
+//   temperature alarms from 0x000004, while measuring and while it is fresh
 //   settings           the settings read-back and refused changes
 #pragma once
 
@@ -75,7 +75,16 @@ HealthCheck link_health(const DriverStats& stats, const LinkContext& context);
 HealthCheck self_test_health(const std::optional<protocol::GimbalStatus>& gimbal);
 HealthCheck stabilisation_health(const std::optional<protocol::GimbalStatus>& gimbal);
 HealthCheck sd_card_health(const std::optional<protocol::CameraSystemStatus>& camera);
-HealthCheck alarms_health(const std::optional<protocol::ThermalStatus>& thermal);
+// What the alarms check needs besides the last 0x000004: whether the pod measures (it sends no
+// 0x000004 while it does not, section 3.2.2.4) and how old that report is.
+struct ThermalContext {
+  bool measuring = true;
+  double report_age_s = 0;
+};
+// Older than this (5 report periods at the document's 5 Hz), a report's alarm flags are not shown.
+inline constexpr double kThermalReportStaleS = 1.0;
+HealthCheck alarms_health(const std::optional<protocol::ThermalStatus>& thermal,
+                          const ThermalContext& context = {});
 HealthCheck settings_health(const SettingsState& settings);
 
 }  // namespace k40t::driver

@@ -5,7 +5,8 @@
 // up/down/stop) and 0x000017 sets the speed it turns at (the "dial speed", 1..30 deg/s in steps of
 // 0.2 deg/s). So a rate becomes a direction per axis plus a dial speed, each sent only when it
 // changes, and with no command for `timeout` both axes are told to stop. Pure logic, no I/O: the
-// driver sends what the Output asks for.
+// driver sends what the Output asks for, and tells it what else changed the pod's dial speed
+// (speed_sent, forget_speed), so that "only when it changes" compares with what the pod has.
 #pragma once
 
 #include <chrono>
@@ -40,6 +41,13 @@ class RateCommander {
   // When tick() must next run, or nullopt while the gimbal is not being turned.
   std::optional<Clock::time_point> deadline() const;
   bool moving() const { return moving_; }
+
+  // A 0x000017 went out (this commander's, or another's: dynamic_reconfigure, `send`): unless it
+  // is the speed last sent from here, the pod no longer turns at that speed.
+  void speed_sent(const protocol::GimbalDialSpeedRequest& sent);
+  // The pod's dial speed is unknown (a reconnect, a gimbal restart, a 0x000017 refused or never
+  // answered): the next command that moves an axis sends its speed again.
+  void forget_speed();
 
  private:
   std::chrono::duration<double> timeout_;

@@ -25,21 +25,28 @@ Step sd_format_step(const protocol::SdFormatStatus& status);        // 0x02030D
 Step reshoot_step(const protocol::PreciseReshootStatus& status);    // 0x020307
 Step tf_upgrade_step(const protocol::TfCardUpgradeStatus& status);  // 0x02030C
 
-// 0x000304, ended by 0x020304 "done"; the ratio comes from 0x000005 (5 Hz).
+// 0x000304. It has arrived when 0x000005 (5 Hz) reports the ratio asked for, whether or not a
+// 0x020304 "done" came: the document does not say that one comes for a zoom to the ratio the pod
+// is at (decisions.md#periodic-reports). A "done" at another ratio (a pod that clamps, or
+// supports fewer ratios, section 3.2.4.5: "倍率为相机实际支持倍率") fails once kReportsAfterDone
+// reports after it still show another ratio (the first may predate the end), naming both.
 class ZoomTo : public TrackedOperation {
  public:
   static constexpr double kDefaultTimeoutS = 15;  // 1x -> 160x takes about 4 s
+  static constexpr int kReportsAfterDone = 3;     // 0.6 s of 0x000005
 
   static Result<ZoomTo> create(double ratio_x, double timeout_s, double now_s);
   const protocol::ZoomRatioRequest& request() const { return request_; }
-  void on_status(const protocol::ZoomStatus& status) { tracker().report(zoom_step(status)); }
-  void on_visible(const protocol::VisibleStatus& status) { ratio_x_ = status.zoom_x; }
+  void on_status(const protocol::ZoomStatus& status);
+  void on_visible(const protocol::VisibleStatus& status);
   std::optional<double> ratio_x() const { return ratio_x_; }
 
  private:
   ZoomTo(const protocol::ZoomRatioRequest& request, double timeout_s, double now_s);
+  bool arrived() const;  // the latest 0x000005 shows the ratio sent (0.1x steps)
   protocol::ZoomRatioRequest request_;
   std::optional<double> ratio_x_;
+  int reports_after_done_ = -1;  // -1: no "done" yet
 };
 
 // 0x00030D, ended by 0x02030D "done" (5 Hz while formatting). The frame carries no percentage:

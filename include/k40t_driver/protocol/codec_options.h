@@ -25,6 +25,11 @@ Result<CrcCoverage> parse_crc_coverage(
 Result<ByteOrder> parse_byte_order(const std::string& text);  // "big" | "little"
 const char* to_string(ByteOrder order);
 
+// The largest angle_command_scale at which 0x000012's widest angle (180 deg of yaw) still fits
+// the uint16 magnitude: 65535 / 180 = 364.08. A larger one would saturate (at 1000, 90 deg would
+// go out as 65.5 deg), so the parameter and the simulator's --angle-scale stop here.
+inline constexpr int kMaxAngleCommandScale = 364;
+
 struct CodecOptions {
   // docs/protocol/decisions.md#a2: multi-byte fields of ACK payloads (response code included).
   // Sections that say "low byte first" for their ACK (0x010320) ignore this.

@@ -13,6 +13,8 @@
 //   static constexpr size_t kMinSize;       // fewest payload bytes decode() accepts (<= kSize)
 //   Status validate() const;                // every range the document gives; the message names
 //                                           // the field and its allowed range
+//   (optional) Status validate(const CodecOptions&) const;  // the same, and what the options
+//                                           // make unencodable; encode_payload prefers it
 //   void encode(ByteWriter&, const CodecOptions&) const;  // only called after validate() passed
 //   Status decode(ByteReader&, const CodecOptions&);      // reads kSize bytes (kMinSize at least);
 //                                           // no range checks: what the pod says is reported
@@ -31,6 +33,7 @@
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include "k40t_driver/protocol/byte_io.h"
 #include "k40t_driver/protocol/codec_options.h"
@@ -111,9 +114,25 @@ Int to_wire(double value, double scale) {
   return static_cast<Int>(scaled);
 }
 
+namespace message_detail {
+template <class T, class = void>
+struct ValidatesOptions : std::false_type {};
+template <class T>
+struct ValidatesOptions<
+    T, std::void_t<decltype(std::declval<const T&>().validate(std::declval<CodecOptions>()))>>
+    : std::true_type {};
+// validate(options) where the message has it (layouts: what a CodecOptions value makes
+// unencodable, such as an angle x angle_command_scale beyond 16 bits), else validate().
+template <class T>
+Status validate_for(const T& message, const CodecOptions& options) {
+  if constexpr (ValidatesOptions<T>::value) return message.validate(options);
+  return message.validate();
+}
+}  // namespace message_detail
+
 template <class T>
 Result<Payload> encode_payload(const T& message, const CodecOptions& options = {}) {
-  const Status valid = message.validate();
+  const Status valid = message_detail::validate_for(message, options);
   if (!valid) return Result<Payload>::fail(std::string(T::kName) + ": " + valid.message());
   Payload payload;
   ByteWriter writer(payload.bytes.data(), payload.bytes.size());

@@ -12,6 +12,7 @@
 //   };
 //
 // The macro defines validate() (the layout's checks, then extra_checks() if the struct has one),
+// validate(options) (the same and what the options decide, e.g. 0x000012's scaled magnitudes),
 // encode(), decode() and fields(). Byte order: the struct's
 // `static constexpr ByteOrder CodecOptions::* kByteOrder` if it has one (ACKs:
 // &CodecOptions::ack_byte_order, docs/protocol/decisions.md#a2), else little-endian (section 2.1).
@@ -61,10 +62,11 @@ void with_byte_order(const CodecOptions& o, Visit&& visit) {
   visit(std::integral_constant<ByteOrder, ByteOrder::kLittle>{});
 }
 
+// `options`: set when encoding, to also check what depends on them (codec/layout_validator.h).
 template <class T>
-[[gnu::flatten]] Status validate(const T& m) {
+[[gnu::flatten]] Status validate(const T& m, const CodecOptions* options = nullptr) {
   Status result = Status::ok();
-  T::layout(m, codec::LayoutValidator(result));
+  T::layout(m, codec::LayoutValidator(result, options));
   if constexpr (HasExtraChecks<T>::value) {
     if (result.is_ok()) return m.extra_checks();
   }
@@ -146,6 +148,9 @@ inline Status decode(T& m, ByteReader& r, const CodecOptions& o) {
 #define K40T_MESSAGE_LAYOUT()                                                                   \
   ::k40t::Status validate() const {                                                             \
     return ::k40t::protocol::layout_detail::validate(*this);                                    \
+  }                                                                                             \
+  ::k40t::Status validate(const ::k40t::protocol::CodecOptions& o) const {                      \
+    return ::k40t::protocol::layout_detail::validate(*this, &o);                                \
   }                                                                                             \
   void encode(::k40t::protocol::ByteWriter& w, const ::k40t::protocol::CodecOptions& o) const { \
     ::k40t::protocol::layout_detail::encode(*this, w, o);                                       \

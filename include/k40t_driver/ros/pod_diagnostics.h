@@ -1,14 +1,17 @@
 // /diagnostics for the pod (diagnostic_updater), updated every ~diagnostic_period on a steady
 // timer. The checks' levels and texts are the ROS-free driver/pod_health.h (link, self-test,
 // stabilisation, SD card, temperature alarms, settings) and driver/convention_health.h
-// (conventions); this adds the FrequencyStatus of each
-// periodic report at the document's rate and the hardware id built from the versions read on
-// connect.
+// (conventions); this adds the FrequencyStatus of each periodic report at the document's rate
+// (0x000004 only while the pod measures temperatures) and the hardware id built from the versions
+// read on connect.
 #pragma once
 
+#include <chrono>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -19,6 +22,7 @@
 #include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/driver/pod_health.h"
 #include "k40t_driver/driver/pod_queries.h"
+#include "k40t_driver/driver/thermal_measurement_watch.h"
 #include "k40t_driver/protocol/messages/camera_reports.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/protocol/messages/thermal.h"
@@ -46,8 +50,10 @@ class PodDiagnostics {
     double max_hz = 0;
     std::unique_ptr<diagnostic_updater::FrequencyStatus> status;
   };
+  // `not_expected`, if given, returns why no report is due now (empty: due at rate_hz).
   template <class Msg>
-  void add_rate_check(PodDriver& driver, const std::string& name, double rate_hz);
+  void add_rate_check(PodDriver& driver, const std::string& name, double rate_hz,
+                      std::function<std::string()> not_expected = {});
 
   // Adds the task `name` whose status is what `check` computes at each update.
   void add_check(const std::string& name, std::function<HealthCheck()> check);
@@ -69,6 +75,9 @@ class PodDiagnostics {
   std::optional<protocol::GimbalStatus> gimbal_;
   std::optional<protocol::CameraSystemStatus> camera_;
   std::optional<protocol::ThermalStatus> thermal_;
+  using SteadyClock = std::chrono::steady_clock;
+  SteadyClock::time_point thermal_at_{};  // when thermal_ came
+  ThermalMeasurementWatch measurement_;
   std::string hardware_id_ = "K40T (versions not read)";
 };
 

@@ -11,6 +11,7 @@
 #include <ros/service_server.h>
 
 #include "k40t_driver/driver/pod_driver.h"
+#include "k40t_driver/operations/capture_mode_guard.h"
 
 namespace k40t::driver {
 
@@ -35,6 +36,11 @@ class PodServices {
   template <class Req>
   void serve_trigger(const std::string& name, Req request);
 
+  // take_photo, record: `request` sent only in capture `mode` (the pod ignores it in the other,
+  // section 3.2.4.1); `what` names it in the refusal.
+  template <class Req>
+  session::AckResult in_mode(protocol::CaptureMode mode, const char* what, const Req& request);
+
   void advertise_camera();
   void advertise_gimbal();
   void advertise_thermal_and_laser();
@@ -42,6 +48,7 @@ class PodServices {
 
   ros::NodeHandle nh_;
   PodDriver& driver_;
+  operations::CaptureModeGuard mode_;  // take_photo and record need the matching mode
   std::vector<ros::ServiceServer> servers_;
 };
 

@@ -53,6 +53,8 @@ class Dispatcher {
   // The parser's live counters: read them from a handler or while nobody feeds (replay, tools);
   // from other threads use stats().
   const protocol::ParserStats& parser_stats() const;
+  // The same rule: bytes that start a frame still arriving (a capture cut short ends with them).
+  size_t buffered_bytes() const;
   uint64_t decode_errors() const;
   protocol::CrcCoverage locked_coverage() const;
   DispatcherStats stats() const;

@@ -10,6 +10,7 @@
 
 #include <optional>
 
+#include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/sim/events.h"
 #include "k40t_driver/sim/geometry.h"
 #include "k40t_driver/sim/lens.h"
@@ -30,7 +31,7 @@ struct GimbalConfig {
   double yaw_max_deg = 180;
   double min_dial_speed_deg_s = 1;
   double max_dial_speed_deg_s = 30;
-  double default_dial_speed_deg_s = 20;
+  double default_dial_speed_deg_s = protocol::GimbalDialSpeedRequest::kDefaultDegS;
   double drift_calibration_s = 5;
   double linear_calibration_s = 8;
   double accelerometer_calibration_s = 6;

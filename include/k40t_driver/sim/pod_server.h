@@ -52,6 +52,8 @@ class PodServer : public ControlTarget {
   int control_port() const { return control_.port(); }
 
  private:
+  // ok once the link is up (or a tcp-server listens), or why its first attempt failed.
+  Status first_attempt() const;
   struct DelayedAck {
     SteadyClock::time_point due;
     protocol::FrameHeader request;

@@ -53,6 +53,19 @@ TEST(YamlParams, ValuesAreTypedAsRosparamLoadsThem) {
   EXPECT_DOUBLE_EQ(c->driver.time_sync_period_s, 2.5);
 }
 
+// docs/protocol/decisions.md#a4: above 364, 180 deg x scale no longer fits 0x000012's uint16.
+TEST(YamlParams, AnAngleScaleTheMagnitudeCannotCarryIsRefused) {
+  Result<RosPodConfig> large = config_from("angle_command_scale: 1000\n");
+  ASSERT_FALSE(large);
+  EXPECT_EQ(large.error(), "parameter ~/angle_command_scale must be 1..364, got 1000");
+  Result<RosPodConfig> fraction = config_from("angle_command_scale: 100.5\n");
+  ASSERT_FALSE(fraction);
+  EXPECT_EQ(fraction.error(), "parameter ~/angle_command_scale must be a whole number");
+  Result<RosPodConfig> most = config_from("angle_command_scale: 364\n");
+  ASSERT_TRUE(most) << most.error();
+  EXPECT_EQ(most->driver.session.codec.angle_command_scale, 364);
+}
+
 TEST(YamlParams, AbsentParametersKeepTheDriversDefaults) {
   Result<RosPodConfig> c = config_from("device: serial:///dev/ttyUSB1\n");
   ASSERT_TRUE(c) << c.error();

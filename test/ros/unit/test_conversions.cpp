@@ -139,9 +139,10 @@ TEST(VehicleState, NavSatFixStatusAndCovarianceTypeAreCopied) {
   fix.altitude = 500.0;
   fix.position_covariance = {1, 0, 0, 0, 1, 0, 0, 0, 9};
   fix.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN;
+  // 0x000320 byte 2: GBAS (DGPS, float or fixed RTK alike) is 4, never 6 "fixed RTK".
   const std::pair<int8_t, uint8_t> statuses[] = {{sensor_msgs::NavSatStatus::STATUS_FIX, 3},
                                                  {sensor_msgs::NavSatStatus::STATUS_SBAS_FIX, 4},
-                                                 {sensor_msgs::NavSatStatus::STATUS_GBAS_FIX, 6},
+                                                 {sensor_msgs::NavSatStatus::STATUS_GBAS_FIX, 4},
                                                  {sensor_msgs::NavSatStatus::STATUS_NO_FIX, 1}};
   for (const auto& [status, pod_status] : statuses) {
     VehicleState s;

@@ -69,5 +69,37 @@ TEST(SettingBindings, SwitchingStrongLightOrBacklightOffIsRecognised) {
   EXPECT_FALSE(binding("palette").switches_off);
 }
 
+// 0x000001 byte 4 (section 3.1.1.1): 0 off, 1 stabilising, 2 failed, 3 feature lost. Only 1 is
+// "on"; 2 and 3 used to read back as on.
+TEST(SettingBindings, StabilisationIsOnOnlyWhileStabilising) {
+  const SettingBinding& stabilisation = binding("stabilisation");
+  ASSERT_TRUE(stabilisation.read_back);
+  protocol::GimbalStatus gimbal;
+  const SettingReports reports{nullptr, nullptr, nullptr, &gimbal};
+  const std::pair<protocol::GimbalStabilisationState, bool> cases[] = {
+      {protocol::GimbalStabilisationState::kOff, false},
+      {protocol::GimbalStabilisationState::kStabilising, true},
+      {protocol::GimbalStabilisationState::kFailed, false},
+      {protocol::GimbalStabilisationState::kFeatureLost, false}};
+  for (const auto& [state, on] : cases) {
+    gimbal.stabilisation = state;
+    Config config = Config::__getDefault__();
+    config.stabilisation = !on;
+    stabilisation.read_back(config, reports);
+    EXPECT_EQ(config.stabilisation, on) << "state " << static_cast<int>(state);
+  }
+}
+
+// One default dial speed (docs/protocol/gimbal_laser_sbus.md, 0x000017): the message struct's, the
+// reconfigure parameters' (wire units, deg/s x5) and the simulated pod's were 6, 10 and 20 deg/s.
+TEST(SettingBindings, TheDialSpeedHasOneDefault) {
+  using Speed = protocol::GimbalDialSpeedRequest;
+  const Config defaults = Config::__getDefault__();
+  EXPECT_DOUBLE_EQ(defaults.pitch_dial_speed / Speed::kWirePerDegS, Speed::kDefaultDegS);
+  EXPECT_DOUBLE_EQ(defaults.yaw_dial_speed / Speed::kWirePerDegS, Speed::kDefaultDegS);
+  EXPECT_DOUBLE_EQ(Speed{}.pitch_speed_deg_s, Speed::kDefaultDegS);
+  EXPECT_DOUBLE_EQ(Speed{}.yaw_speed_deg_s, Speed::kDefaultDegS);
+}
+
 }  // namespace
 }  // namespace k40t::driver

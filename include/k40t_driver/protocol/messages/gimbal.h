@@ -187,8 +187,12 @@ struct GimbalDialSpeedRequest {
   static constexpr double kMaxDegS = 30;
   static constexpr double kWirePerDegS = 5;
 
-  double pitch_speed_deg_s = 6;
-  double yaw_speed_deg_s = 6;
+  // The document gives no default; the project's one (docs/protocol/gimbal_laser_sbus.md, 0x000017
+  // row), shared by this struct, cfg/K40t.cfg (wire units: 100) and the simulated pod.
+  static constexpr double kDefaultDegS = 20;
+
+  double pitch_speed_deg_s = kDefaultDegS;
+  double yaw_speed_deg_s = kDefaultDegS;
 
   K40T_LAYOUT(s, v) {
     constexpr auto speed = wire::scaled<uint8_t>(kWirePerDegS).range(kMinDegS, kMaxDegS, "deg/s");
