@@ -1,4 +1,4 @@
-# Offline decoding of recorded flights (`k40t bag`, docs in README): the library k40t_ros_bag
+# Offline decoding of recorded flights (`k40t bag`, docs/bag_decoding.md): the library k40t_ros_bag
 # (src/ros/bag/: the bag sink of the decoded topics, the decoder) and the program k40t_bag that
 # `k40t bag` runs. The exports and the k40t tool's argument parsing and frame JSON it reuses are
 # the ROS-free k40t_frame_export (cmake/tools.cmake). It reads the driver's YAML parameter file

@@ -30,17 +30,18 @@ std::string flag_error(const char* field, size_t index, const wire::Flag& flag, 
          hex_byte(flag.off) + " (off), got " + hex_byte(got);
 }
 
-std::string scale_error(const wire::Directed& directed, int scale) {
-  return std::string(directed.scale_name) + " must be positive, got " + std::to_string(scale);
+std::string scale_error(const char* scale_name, int scale) {
+  return std::string(scale_name) + " must be positive, got " + std::to_string(scale);
 }
 
-std::string direction_error(const char* field, const wire::Directed& directed, uint8_t got) {
-  const bool positive_first = directed.positive.value < directed.negative.value;
-  const wire::Code& first = positive_first ? directed.positive : directed.negative;
-  const wire::Code& second = positive_first ? directed.negative : directed.positive;
+std::string direction_error(const char* field, const wire::Code& positive,
+                            const wire::Code& negative, uint8_t none, uint8_t got) {
+  const bool positive_first = positive.value < negative.value;
+  const wire::Code& first = positive_first ? positive : negative;
+  const wire::Code& second = positive_first ? negative : positive;
   return std::string(field) + " direction byte must be " + std::to_string(first.value) + " (" +
          first.meaning + "), " + std::to_string(second.value) + " (" + second.meaning + ") or " +
-         std::to_string(directed.none) + " (no movement), got " + std::to_string(got);
+         std::to_string(none) + " (no movement), got " + std::to_string(got);
 }
 
 }  // namespace k40t::codec::detail

@@ -10,7 +10,8 @@
 #include <utility>
 
 #include "k40t_driver/codec/layout_detail.h"
-#include "k40t_driver/protocol/message.h"
+#include "k40t_driver/codec/result.h"
+#include "k40t_driver/codec/value_checks.h"
 
 namespace k40t::codec {
 
@@ -23,7 +24,7 @@ class LayoutValidator {
   template <class T, class Int>
   void operator()(const char* name, const T& v, wire::Raw<Int> t) const {
     if constexpr (std::is_enum_v<T>) {
-      if (!t.any_code) keep(protocol::check_enum(name, v));
+      if (!t.any_code) keep(check_enum(name, v));
     }
     if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
       if (t.limits.set) int_range(name, static_cast<int64_t>(v), t.limits);
@@ -49,8 +50,8 @@ class LayoutValidator {
     if (*p.on) (*this)(p.value_name, static_cast<double>(*p.value), t.value);
   }
   // Checked whether or not it moves (the value of a "no movement" axis is sent as 0 anyway).
-  template <class B, class D>
-  void operator()(const char*, const wire::Switchable<B, D>& p, const wire::Directed& d) const {
+  template <class B, class D, class O>
+  void operator()(const char*, const wire::Switchable<B, D>& p, const wire::Directed<O>& d) const {
     if (d.limits.set) {
       range(p.value_name, static_cast<double>(*p.value), d.limits.lo, d.limits.hi, d.limits.unit);
     }
@@ -66,7 +67,7 @@ class LayoutValidator {
     keep(C::check(name, v));
   }
   void operator()(const char* name, const std::string& v, wire::Text t) const {
-    keep(protocol::check_text(name, v, t.terminated ? t.width - 1 : t.width));
+    keep(check_text(name, v, t.terminated ? t.width - 1 : t.width));
   }
   template <class Tag>
   void operator()(const char*, const wire::Gap&, Tag) const {}
@@ -83,7 +84,7 @@ class LayoutValidator {
   }
   template <class T>
   void operator()(const char* name, const T& v, wire::Bits b) const {
-    if constexpr (std::is_enum_v<T>) keep(protocol::check_enum(name, v));
+    if constexpr (std::is_enum_v<T>) keep(check_enum(name, v));
     const uint64_t raw = detail::to_raw<uint64_t>(v);
     const auto most = static_cast<int64_t>(detail::bit_mask<uint64_t>(b.width));
     if (b.limits.set) int_range(name, static_cast<int64_t>(raw), b.limits);
@@ -110,7 +111,7 @@ class LayoutValidator {
   template <class V>
   [[gnu::noinline, gnu::cold]] void out_of_range(const char* name, V value, V lo, V hi,
                                                  const char* unit) const {
-    keep(protocol::check_range(name, value, lo, hi, unit));
+    keep(check_range(name, value, lo, hi, unit));
   }
   // A range given in a tag (doubles) for an integer field.
   void int_range(const char* name, int64_t value, const wire::Limits& limits) const {
