@@ -5,9 +5,6 @@
 #   k40t_core       protocol/ session/ operations/: the K40T pod protocol
 #   k40t_psdk       psdk/: the DJI PSDK, beside k40t_core (codec + transport, never protocol/)
 # Sources are globbed per layer so each layer grows by adding files.
-# Boost.Preprocessor (header-only): codec/field_list.h declares a message's members and layout from
-# one list of fields.
-find_package(Boost 1.71 REQUIRED)
 file(GLOB_RECURSE K40T_CODEC_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/codec/*.cpp)
 add_library(k40t_codec STATIC ${K40T_CODEC_SOURCES})
 target_include_directories(k40t_codec PUBLIC ${PROJECT_SOURCE_DIR}/include)
@@ -44,7 +41,6 @@ set_target_properties(k40t_geo PROPERTIES POSITION_INDEPENDENT_CODE ON)
 
 file(GLOB_RECURSE K40T_PSDK_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/psdk/*.cpp)
 if(K40T_PSDK_SOURCES)
-  find_package(OpenSSL REQUIRED)
   add_library(k40t_psdk STATIC ${K40T_PSDK_SOURCES})
   target_include_directories(k40t_psdk PUBLIC ${PROJECT_SOURCE_DIR}/include)
   target_link_libraries(k40t_psdk PUBLIC k40t_codec k40t_transport k40t_geo OpenSSL::Crypto)

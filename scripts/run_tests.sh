@@ -6,8 +6,9 @@
 #           same check run without one package of the list must fail
 #   unit    gtest of the ROS-free core (build/core/bin/k40t_unit_tests)
 #   fuzz    each libFuzzer target for a few seconds (scripts/fuzz.sh)
-#   launch  roslaunch checks of every launch file (test/launch/check_launch_files.py), and what
-#           the nodelet libraries link and declare (test/launch/check_nodelet_libraries.py)
+#   launch  roslaunch checks of every launch file (test/launch/check_launch_files.py), what
+#           the nodelet libraries link and declare (test/launch/check_nodelet_libraries.py), the
+#           package's conventions (test/launch/check_package.py: layers, catkin_lint, README)
 #   stop    every nodelet unloaded and every manager and node stopped at random moments
 #           (test/stop/clean_stop.py); runs beside the other tiers
 #   ros     every rostest under test/ros/*.test against the simulated pod, K40T_ROSTEST_JOBS
@@ -99,6 +100,8 @@ if has_tier launch && [ -f "$K40T_ROOT/test/launch/check_launch_files.py" ]; the
   /usr/bin/python3 "$K40T_ROOT/test/launch/check_nodelet_libraries.py" \
      --junit "$results/launch/nodelet_libraries.xml" || [ -f "$results/launch/nodelet_libraries.xml" ] \
      || failed_steps+=("nodelet library checks")
+  /usr/bin/python3 "$K40T_ROOT/test/launch/check_package.py" --junit "$results/launch/package.xml" \
+     || [ -f "$results/launch/package.xml" ] || failed_steps+=("package checks")
   tier_done "launch"
 fi
 
