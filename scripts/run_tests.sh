@@ -100,8 +100,8 @@ if has_tier launch && [ -f "$K40T_ROOT/test/launch/check_launch_files.py" ]; the
   /usr/bin/python3 "$K40T_ROOT/test/launch/check_nodelet_libraries.py" \
      --junit "$results/launch/nodelet_libraries.xml" || [ -f "$results/launch/nodelet_libraries.xml" ] \
      || failed_steps+=("nodelet library checks")
-  /usr/bin/python3 "$K40T_ROOT/test/launch/check_package.py" --junit "$results/launch/package.xml" \
-     || [ -f "$results/launch/package.xml" ] || failed_steps+=("package checks")
+  /usr/bin/python3 "$K40T_ROOT/test/launch/check_package.py" --junit "$results/launch/package_checks.xml" \
+     || [ -f "$results/launch/package_checks.xml" ] || failed_steps+=("package checks")
   tier_done "launch"
 fi
 

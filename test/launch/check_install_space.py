@@ -26,8 +26,9 @@ import socket
 import subprocess
 import sys
 import tempfile
-import time
 import xml.etree.ElementTree as ET
+
+from checks_report import run_checks
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 PACKAGE = "k40t_driver"
@@ -163,38 +164,17 @@ def main():
     prefix = os.path.join(work, "install")
     home = os.path.join(work, "home")
     os.makedirs(home)
-    suite = ET.Element("testsuite", name="install_space")
-    failures = 0
-    started = time.time()
     failure = install(prefix)
     checks = [("install", lambda: failure)]
     if failure is None:
         checks += [("files", lambda: check_files(prefix)),
                    ("rospack_find", lambda: check_rospack(prefix, home)),
                    ("sim_launch", lambda: check_sim_launch(prefix, home))]
-    for name, check in checks:
-        t0 = time.time()
-        result = check()
-        case = ET.SubElement(suite, "testcase", classname="install_space", name=name,
-                             time="%.2f" % (time.time() - t0))
-        if result:
-            failures += 1
-            ET.SubElement(case, "failure", message=result.splitlines()[0]).text = result
-            print("FAIL %s: %s" % (name, result))
-        else:
-            print("ok   %s (%.1f s)" % (name, time.time() - t0))
-    suite.set("tests", str(len(checks)))
-    suite.set("failures", str(failures))
-    suite.set("time", "%.1f" % (time.time() - started))
-    if args.junit:
-        os.makedirs(os.path.dirname(os.path.abspath(args.junit)), exist_ok=True)
-        ET.ElementTree(suite).write(args.junit, encoding="unicode", xml_declaration=True)
+    failures = run_checks("install_space", checks, args.junit)
     if args.keep:
         print("install space kept in " + prefix)
     else:
         shutil.rmtree(work, ignore_errors=True)
-    print("install space checks: %d passed, %d failed (%.1f s)" % (
-        len(checks) - failures, failures, time.time() - started))
     return 1 if failures else 0
 
 

@@ -21,8 +21,8 @@ import shutil
 import subprocess
 import sys
 import tempfile
-import time
-import xml.etree.ElementTree as ET
+
+from checks_report import run_checks
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 README_LIMIT_BYTES = 10 * 1024
@@ -141,28 +141,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--junit", help="write JUnit XML here")
     args = parser.parse_args()
-    suite = ET.Element("testsuite", name="package")
-    failures = 0
-    started = time.time()
-    for name, check in CHECKS:
-        t0 = time.time()
-        failure = check()
-        case = ET.SubElement(suite, "testcase", classname="package", name=name,
-                             time="%.2f" % (time.time() - t0))
-        if failure:
-            failures += 1
-            ET.SubElement(case, "failure", message=failure.splitlines()[0]).text = failure
-            print("FAIL %s: %s" % (name, failure))
-        else:
-            print("ok   %s" % name)
-    suite.set("tests", str(len(CHECKS)))
-    suite.set("failures", str(failures))
-    suite.set("time", "%.1f" % (time.time() - started))
-    if args.junit:
-        os.makedirs(os.path.dirname(os.path.abspath(args.junit)), exist_ok=True)
-        ET.ElementTree(suite).write(args.junit, encoding="unicode", xml_declaration=True)
-    print("package checks: %d passed, %d failed" % (len(CHECKS) - failures, failures))
-    return 1 if failures else 0
+    return 1 if run_checks("package", CHECKS, args.junit) else 0
 
 
 if __name__ == "__main__":

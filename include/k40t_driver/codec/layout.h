@@ -49,11 +49,11 @@
 #include <string>
 #include <type_traits>
 
+#include "k40t_driver/codec/field_visit.h"
 #include "k40t_driver/codec/layout_detail.h"
 #include "k40t_driver/codec/layout_validator.h"
-#include "k40t_driver/codec/unchecked_bytes.h"
-#include "k40t_driver/codec/field_visit.h"
 #include "k40t_driver/codec/result.h"
+#include "k40t_driver/codec/unchecked_bytes.h"
 #include "k40t_driver/codec/value_checks.h"
 
 namespace k40t::codec {
@@ -66,16 +66,14 @@ namespace k40t::codec {
 template <ByteOrder kOrder, class Out = ByteWriter, class Options = wire::NoOptions>
 class BasicLayoutWriter {
  public:
-  explicit BasicLayoutWriter(Out& w, const Options* options = nullptr)
-      : w_(w), options_(options) {}
+  explicit BasicLayoutWriter(Out& w, const Options* options = nullptr) : w_(w), options_(options) {}
   template <class T, class Int>
   void operator()(const char*, const T& v, wire::Raw<Int> t) const {
     detail::write_int<Int>(w_, detail::to_raw<Int>(v, t.add), detail::order_of(kOrder, t.order));
   }
   template <class Int>
   void operator()(const char*, double v, wire::Scaled<Int> s) const {
-    detail::write_int<Int>(w_, to_wire<Int>(v, s.scale),
-                           detail::order_of(kOrder, s.order));
+    detail::write_int<Int>(w_, to_wire<Int>(v, s.scale), detail::order_of(kOrder, s.order));
   }
   template <class T, class Float>
   void operator()(const char*, T v, wire::Real<Float> r) const {

@@ -7,6 +7,7 @@ namespace k40t::protocol {
 using codec::FieldSink;
 using codec::visit_fields;
 namespace detail {
+using codec::detail::IsByteArray;
 using codec::detail::SinkAdapter;
 }  // namespace detail
 }  // namespace k40t::protocol

@@ -82,9 +82,9 @@ template <class T>
   if (out == nullptr) return;  // w has failed: encode_payload reports the overflow
   codec::UncheckedWriter cursor(out);
   with_byte_order<T>(o, [&](auto order) {
-    T::layout(m,
-              codec::BasicLayoutWriter<decltype(order)::value, codec::UncheckedWriter, CodecOptions>(
-                     cursor, &o));
+    T::layout(
+        m, codec::BasicLayoutWriter<decltype(order)::value, codec::UncheckedWriter, CodecOptions>(
+               cursor, &o));
   });
 }
 
