@@ -8,7 +8,8 @@
 #   fuzz    each libFuzzer target for a few seconds (scripts/fuzz.sh)
 #   launch  roslaunch checks of every launch file (test/launch/check_launch_files.py), what
 #           the nodelet libraries link and declare (test/launch/check_nodelet_libraries.py), the
-#           package's conventions (test/launch/check_package.py: layers, catkin_lint, README)
+#           package's conventions (test/launch/check_package.py: layers, catkin_lint, README),
+#           and sim.launch from an install space (test/launch/check_install_space.py)
 #   stop    every nodelet unloaded and every manager and node stopped at random moments
 #           (test/stop/clean_stop.py); runs beside the other tiers
 #   ros     every rostest under test/ros/*.test against the simulated pod, K40T_ROSTEST_JOBS
@@ -102,6 +103,9 @@ if has_tier launch && [ -f "$K40T_ROOT/test/launch/check_launch_files.py" ]; the
      || failed_steps+=("nodelet library checks")
   /usr/bin/python3 "$K40T_ROOT/test/launch/check_package.py" --junit "$results/launch/package_checks.xml" \
      || [ -f "$results/launch/package_checks.xml" ] || failed_steps+=("package checks")
+  # The build installed into a temporary prefix, then sim.launch from there alone.
+  /usr/bin/python3 "$K40T_ROOT/test/launch/check_install_space.py" --junit "$results/launch/install_space.xml" \
+     || [ -f "$results/launch/install_space.xml" ] || failed_steps+=("install space checks")
   tier_done "launch"
 fi
 
