@@ -106,6 +106,13 @@ if has_tier launch && [ -f "$K40T_ROOT/test/launch/check_launch_files.py" ]; the
   # The build installed into a temporary prefix, then sim.launch from there alone.
   /usr/bin/python3 "$K40T_ROOT/test/launch/check_install_space.py" --junit "$results/launch/install_space.xml" \
      || [ -f "$results/launch/install_space.xml" ] || failed_steps+=("install space checks")
+  # That check must be able to fail: with k40t.launch taken out of the install space it has to.
+  if /usr/bin/python3 "$K40T_ROOT/test/launch/check_install_space.py" \
+       --remove share/k40t_driver/launch/k40t.launch > "$results/install-space-without.log" 2>&1 \
+     || ! grep -q "FAIL files: .*" "$results/install-space-without.log" \
+     || ! grep -q "share/k40t_driver/launch/k40t.launch" "$results/install-space-without.log"; then
+    failed_steps+=("install space: the check passed with k40t.launch removed from the install space")
+  fi
   tier_done "launch"
 fi
 
