@@ -1,18 +1,29 @@
-# The ROS-free core. Sources are globbed per layer so each layer grows by adding files.
+# The ROS-free core, one library per layer, each linking only the layers below it (the includes
+# follow the same order; scripts/check_layers.py checks them):
+#   k40t_codec      codec/: Status/Result, byte I/O, field sinks, value checks, declarative layouts
+#   k40t_transport  transport/: links by URL (needs codec/ only)
+#   k40t_core       protocol/ session/ operations/: the K40T pod protocol
+#   k40t_psdk       psdk/: the DJI PSDK, beside k40t_core (codec + transport, never protocol/)
+# Sources are globbed per layer so each layer grows by adding files.
+file(GLOB_RECURSE K40T_CODEC_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/codec/*.cpp)
+add_library(k40t_codec STATIC ${K40T_CODEC_SOURCES})
+target_include_directories(k40t_codec PUBLIC ${PROJECT_SOURCE_DIR}/include)
+target_link_libraries(k40t_codec PUBLIC Boost::headers)
+set_target_properties(k40t_codec PROPERTIES POSITION_INDEPENDENT_CODE ON)
+
+file(GLOB_RECURSE K40T_TRANSPORT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/transport/*.cpp)
+add_library(k40t_transport STATIC ${K40T_TRANSPORT_SOURCES})
+target_link_libraries(k40t_transport PUBLIC k40t_codec Threads::Threads util)
+set_target_properties(k40t_transport PROPERTIES POSITION_INDEPENDENT_CODE ON)
+
 file(GLOB_RECURSE K40T_CORE_SOURCES CONFIGURE_DEPENDS
-  ${PROJECT_SOURCE_DIR}/src/codec/*.cpp     # declarative layouts shared by protocol/ and psdk/
   ${PROJECT_SOURCE_DIR}/src/protocol/*.cpp
-  ${PROJECT_SOURCE_DIR}/src/transport/*.cpp
   ${PROJECT_SOURCE_DIR}/src/session/*.cpp
   ${PROJECT_SOURCE_DIR}/src/operations/*.cpp)  # ROS-free logic of the driver's actions
-# Boost.Preprocessor (header-only): codec/field_list.h declares a message's members and layout from
-# one list of fields.
-find_package(Boost 1.71 REQUIRED)
 add_library(k40t_core STATIC ${K40T_CORE_SOURCES})
-target_include_directories(k40t_core PUBLIC ${PROJECT_SOURCE_DIR}/include)
 include(${CMAKE_CURRENT_LIST_DIR}/cfg_enum_names.cmake)  # the enum names of cfg/setting_enums.txt
 target_include_directories(k40t_core PRIVATE ${K40T_GENERATED_INCLUDE})
-target_link_libraries(k40t_core PUBLIC Threads::Threads util Boost::headers)
+target_link_libraries(k40t_core PUBLIC k40t_codec k40t_transport)
 set_target_properties(k40t_core PROPERTIES POSITION_INDEPENDENT_CODE ON)
 
 # Geodesy (src/geo/): GeographicLib for geodetic <-> ECEF <-> ENU, PROJ with proj-data's EGM96
@@ -30,10 +41,9 @@ set_target_properties(k40t_geo PROPERTIES POSITION_INDEPENDENT_CODE ON)
 
 file(GLOB_RECURSE K40T_PSDK_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/psdk/*.cpp)
 if(K40T_PSDK_SOURCES)
-  find_package(OpenSSL REQUIRED)
   add_library(k40t_psdk STATIC ${K40T_PSDK_SOURCES})
   target_include_directories(k40t_psdk PUBLIC ${PROJECT_SOURCE_DIR}/include)
-  target_link_libraries(k40t_psdk PUBLIC k40t_core k40t_geo OpenSSL::Crypto)
+  target_link_libraries(k40t_psdk PUBLIC k40t_codec k40t_transport k40t_geo OpenSSL::Crypto)
   set_target_properties(k40t_psdk PROPERTIES POSITION_INDEPENDENT_CODE ON)
 endif()
 

@@ -1,19 +1,12 @@
 # The ROS build on top of a finished ROS-free build (K40T_CORE_BUILD_DIR, written by
 # cmake/core_export.cmake): the same targets (k40t_core, k40t_psdk, k40t_skyport_bridge,
-# k40t_video, k40t_sim_model and the programs), imported rather than compiled again. What those targets link publicly is found
-# here first, as the ROS-free build found it.
+# k40t_video, k40t_sim_model and the programs), imported rather than compiled again. What those
+# targets link publicly was found by cmake/third_party.cmake, as the ROS-free build found it.
 set(K40T_TARGETS_FILE ${K40T_CORE_BUILD_DIR}/k40t_targets.cmake)
 if(NOT EXISTS ${K40T_TARGETS_FILE})
   message(FATAL_ERROR "K40T_CORE_BUILD_DIR=${K40T_CORE_BUILD_DIR} has no k40t_targets.cmake: "
                       "build the ROS-free part there first (scripts/build.sh core)")
 endif()
-find_package(OpenSSL REQUIRED)
-find_package(Boost 1.71 REQUIRED)  # k40t_core links Boost::headers
-find_package(PkgConfig REQUIRED)
-pkg_check_modules(K40T_GST REQUIRED IMPORTED_TARGET gstreamer-1.0 gstreamer-app-1.0 gstreamer-rtsp-1.0
-                  gstreamer-video-1.0)
-pkg_check_modules(K40T_GST_RTSP_SERVER REQUIRED IMPORTED_TARGET gstreamer-rtsp-server-1.0)
-find_package(OpenCV REQUIRED COMPONENTS core imgproc videoio calib3d)
 include(${K40T_TARGETS_FILE})
 
 # rosrun/roslaunch look for the programs in the devel space's lib/k40t_driver: link them there.

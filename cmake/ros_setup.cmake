@@ -2,7 +2,7 @@
 # target so that catkin's output directories apply to every executable (rosrun k40t_driver k40t).
 set(K40T_CATKIN_COMPONENTS
   roscpp nodelet pluginlib std_msgs std_srvs sensor_msgs geometry_msgs nav_msgs diagnostic_msgs
-  diagnostic_updater dynamic_reconfigure tf2 tf2_ros actionlib actionlib_msgs message_generation)
+  diagnostic_updater dynamic_reconfigure tf2 tf2_ros tf2_msgs actionlib actionlib_msgs message_generation)
 find_package(catkin REQUIRED COMPONENTS ${K40T_CATKIN_COMPONENTS})
 
 # Message and service definitions are globbed: adding a .msg/.srv file is enough.
@@ -23,5 +23,5 @@ catkin_package(
   INCLUDE_DIRS include
   LIBRARIES k40t_ros_common k40t_pod_nodelet k40t_video_nodelet k40t_skyport_nodelet
   CATKIN_DEPENDS roscpp nodelet pluginlib std_msgs std_srvs sensor_msgs geometry_msgs nav_msgs
-                 diagnostic_msgs diagnostic_updater dynamic_reconfigure tf2 tf2_ros actionlib actionlib_msgs
-                 message_runtime)
+                 diagnostic_msgs diagnostic_updater dynamic_reconfigure tf2 tf2_ros tf2_msgs actionlib
+                 actionlib_msgs message_runtime)

@@ -26,6 +26,9 @@ file(GLOB K40T_SKYPORT_NODELET_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/s
 
 add_library(k40t_ros_common SHARED ${K40T_ROS_COMMON_SOURCES})
 target_include_directories(k40t_ros_common PUBLIC ${PROJECT_SOURCE_DIR}/include)
+# The ROS headers, for every target that links this one (the nodelets, nodes and tests here; other
+# packages get them from catkin_package()'s CATKIN_DEPENDS).
+#catkin_lint: ignore_once external_interface_path
 target_include_directories(k40t_ros_common SYSTEM PUBLIC ${catkin_INCLUDE_DIRS})
 target_link_libraries(k40t_ros_common PUBLIC ${catkin_LIBRARIES})
 # Generated message/service headers and the dynamic_reconfigure K40tConfig.h, for all that link it.
@@ -37,9 +40,8 @@ target_link_libraries(k40t_pod_nodelet PUBLIC k40t_ros_common k40t_driver_core k
 
 add_library(k40t_skyport_nodelet SHARED ${K40T_SKYPORT_NODELET_SOURCES})
 target_link_libraries(k40t_skyport_nodelet PUBLIC k40t_ros_common k40t_skyport_bridge)
-include(cmake/video_ros.cmake)  # k40t_video_nodelet
-include(cmake/bag.cmake)        # k40t_ros_bag, k40t_bag (`k40t bag`), k40t_topic_monitor
-include(cmake/rviz_panel.cmake)  # k40t_rviz_panel (Qt)
+# k40t_video_nodelet, k40t_ros_bag and k40t_rviz_panel are defined by the files CMakeLists.txt
+# includes before this one (cmake/video_ros.cmake, bag.cmake with k40t_topic_monitor, rviz_panel.cmake).
 
 # Every node catches SIGINT/SIGTERM from the start of its process (src/ros/early/: a static
 # library, as only an executable's .preinit_array runs before the shared libraries' initialisers).
@@ -69,10 +71,14 @@ install(DIRECTORY include/k40t_driver/ DESTINATION ${CATKIN_PACKAGE_INCLUDE_DEST
 install(FILES nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 install(FILES bench/bench_nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/bench)
 install(DIRECTORY launch config urdf rviz DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
-# The launch files' URDF generator ($(find k40t_driver)/scripts/k40t_urdf.py: prefixed frames).
+# The launch files' URDF generator ($(find k40t_driver)/scripts/k40t_urdf.py: prefixed frames): in
+# share/, where $(find k40t_driver) points in an install space too, rather than in bin.
+#catkin_lint: ignore_once wrong_bin_install_destination
 install(PROGRAMS scripts/k40t_urdf.py DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/scripts)
 # replay.launch's player (pkg="k40t_driver" type="k40t_replay_play.py"): rosbag play, then the launch ends.
 catkin_install_python(PROGRAMS scripts/k40t_replay_play.py DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+# The live telemetry line (`rosrun k40t_driver k40t_status.py`).
+catkin_install_python(PROGRAMS scripts/k40t_status.py DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 # rostest programs, run by scripts/run_tests.sh through test/ros/*.test:
 #   test/ros/unit/*.cpp  gtest of what needs ROS types (conversions, the settings table...), one
@@ -80,6 +86,8 @@ catkin_install_python(PROGRAMS scripts/k40t_replay_play.py DESTINATION ${CATKIN_
 #   test/ros/*.cpp       gtest nodes, one executable each;
 #   test/ros/*.py        Python test nodes (/usr/bin/python3, rospy + unittest).
 if(CATKIN_ENABLE_TESTING)
+  # Also found by cmake/unit_tests.cmake, which only the ROS-free build includes.
+  #catkin_lint: ignore_once duplicate_find
   find_package(GTest REQUIRED)
   file(GLOB K40T_ROS_UNIT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/test/ros/unit/*.cpp)
   if(K40T_ROS_UNIT_SOURCES)

@@ -7,15 +7,12 @@
 #                   and k40t_video for the split-screen layout both sides share; the unit tests and
 #                   benchmarks reach k40t_video through k40t_sim_model;
 #   k40t_video_sim  the standalone simulated stream (tools/k40t_video_sim/).
-find_package(PkgConfig REQUIRED)
-pkg_check_modules(K40T_GST REQUIRED IMPORTED_TARGET gstreamer-1.0 gstreamer-app-1.0 gstreamer-rtsp-1.0
-                  gstreamer-video-1.0)
-pkg_check_modules(K40T_GST_RTSP_SERVER REQUIRED IMPORTED_TARGET gstreamer-rtsp-server-1.0)
-find_package(OpenCV REQUIRED COMPONENTS core imgproc videoio)
+# GStreamer and OpenCV are found by cmake/third_party.cmake.
 
 file(GLOB K40T_VIDEO_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/video/*.cpp)
 add_library(k40t_video STATIC ${K40T_VIDEO_SOURCES})
 target_include_directories(k40t_video PUBLIC ${PROJECT_SOURCE_DIR}/include)
+#catkin_lint: ignore_once external_interface_path (cv::Mat is in k40t_video's headers)
 target_include_directories(k40t_video SYSTEM PUBLIC ${OpenCV_INCLUDE_DIRS})
 target_link_libraries(k40t_video PUBLIC k40t_core PkgConfig::K40T_GST opencv_core opencv_imgproc
                                         opencv_videoio)

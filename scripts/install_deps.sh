@@ -8,9 +8,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev libboost-dev
   catkin ros-base-dev python3-rostest rosbash python3-rosbag python3-roslaunch
   libnodeletlib-tools libnodelet-dev pluginlib-dev
-  libtf2-ros-dev libtf2-geometry-msgs-dev libimage-transport-dev image-transport-tools
-  libcamera-info-manager-dev
-  libdiagnostic-updater-dev libcv-bridge-dev libopencv-dev python3-dynamic-reconfigure
+  libtf2-ros-dev libimage-transport-dev image-transport-tools libcamera-info-manager-dev
+  libdiagnostic-updater-dev libopencv-dev python3-dynamic-reconfigure
   libdynamic-reconfigure-config-init-mutex-dev ros-robot-state-publisher
   ros-std-srvs libstd-srvs-dev ros-sensor-msgs libsensor-msgs-dev ros-nav-msgs libnav-msgs-dev
   python3-sensor-msgs python3-diagnostic-msgs python3-std-srvs python3-nodelet python3-nav-msgs
@@ -23,6 +22,7 @@ packages=(
   gstreamer1.0-rtsp gstreamer1.0-tools gstreamer1.0-plugins-base-apps
   libgeographiclib-dev libproj-dev proj-data
   librosbag-storage-dev libyaml-cpp-dev
+  catkin-lint
 )
 
 missing=()

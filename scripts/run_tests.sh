@@ -7,8 +7,10 @@
 #   unit    gtest of the ROS-free core (build/core/bin/k40t_unit_tests)
 #   fuzz    each libFuzzer target for a few seconds (scripts/fuzz.sh)
 #   launch  roslaunch checks of every launch file (test/launch/check_launch_files.py), what
-#           the nodelet libraries link and declare (test/launch/check_nodelet_libraries.py), and
-#           the launch files started as in the field (test/launch/check_field.py)
+#           the nodelet libraries link and declare (test/launch/check_nodelet_libraries.py), the
+#           package's conventions (test/launch/check_package.py: layers, catkin_lint, README),
+#           sim.launch from an install space (test/launch/check_install_space.py), and the launch
+#           files started as in the field (test/launch/check_field.py)
 #   stop    every nodelet unloaded and every manager and node stopped at random moments
 #           (test/stop/clean_stop.py); runs beside the other tiers
 #   ros     every rostest under test/ros/*.test against the simulated pod, K40T_ROSTEST_JOBS
@@ -101,6 +103,18 @@ if has_tier launch && [ -f "$K40T_ROOT/test/launch/check_launch_files.py" ]; the
   /usr/bin/python3 "$K40T_ROOT/test/launch/check_nodelet_libraries.py" \
      --junit "$results/launch/nodelet_libraries.xml" || [ -f "$results/launch/nodelet_libraries.xml" ] \
      || failed_steps+=("nodelet library checks")
+  /usr/bin/python3 "$K40T_ROOT/test/launch/check_package.py" --junit "$results/launch/package_checks.xml" \
+     || [ -f "$results/launch/package_checks.xml" ] || failed_steps+=("package checks")
+  # The build installed into a temporary prefix, then sim.launch from there alone.
+  /usr/bin/python3 "$K40T_ROOT/test/launch/check_install_space.py" --junit "$results/launch/install_space.xml" \
+     || [ -f "$results/launch/install_space.xml" ] || failed_steps+=("install space checks")
+  # That check must be able to fail: with k40t.launch taken out of the install space it has to.
+  if /usr/bin/python3 "$K40T_ROOT/test/launch/check_install_space.py" \
+       --remove share/k40t_driver/launch/k40t.launch > "$results/install-space-without.log" 2>&1 \
+     || ! grep -q "FAIL files: .*" "$results/install-space-without.log" \
+     || ! grep -q "share/k40t_driver/launch/k40t.launch" "$results/install-space-without.log"; then
+    failed_steps+=("install space: the check passed with k40t.launch removed from the install space")
+  fi
   # The launch files as a user starts them: quiet starts, roswtf, the flight recorder cut by
   # SIGKILL and its recovery, replay's clean end. 45-60 s, mostly waiting for the 20 s recording:
   # it runs beside the ros tier, like the stop tier, and is waited for at the end.

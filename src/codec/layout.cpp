@@ -37,33 +37,35 @@ std::string flag_error(const char* field, size_t index, const wire::Flag& flag, 
          hex_byte(flag.off) + " (off), got " + hex_byte(got);
 }
 
-std::string scale_error(const wire::Directed& directed, int scale) {
-  return std::string(directed.scale_name) + " must be positive, got " + std::to_string(scale);
+std::string scale_error(const char* scale_name, int scale) {
+  return std::string(scale_name) + " must be positive, got " + std::to_string(scale);
 }
 
-Status check_magnitude(const char* field, double value, const wire::Directed& directed, int scale) {
-  if (scale <= 0) return Status::fail(scale_error(directed, scale));
+Status check_magnitude(const char* field, double value, const char* scale_name,
+                       const wire::Limits& limits, int scale) {
+  if (scale <= 0) return Status::fail(scale_error(scale_name, scale));
   constexpr double kMost = std::numeric_limits<uint16_t>::max();
   const double magnitude = std::round(std::fabs(value) * scale);
   if (magnitude <= kMost) return Status::ok();
   std::string why = std::string("field '") + field + "' " + number_text(value) + " x " +
-                    directed.scale_name + " " + std::to_string(scale) + " = " +
-                    number_text(magnitude) + " does not fit the 16-bit magnitude (at most 65535)";
-  if (directed.limits.set) {
-    const double widest = std::max(std::fabs(directed.limits.lo), std::fabs(directed.limits.hi));
-    why += ": " + std::string(directed.scale_name) + " must be 1.." +
+                    scale_name + " " + std::to_string(scale) + " = " + number_text(magnitude) +
+                    " does not fit the 16-bit magnitude (at most 65535)";
+  if (limits.set) {
+    const double widest = std::max(std::fabs(limits.lo), std::fabs(limits.hi));
+    why += ": " + std::string(scale_name) + " must be 1.." +
            std::to_string(static_cast<int>(kMost / widest)) + " to carry the whole range";
   }
   return Status::fail(why);
 }
 
-std::string direction_error(const char* field, const wire::Directed& directed, uint8_t got) {
-  const bool positive_first = directed.positive.value < directed.negative.value;
-  const wire::Code& first = positive_first ? directed.positive : directed.negative;
-  const wire::Code& second = positive_first ? directed.negative : directed.positive;
+std::string direction_error(const char* field, const wire::Code& positive,
+                            const wire::Code& negative, uint8_t none, uint8_t got) {
+  const bool positive_first = positive.value < negative.value;
+  const wire::Code& first = positive_first ? positive : negative;
+  const wire::Code& second = positive_first ? negative : positive;
   return std::string(field) + " direction byte must be " + std::to_string(first.value) + " (" +
          first.meaning + "), " + std::to_string(second.value) + " (" + second.meaning + ") or " +
-         std::to_string(directed.none) + " (no movement), got " + std::to_string(got);
+         std::to_string(none) + " (no movement), got " + std::to_string(got);
 }
 
 }  // namespace k40t::codec::detail

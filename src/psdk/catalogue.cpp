@@ -69,11 +69,11 @@ bool payload_encrypts(CommandKey key) {
          key == key_of(CommandSet::kPositioning, 0x01);
 }
 
-Status describe_frame(const FrameView& frame, const Aes128Ecb* cipher, protocol::FieldSink& sink) {
+Status describe_frame(const FrameView& frame, const Aes128Ecb* cipher, codec::FieldSink& sink) {
   const FrameHeader& h = frame.header;
   const CommandInfo* info = find_command(h.command, h.packet_type);
   sink.text("command", info ? info->name : std::string("unknown"));
-  protocol::detail::SinkAdapter out{sink};
+  codec::detail::SinkAdapter out{sink};
   out("cmd_set", static_cast<CommandSet>(h.command.set));
   out("cmd_id", h.command.id);
   out("packet_type", h.packet_type);

@@ -49,33 +49,31 @@
 #include <string>
 #include <type_traits>
 
+#include "k40t_driver/codec/field_visit.h"
 #include "k40t_driver/codec/layout_detail.h"
 #include "k40t_driver/codec/layout_validator.h"
+#include "k40t_driver/codec/result.h"
 #include "k40t_driver/codec/unchecked_bytes.h"
-#include "k40t_driver/protocol/field_visit.h"
-#include "k40t_driver/protocol/message.h"
+#include "k40t_driver/codec/value_checks.h"
 
 namespace k40t::codec {
-
-using protocol::FieldSink;
 
 // The message's byte order is a template argument: known at compile time, each multi-byte field
 // is written without a run-time test per byte (message_layout.h picks the instance once).
 // Out: ByteWriter, or UncheckedWriter once the whole size has been claimed. `options`: where a
-// field takes a value from the CodecOptions (wire::directed); none: the defaults.
-template <ByteOrder kOrder, class Out = ByteWriter>
+// field takes a value from the family's options (wire::directed, whose Options must be this
+// Options); none: the defaults.
+template <ByteOrder kOrder, class Out = ByteWriter, class Options = wire::NoOptions>
 class BasicLayoutWriter {
  public:
-  explicit BasicLayoutWriter(Out& w, const CodecOptions* options = nullptr)
-      : w_(w), options_(options) {}
+  explicit BasicLayoutWriter(Out& w, const Options* options = nullptr) : w_(w), options_(options) {}
   template <class T, class Int>
   void operator()(const char*, const T& v, wire::Raw<Int> t) const {
     detail::write_int<Int>(w_, detail::to_raw<Int>(v, t.add), detail::order_of(kOrder, t.order));
   }
   template <class Int>
   void operator()(const char*, double v, wire::Scaled<Int> s) const {
-    detail::write_int<Int>(w_, protocol::to_wire<Int>(v, s.scale),
-                           detail::order_of(kOrder, s.order));
+    detail::write_int<Int>(w_, to_wire<Int>(v, s.scale), detail::order_of(kOrder, s.order));
   }
   template <class T, class Float>
   void operator()(const char*, T v, wire::Real<Float> r) const {
@@ -83,16 +81,17 @@ class BasicLayoutWriter {
   }
   template <class B, class D, class Int>
   void operator()(const char*, const wire::Switchable<B, D>& p, wire::OrOff<Int> t) const {
-    const Int raw = *p.on ? protocol::to_wire<Int>(*p.value, t.value.scale) : t.off;
+    const Int raw = *p.on ? to_wire<Int>(*p.value, t.value.scale) : t.off;
     detail::write_int<Int>(w_, raw, detail::order_of(kOrder, t.value.order));
   }
   template <class B, class D>
-  void operator()(const char*, const wire::Switchable<B, D>& p, const wire::Directed& d) const {
+  void operator()(const char*, const wire::Switchable<B, D>& p,
+                  const wire::Directed<Options>& d) const {
     const double value = static_cast<double>(*p.value);
     w_.u8(!*p.on ? d.none : value < 0 ? d.negative.value : d.positive.value);
     const double scale = detail::option(options_, d.scale);
     detail::write_int<uint16_t>(
-        w_, *p.on ? protocol::to_wire<uint16_t>(std::fabs(value), scale) : uint16_t{0}, kOrder);
+        w_, *p.on ? to_wire<uint16_t>(std::fabs(value), scale) : uint16_t{0}, kOrder);
   }
   template <class T, class Tag, class Rule>
   void operator()(const char* name, const T& v, const wire::Ruled<Tag, Rule>& r) const {
@@ -123,7 +122,7 @@ class BasicLayoutWriter {
 
  private:
   Out& w_;
-  const CodecOptions* options_;
+  const Options* options_;
 };
 using LayoutWriter = BasicLayoutWriter<ByteOrder::kLittle>;
 
@@ -131,11 +130,11 @@ using LayoutWriter = BasicLayoutWriter<ByteOrder::kLittle>;
 // payload has ended before them, and reserved bytes from there on may be left off. Decode errors (a
 // fixed byte or a flag with another code) are kept in `failure` (the first one); without it they
 // are ignored.
-template <ByteOrder kOrder, class In = ByteReader>
+template <ByteOrder kOrder, class In = ByteReader, class Options = wire::NoOptions>
 class BasicLayoutReader {
  public:
   explicit BasicLayoutReader(In& r, size_t optional_from = std::numeric_limits<size_t>::max(),
-                             Status* failure = nullptr, const CodecOptions* options = nullptr)
+                             Status* failure = nullptr, const Options* options = nullptr)
       : r_(r), optional_from_(optional_from), failure_(failure), options_(options) {}
   template <class T, class Int>
   void operator()(const char*, T& v, wire::Raw<Int> t) const {
@@ -162,12 +161,12 @@ class BasicLayoutReader {
   }
   template <class B, class D>
   void operator()(const char* name, const wire::Switchable<B, D>& p,
-                  const wire::Directed& d) const {
+                  const wire::Directed<Options>& d) const {
     if (absent()) return;
     const uint8_t direction = r_.u8();
     const uint16_t magnitude = detail::read_int<uint16_t>(r_, kOrder);
     const int scale = detail::option(options_, d.scale);
-    if (scale <= 0) return fail(detail::scale_error(d, scale));
+    if (scale <= 0) return fail(detail::scale_error(d.scale_name, scale));
     *p.on = direction != d.none;
     if (direction == d.none) {
       *p.value = 0;
@@ -175,7 +174,7 @@ class BasicLayoutReader {
       const double value = magnitude / static_cast<double>(scale);
       *p.value = direction == d.positive.value ? value : -value;
     } else if (r_.ok()) {
-      fail(detail::direction_error(name, d, direction));
+      fail(detail::direction_error(name, d.positive, d.negative, d.none, direction));
     }
   }
   template <class T, class Tag, class Rule>
@@ -242,7 +241,7 @@ class BasicLayoutReader {
   In& r_;
   size_t optional_from_;
   Status* failure_;
-  const CodecOptions* options_;
+  const Options* options_;
 };
 using LayoutReader = BasicLayoutReader<ByteOrder::kLittle>;
 
@@ -266,8 +265,8 @@ class LayoutSizer {
   void operator()(const char*, const wire::Switchable<B, D>&, wire::OrOff<Int>) const {
     size_ += sizeof(Int);
   }
-  template <class B, class D>
-  void operator()(const char*, const wire::Switchable<B, D>&, const wire::Directed&) const {
+  template <class B, class D, class O>
+  void operator()(const char*, const wire::Switchable<B, D>&, const wire::Directed<O>&) const {
     size_ += 1 + sizeof(uint16_t);
   }
   template <class T, class Tag, class Rule>
@@ -340,8 +339,8 @@ class LayoutSink {
   explicit LayoutSink(FieldSink& sink) : sink_(sink) {}
   template <class T, class Tag>
   void operator()(const char* name, const T& v, Tag tag) const {
-    protocol::detail::SinkAdapter adapter{sink_};
-    FieldLister<protocol::detail::SinkAdapter>{adapter}(name, v, tag);
+    detail::SinkAdapter adapter{sink_};
+    FieldLister<detail::SinkAdapter>{adapter}(name, v, tag);
   }
 
  private:

@@ -7,7 +7,6 @@
 #include <type_traits>
 
 #include "k40t_driver/codec/wire.h"
-#include "k40t_driver/protocol/message.h"
 
 namespace k40t::codec::detail {
 
@@ -116,19 +115,22 @@ struct BitUnpacker {
   }
 };
 
-// The value of a CodecOptions member a field takes (the defaults when no options were given).
-inline int option(const CodecOptions* options, int CodecOptions::*member) {
-  static const CodecOptions kDefaults{};
+// The value of an options member a field takes (the defaults when no options were given).
+template <class Options>
+int option(const Options* options, int Options::*member) {
+  static const Options kDefaults{};
   return options != nullptr ? options->*member : kDefaults.*member;
 }
 // "angle_command_scale must be positive, got 0"
-std::string scale_error(const wire::Directed& directed, int scale);
+std::string scale_error(const char* scale_name, int scale);
 // A directed value at `scale` must be carried by the uint16 magnitude (a larger one would saturate
 // and move the gimbal to another angle): "field 'yaw_deg' 180 x angle_command_scale 1000 = 180000
 // does not fit the 16-bit magnitude (at most 65535): angle_command_scale must be 1..364".
-Status check_magnitude(const char* field, double value, const wire::Directed& directed, int scale);
+Status check_magnitude(const char* field, double value, const char* scale_name,
+                       const wire::Limits& limits, int scale);
 // "pitch direction byte must be 0 (up), 1 (down) or 2 (no movement), got 3"
-std::string direction_error(const char* field, const wire::Directed& directed, uint8_t got);
+std::string direction_error(const char* field, const wire::Code& positive,
+                            const wire::Code& negative, uint8_t none, uint8_t got);
 
 // "byte 1 must be 0x01 (read all settings), got 0x02" / "byte 1 must be the command code 1, got 2"
 std::string fixed_byte_error(size_t index, const wire::Fixed& fixed, uint8_t got);

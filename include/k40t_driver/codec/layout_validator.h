@@ -10,7 +10,8 @@
 #include <utility>
 
 #include "k40t_driver/codec/layout_detail.h"
-#include "k40t_driver/protocol/message.h"
+#include "k40t_driver/codec/result.h"
+#include "k40t_driver/codec/value_checks.h"
 
 namespace k40t::codec {
 
@@ -18,14 +19,16 @@ namespace k40t::codec {
 // enum codes the document defines, values a scaled integer or a float can carry, text that
 // fits, bit fields that fit their width. With `options` (encoding), also what depends on them: a
 // directed magnitude must fit its uint16 at the scale the options give.
+// `Options`: the family's options type (the pod's CodecOptions), deduced from the pointer given.
+template <class Options = wire::NoOptions>
 class LayoutValidator {
  public:
-  explicit LayoutValidator(Status& result, const CodecOptions* options = nullptr)
+  explicit LayoutValidator(Status& result, const Options* options = nullptr)
       : result_(result), options_(options) {}
   template <class T, class Int>
   void operator()(const char* name, const T& v, wire::Raw<Int> t) const {
     if constexpr (std::is_enum_v<T>) {
-      if (!t.any_code) keep(protocol::check_enum(name, v));
+      if (!t.any_code) keep(check_enum(name, v));
     }
     if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
       if (t.limits.set) int_range(name, static_cast<int64_t>(v), t.limits);
@@ -51,15 +54,18 @@ class LayoutValidator {
     if (*p.on) (*this)(p.value_name, static_cast<double>(*p.value), t.value);
   }
   // Checked whether or not it moves (the value of a "no movement" axis is sent as 0 anyway).
-  template <class B, class D>
-  void operator()(const char*, const wire::Switchable<B, D>& p, const wire::Directed& d) const {
+  template <class B, class D, class O>
+  void operator()(const char*, const wire::Switchable<B, D>& p, const wire::Directed<O>& d) const {
     if (d.limits.set) {
       range(p.value_name, static_cast<double>(*p.value), d.limits.lo, d.limits.hi, d.limits.unit);
     }
-    if (options_ != nullptr && result_.is_ok()) {
-      // A "no movement" axis sends 0 whatever its value.
-      const double sent = *p.on ? static_cast<double>(*p.value) : 0.0;
-      keep(detail::check_magnitude(p.value_name, sent, d, detail::option(options_, d.scale)));
+    if constexpr (std::is_same_v<O, Options>) {
+      if (options_ != nullptr && result_.is_ok()) {
+        // A "no movement" axis sends 0 whatever its value.
+        const double sent = *p.on ? static_cast<double>(*p.value) : 0.0;
+        keep(detail::check_magnitude(p.value_name, sent, d.scale_name, d.limits,
+                                     detail::option(options_, d.scale)));
+      }
     }
   }
   template <class T, class Tag, class Rule>
@@ -73,7 +79,7 @@ class LayoutValidator {
     keep(C::check(name, v));
   }
   void operator()(const char* name, const std::string& v, wire::Text t) const {
-    keep(protocol::check_text(name, v, t.terminated ? t.width - 1 : t.width));
+    keep(check_text(name, v, t.terminated ? t.width - 1 : t.width));
   }
   template <class Tag>
   void operator()(const char*, const wire::Gap&, Tag) const {}
@@ -90,7 +96,7 @@ class LayoutValidator {
   }
   template <class T>
   void operator()(const char* name, const T& v, wire::Bits b) const {
-    if constexpr (std::is_enum_v<T>) keep(protocol::check_enum(name, v));
+    if constexpr (std::is_enum_v<T>) keep(check_enum(name, v));
     const uint64_t raw = detail::to_raw<uint64_t>(v);
     const auto most = static_cast<int64_t>(detail::bit_mask<uint64_t>(b.width));
     if (b.limits.set) int_range(name, static_cast<int64_t>(raw), b.limits);
@@ -117,7 +123,7 @@ class LayoutValidator {
   template <class V>
   [[gnu::noinline, gnu::cold]] void out_of_range(const char* name, V value, V lo, V hi,
                                                  const char* unit) const {
-    keep(protocol::check_range(name, value, lo, hi, unit));
+    keep(check_range(name, value, lo, hi, unit));
   }
   // A range given in a tag (doubles) for an integer field.
   void int_range(const char* name, int64_t value, const wire::Limits& limits) const {
@@ -125,7 +131,7 @@ class LayoutValidator {
           limits.unit);
   }
   Status& result_;
-  const CodecOptions* options_;
+  const Options* options_;
 };
 
 }  // namespace k40t::codec

@@ -10,11 +10,9 @@
 #include <cstring>
 #include <string>
 
-#include "k40t_driver/protocol/byte_io.h"
+#include "k40t_driver/codec/byte_io.h"
 
 namespace k40t::codec {
-
-using protocol::ByteOrder;
 
 class UncheckedWriter {
  public:

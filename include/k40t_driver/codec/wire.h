@@ -28,15 +28,9 @@
 #include <cstdint>
 #include <tuple>
 
-#include "k40t_driver/protocol/byte_io.h"
-#include "k40t_driver/protocol/codec_options.h"
+#include "k40t_driver/codec/byte_io.h"
 
 namespace k40t::codec {
-
-using protocol::ByteOrder;
-using protocol::ByteReader;
-using protocol::ByteWriter;
-using protocol::CodecOptions;
 
 namespace wire {
 
@@ -128,6 +122,9 @@ struct Packed {};
 // A struct carried inline (e.g. the SBUS values inside their ACK): its static body(s, v) lists
 // the fields it shares (its layout() is body() plus its own reserved bytes).
 struct Nested {};
+// The options of a family that has none (the PSDK): what the layout visitors get by default.
+struct NoOptions {};
+
 // Bytes with no field of their own: layout() passes `wire::gap` as the value.
 struct Gap {};
 inline constexpr Gap gap{};
@@ -179,19 +176,22 @@ struct Switchable {
   D* value;
 };
 
-// A signed value carried as a direction byte and a uint16 magnitude, |value| x the scale a
-// CodecOptions member holds (the gimbal angle request 0x000012, docs/protocol/decisions.md#a4).
+// A signed value carried as a direction byte and a uint16 magnitude, |value| x the scale a member
+// of the family's options holds (the pod's CodecOptions::angle_command_scale for the gimbal angle
+// request 0x000012, docs/protocol/decisions.md#a4). The options type is a template argument so
+// the codec knows no family's options; the layout visitors are given the same type.
 // The field is a Switchable: the bool off is the direction code `none` ("no movement", magnitude
 // sent as 0, value read as 0). The range applies to the value whether or not it moves.
 struct Code {
   uint8_t value;
   const char* meaning;  // for decode errors: "0 (up), 1 (down) or 2 (no movement)"
 };
+template <class Options>
 struct Directed {
   Code positive;  // the direction code of a positive value
   Code negative;
   uint8_t none;
-  int CodecOptions::*scale;
+  int Options::*scale;
   const char* scale_name;  // for the error when the option is not positive
   Limits limits{};
   constexpr Directed range(double lo, double hi, const char* unit = "") const {
@@ -284,8 +284,9 @@ template <class Int>
 constexpr OrOff<Int> or_off(Scaled<Int> value, Int off) {
   return {value, off};
 }
-constexpr Directed directed(Code positive, Code negative, uint8_t none, int CodecOptions::*scale,
-                            const char* scale_name) {
+template <class Options>
+constexpr Directed<Options> directed(Code positive, Code negative, uint8_t none,
+                                     int Options::*scale, const char* scale_name) {
   return {positive, negative, none, scale, scale_name};
 }
 template <class Tag, class Rule>

@@ -84,8 +84,9 @@ template <class T>
   if (out == nullptr) return;  // w has failed: encode_payload reports the overflow
   codec::UncheckedWriter cursor(out);
   with_byte_order<T>(o, [&](auto order) {
-    T::layout(m,
-              codec::BasicLayoutWriter<decltype(order)::value, codec::UncheckedWriter>(cursor, &o));
+    T::layout(
+        m, codec::BasicLayoutWriter<decltype(order)::value, codec::UncheckedWriter, CodecOptions>(
+               cursor, &o));
   });
 }
 
@@ -99,10 +100,11 @@ inline Status decode_body(T& m, ByteReader& r, const CodecOptions& o) {
     if (size >= full) {
       const size_t start = r.position();
       codec::UncheckedReader cursor(r.claim(full), full, start);
-      T::layout(m, codec::BasicLayoutReader<kOrder, codec::UncheckedReader>(cursor, T::kMinSize,
-                                                                            &failure, &o));
+      T::layout(m, codec::BasicLayoutReader<kOrder, codec::UncheckedReader, CodecOptions>(
+                       cursor, T::kMinSize, &failure, &o));
     } else {
-      T::layout(m, codec::BasicLayoutReader<kOrder>(r, T::kMinSize, &failure, &o));
+      T::layout(m, codec::BasicLayoutReader<kOrder, ByteReader, CodecOptions>(r, T::kMinSize,
+                                                                              &failure, &o));
     }
   });
   if constexpr (HasFinishDecode<T>::value) {

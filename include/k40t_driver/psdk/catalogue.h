@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "k40t_driver/protocol/field_visit.h"
+#include "k40t_driver/codec/field_visit.h"
 #include "k40t_driver/psdk/command.h"
 
 namespace k40t::psdk {
@@ -22,7 +22,7 @@ struct CommandInfo {
   bool acked = false;      // commands: the document gives this command an ACK
   bool encrypted = false;  // the payload sends it AES-encrypted when a key is configured
   // Decodes plain DATA and reports its fields to `sink`; fails with a readable message.
-  Status (*describe)(const uint8_t* data, size_t size, protocol::FieldSink& sink) = nullptr;
+  Status (*describe)(const uint8_t* data, size_t size, codec::FieldSink& sink) = nullptr;
   // Decodes plain DATA and encodes the result again (the golden frames check that the encoder
   // gives back the bytes written by hand).
   Result<Data> (*reencode)(const uint8_t* data, size_t size) = nullptr;
@@ -41,10 +41,10 @@ const CommandInfo* find_command(const std::string& name);
 // ACK request, encryption) and then the command's fields; DATA is decrypted with `cipher` when
 // the frame is encrypted. Fails, naming the problem, for an unknown command or DATA that does not
 // decode (the header fields have been reported by then).
-Status describe_frame(const FrameView& frame, const Aes128Ecb* cipher, protocol::FieldSink& sink);
+Status describe_frame(const FrameView& frame, const Aes128Ecb* cipher, codec::FieldSink& sink);
 
 template <class T>
-Status describe_data(const uint8_t* data, size_t size, protocol::FieldSink& sink) {
+Status describe_data(const uint8_t* data, size_t size, codec::FieldSink& sink) {
   Result<T> decoded = decode_data<T>(data, size);
   if (!decoded) return decoded.status();
   describe(decoded.value(), sink);

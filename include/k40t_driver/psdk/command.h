@@ -38,23 +38,23 @@
 #include <type_traits>
 #include <utility>
 
-#include "k40t_driver/protocol/result.h"
+#include "k40t_driver/codec/result.h"
 #include "k40t_driver/psdk/frame.h"
 #include "k40t_driver/psdk/layout.h"
 
 namespace k40t::psdk {
 
-using protocol::check_enum;
-using protocol::first_failure;
+using codec::check_enum;
+using codec::first_failure;
 
-// protocol::check_range without the int/double overload ambiguity of small unsigned fields.
+// codec::check_range without the int/double overload ambiguity of small unsigned fields.
 inline Status check_int(const char* field, int64_t value, int64_t lo, int64_t hi,
                         const char* unit = "") {
-  return protocol::check_range(field, value, lo, hi, unit);
+  return codec::check_range(field, value, lo, hi, unit);
 }
 inline Status check_real(const char* field, double value, double lo, double hi,
                          const char* unit = "") {
-  return protocol::check_range(field, value, lo, hi, unit);
+  return codec::check_range(field, value, lo, hi, unit);
 }
 
 enum class Sender : uint8_t { kAdapter, kPayload };
@@ -222,7 +222,7 @@ Status validate(const T& message) {
 
 template <class T>
 void describe(const T& message, FieldSink& sink) {
-  if constexpr (is_ack_v<T>) protocol::detail::SinkAdapter{sink}("code", message.code);
+  if constexpr (is_ack_v<T>) codec::detail::SinkAdapter{sink}("code", message.code);
   if constexpr (detail::HasLayout<T>::value)
     T::layout(message, LayoutSink(sink));
   else

@@ -21,7 +21,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "k40t_driver/protocol/result.h"
+#include "k40t_driver/codec/result.h"
 
 namespace k40t::psdk {
 

@@ -5,14 +5,14 @@
 
 #include <string>
 
-#include "k40t_driver/protocol/field_visit.h"
+#include "k40t_driver/codec/field_visit.h"
 
 namespace k40t::psdk {
 
-class IndexedSink : public protocol::FieldSink {
+class IndexedSink : public codec::FieldSink {
  public:
   // `number` is shown as is (callers count from 1 for humans).
-  IndexedSink(protocol::FieldSink& inner, const char* group, size_t number)
+  IndexedSink(codec::FieldSink& inner, const char* group, size_t number)
       : inner_(inner), prefix_(std::string(group) + std::to_string(number) + "_") {}
 
   void integer(const char* name, int64_t value) override {
@@ -35,7 +35,7 @@ class IndexedSink : public protocol::FieldSink {
 
  private:
   std::string full(const char* name) const { return prefix_ + name; }
-  protocol::FieldSink& inner_;
+  codec::FieldSink& inner_;
   std::string prefix_;
 };
 

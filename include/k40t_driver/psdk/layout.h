@@ -8,9 +8,9 @@
 
 namespace k40t::psdk {
 
-using protocol::ByteReader;
-using protocol::ByteWriter;
-using protocol::FieldSink;
+using codec::ByteReader;
+using codec::ByteWriter;
+using codec::FieldSink;
 
 namespace wire = codec::wire;
 using codec::LayoutReader;

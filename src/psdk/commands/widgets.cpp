@@ -14,19 +14,19 @@ const char* to_string(WidgetType type) {
 
 Status WidgetListDataAck::validate() const {
   Status s = first_failure(check_enum("type", type), check_int("index", index, 0, kMaxWidgets - 1),
-                           protocol::check_text("name", name, kWidgetNameSize - 1));
+                           codec::check_text("name", name, kWidgetNameSize - 1));
   if (!s) return s;
   if (type == WidgetType::kChooseList) {
     s = check_int("choose_item_count", choose_item_count, 1, kMaxChooseItems);
     for (size_t i = 0; s && i < choose_item_count; ++i) {
-      s = protocol::check_text("choose_items", choose_items[i], kChooseItemNameSize - 1);
+      s = codec::check_text("choose_items", choose_items[i], kChooseItemNameSize - 1);
     }
     return s;
   }
   if (choose_item_count != 0)
     return Status::fail("field 'choose_item_count' must be 0 unless the widget is a choose list");
   if (type == WidgetType::kIntegerInputBox) {
-    return protocol::check_text("input_box_suffix", input_box_suffix, kInputBoxSuffixSize - 1);
+    return codec::check_text("input_box_suffix", input_box_suffix, kInputBoxSuffixSize - 1);
   }
   if (!input_box_suffix.empty()) {
     return Status::fail(
@@ -65,7 +65,7 @@ Status WidgetListDataAck::decode(ByteReader& r) {
 }
 
 void WidgetListDataAck::describe(FieldSink& sink) const {
-  protocol::detail::SinkAdapter out{sink};
+  codec::detail::SinkAdapter out{sink};
   out("type", type);
   out("index", index);
   out("name", name);

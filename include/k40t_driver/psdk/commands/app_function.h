@@ -28,7 +28,7 @@ struct FloatingWindowMessage : Command<CommandSet::kAppFunction, 0x03, Sender::k
   static constexpr size_t kMaxBodySize = kMaxFloatingWindowData;
   std::string text;  // at most 127 bytes, no NUL
 
-  Status validate() const { return protocol::check_text("text", text, kMaxFloatingWindowData - 1); }
+  Status validate() const { return codec::check_text("text", text, kMaxFloatingWindowData - 1); }
   void encode(ByteWriter& w) const { w.text(text, text.size() + 1); }
   Status decode(ByteReader& r) {
     text = r.text(r.remaining());  // up to the first NUL

@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <string>
 
-#include "k40t_driver/protocol/result.h"
+#include "k40t_driver/codec/result.h"
 #include "k40t_driver/psdk/commands/camera_capture.h"
 #include "k40t_driver/psdk/commands/data_push.h"
 #include "k40t_driver/psdk/commands/declare.h"

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "k40t_driver/protocol/result.h"
+#include "k40t_driver/codec/result.h"
 #include "k40t_driver/psdk/frame.h"
 
 namespace k40t::psdk::sim::table {

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-#include "k40t_driver/protocol/result.h"
+#include "k40t_driver/codec/result.h"
 #include "k40t_driver/psdk/frame.h"
 
 namespace k40t::psdk::sim {
