@@ -21,6 +21,7 @@ ALLOWED = {
     "codec": {"codec"},
     "protocol": {"codec", "protocol"},
     "psdk": {"codec", "transport", "geo", "psdk"},
+    "transport": {"codec", "transport"},
 }
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]')

@@ -4,7 +4,7 @@
 
 #include <memory>
 
-#include "k40t_driver/protocol/result.h"
+#include "k40t_driver/codec/result.h"
 #include "k40t_driver/transport/device_url.h"
 #include "k40t_driver/transport/link_driver.h"
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "k40t_driver/protocol/result.h"
+#include "k40t_driver/codec/result.h"
 #include "k40t_driver/transport/unique_fd.h"
 
 namespace k40t::transport {

@@ -4,7 +4,7 @@
 
 #include <chrono>
 
-#include "k40t_driver/protocol/result.h"
+#include "k40t_driver/codec/result.h"
 #include "k40t_driver/transport/transport.h"
 
 namespace k40t::transport {

@@ -13,7 +13,7 @@
 
 #include <string>
 
-#include "k40t_driver/protocol/result.h"
+#include "k40t_driver/codec/result.h"
 
 namespace k40t::transport {
 

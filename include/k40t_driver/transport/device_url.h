@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "k40t_driver/protocol/result.h"
+#include "k40t_driver/codec/result.h"
 
 namespace k40t::transport {
 

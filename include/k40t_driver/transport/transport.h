@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "k40t_driver/protocol/result.h"
+#include "k40t_driver/codec/result.h"
 
 namespace k40t::transport {
 

@@ -5,7 +5,7 @@
 #include <chrono>
 #include <string>
 
-#include "k40t_driver/protocol/result.h"
+#include "k40t_driver/codec/result.h"
 
 namespace k40t::transport {
 
