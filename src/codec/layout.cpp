@@ -1,5 +1,6 @@
 #include "k40t_driver/codec/layout.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>

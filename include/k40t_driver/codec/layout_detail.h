@@ -6,6 +6,7 @@
 #include <string>
 #include <type_traits>
 
+#include "k40t_driver/codec/result.h"
 #include "k40t_driver/codec/wire.h"
 
 namespace k40t::codec::detail {
