@@ -4,11 +4,14 @@ succeeds with feedback, can be cancelled (the gimbal and the zoom stop; the othe
 while the pod carries on), times out with a readable reason, and refuses bad goals with nothing
 sent on raw/tx. Shutdown during a goal: test_action_shutdown.py."""
 import math
+import os
 import sys
 import time
 import unittest
+from xmlrpc.client import ServerProxy
 
 import actionlib
+import rosnode
 import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
@@ -96,6 +99,38 @@ class Actions(unittest.TestCase):
     def move_home(self):
         state, result = self.run_goal("gimbal/move_to", GimbalMoveToGoal(pitch=0.0, yaw=0.0)).wait(30.0)
         self.assertEqual(state, GoalStatus.SUCCEEDED, result.message)
+
+    # --- every action ----------------------------------------------------------------------
+    def test_idle_goal_threads_sleep(self):
+        """With no goal running, the six goal threads sleep until a goal comes (actionlib's own
+        execute thread woke 10 times a second each): a count of wake-ups, not a timing."""
+        uri = rosnode.get_api_uri(rospy.get_master(), name("driver"), skip_cache=True)
+        _, _, pid = ServerProxy(uri).getPid(rospy.get_name())
+        tasks = "/proc/%d/task" % pid
+
+        def goal_threads():
+            found = []
+            for tid in os.listdir(tasks):
+                with open("%s/%s/comm" % (tasks, tid)) as comm:
+                    if comm.read().strip() == "k40t_goal":
+                        found.append(tid)
+            return found
+
+        def wakeups(tids):
+            total = 0
+            for tid in tids:
+                with open("%s/%s/status" % (tasks, tid)) as status:
+                    total += sum(int(line.split()[1]) for line in status if "ctxt_switches" in line)
+            return total
+
+        tids = goal_threads()
+        self.assertEqual(len(tids), 6, "goal threads: %s" % tids)
+        before = wakeups(tids)
+        time.sleep(2.0)
+        woke = wakeups(tids) - before
+        # Polling would be 6 threads x 10 a second x 2 s = 120; a goal ending from the test before
+        # may still wake its thread once or twice.
+        self.assertLessEqual(woke, 12, "idle goal threads woke %d times in 2 s" % woke)
 
     # --- gimbal/move_to --------------------------------------------------------------------
     def test_move_to_arrives_with_feedback(self):
