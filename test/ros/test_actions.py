@@ -14,14 +14,14 @@ import actionlib
 import rosnode
 import rospy
 import rostest
-from actionlib_msgs.msg import GoalStatus
+from actionlib_msgs.msg import GoalStatus, GoalStatusArray
 
 from k40t_driver.msg import (Frame, FormatSdAction, FormatSdGoal, GimbalCalibrateAction, GimbalCalibrateGoal,
                              GimbalMoveToAction, GimbalMoveToGoal, PreciseReshootAction, PreciseReshootGoal,
                              TfUpgradeAction, TfUpgradeGoal, VisibleStatus, ZoomToAction, ZoomToGoal)
 from k40t_driver.srv import SetZoom
-from k40t_test_support import (BACKGROUND_IDS, Run, frame_id, ids_sent_since, name, service, start_driver_test,
-                               wait_until)
+from k40t_test_support import (BACKGROUND_IDS, Recorder, Run, frame_id, ids_sent_since, name, service,
+                               start_driver_test, wait_until)
 
 PKG = "k40t_driver"
 
@@ -131,6 +131,17 @@ class Actions(unittest.TestCase):
         # Polling would be 6 threads x 10 a second x 2 s = 120; a goal ending from the test before
         # may still wake its thread once or twice.
         self.assertLessEqual(woke, 12, "idle goal threads woke %d times in 2 s" % woke)
+
+    def test_idle_status_once_a_second(self):
+        """k40t.launch's actionlib_status_frequency: an idle server re-publishes its status once a
+        second (actionlib's default is 5 a second); a count of messages, not a timing."""
+        status = Recorder(name("zoom_to/status"), GoalStatusArray)
+        try:
+            self.assertTrue(status.wait_for(1, timeout=5.0), "no zoom_to/status")
+            per_second = status.rate(3.0)
+        finally:
+            status.close()
+        self.assertLessEqual(per_second, 2.0, "zoom_to/status at %.1f a second" % per_second)
 
     # --- gimbal/move_to --------------------------------------------------------------------
     def test_move_to_arrives_with_feedback(self):
