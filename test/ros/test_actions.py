@@ -11,7 +11,7 @@ import unittest
 from xmlrpc.client import ServerProxy
 
 import actionlib
-import rosnode
+import rosgraph
 import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus, GoalStatusArray
@@ -104,7 +104,7 @@ class Actions(unittest.TestCase):
     def test_idle_goal_threads_sleep(self):
         """With no goal running, the six goal threads sleep until a goal comes (actionlib's own
         execute thread woke 10 times a second each): a count of wake-ups, not a timing."""
-        uri = rosnode.get_api_uri(rospy.get_master(), name("driver"), skip_cache=True)
+        uri = rosgraph.Master(rospy.get_name()).lookupNode(name("driver"))
         _, _, pid = ServerProxy(uri).getPid(rospy.get_name())
         tasks = "/proc/%d/task" % pid
 
