@@ -1,6 +1,7 @@
 // How the package's three components (RosPod, SkyportRos, VideoStreamer) are hosted, alike: each
 // has `static Result<std::unique_ptr<C>> create(nh, private_nh)` and runs either in a nodelet
-// manager (ComponentNodelet) or as a standalone node (run_standalone_node()). One that cannot
+// manager (ComponentNodelet) or as a standalone node (run_standalone_node(), in standalone_node.h,
+// which a node can include alone so as not to link the nodelet library). One that cannot
 // start logs a fatal line naming it (`what`, e.g. "K40T driver") and the reason.
 #pragma once
 
