@@ -4,10 +4,12 @@
 #                         all three share (checked parameters, SIGTERM as SIGINT, a start that
 #                         failed on its configuration as a diagnostic); roscpp and
 #                         diagnostic_updater only;
-#   k40t_pod_nodelet      the rest of src/ros/*.cpp: PodNodelet, k40t_node, k40t_manager (parameters,
-#                         topics, services, actions, reconfigure, diagnostics over driver/'s
-#                         PodDriver); no GStreamer or OpenSSL, and of OpenCV only calib3d
-#                         (k40t_camera: locate_pixel's lens distortion);
+#   k40t_pod              the rest of src/ros/*.cpp: RosPod (parameters, topics, services,
+#                         actions, reconfigure, diagnostics over driver/'s PodDriver), which
+#                         k40t_node links without the nodelet library (nodelet's roslib brings
+#                         rospack and libpython: ~3 MB resident); no GStreamer or OpenSSL, and of
+#                         OpenCV only calib3d (k40t_camera: locate_pixel's lens distortion);
+#   k40t_pod_nodelet      src/ros/pod_nodelet.cpp: PodNodelet over k40t_pod;
 #   k40t_video_nodelet    src/ros/video/: VideoNodelet, k40t_video_node (OpenCV, GStreamer,
 #                         image_transport, camera_info_manager; no OpenSSL; cmake/video_ros.cmake);
 #   k40t_skyport_nodelet  src/ros/skyport/: SkyportNodelet, k40t_skyport_node, the ROS glue of the
@@ -21,7 +23,8 @@ set(K40T_ROS_COMMON_SOURCES ${PROJECT_SOURCE_DIR}/src/ros/param_reader.cpp
                             ${PROJECT_SOURCE_DIR}/src/ros/stop_signals.cpp
                             ${PROJECT_SOURCE_DIR}/src/ros/start_failure.cpp)
 file(GLOB K40T_POD_NODELET_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/*.cpp)
-list(REMOVE_ITEM K40T_POD_NODELET_SOURCES ${K40T_ROS_COMMON_SOURCES})
+list(REMOVE_ITEM K40T_POD_NODELET_SOURCES ${K40T_ROS_COMMON_SOURCES}
+     ${PROJECT_SOURCE_DIR}/src/ros/pod_nodelet.cpp)
 file(GLOB K40T_SKYPORT_NODELET_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/skyport/*.cpp)
 
 add_library(k40t_ros_common SHARED ${K40T_ROS_COMMON_SOURCES})
@@ -34,9 +37,10 @@ target_link_libraries(k40t_ros_common PUBLIC ${catkin_LIBRARIES})
 # Generated message/service headers and the dynamic_reconfigure K40tConfig.h, for all that link it.
 add_dependencies(k40t_ros_common ${PROJECT_NAME}_generate_messages_cpp ${PROJECT_NAME}_gencfg)
 
-add_library(k40t_pod_nodelet SHARED ${K40T_POD_NODELET_SOURCES})
-target_link_libraries(k40t_pod_nodelet PUBLIC k40t_ros_common k40t_driver_core k40t_core k40t_geo
-                                              k40t_camera)
+add_library(k40t_pod SHARED ${K40T_POD_NODELET_SOURCES})
+target_link_libraries(k40t_pod PUBLIC k40t_ros_common k40t_driver_core k40t_core k40t_geo k40t_camera)
+add_library(k40t_pod_nodelet SHARED ${PROJECT_SOURCE_DIR}/src/ros/pod_nodelet.cpp)
+target_link_libraries(k40t_pod_nodelet PUBLIC k40t_pod)
 
 add_library(k40t_skyport_nodelet SHARED ${K40T_SKYPORT_NODELET_SOURCES})
 target_link_libraries(k40t_skyport_nodelet PUBLIC k40t_ros_common k40t_skyport_bridge)
@@ -49,7 +53,7 @@ add_library(k40t_early_stop_signals STATIC ${PROJECT_SOURCE_DIR}/src/ros/early/e
 target_include_directories(k40t_early_stop_signals PUBLIC ${PROJECT_SOURCE_DIR}/include)
 
 # One executable per src/ros/nodes/*.cpp, each a thin main() over the library it names.
-set(K40T_NODE_LIBRARY_k40t_node k40t_pod_nodelet)
+set(K40T_NODE_LIBRARY_k40t_node k40t_pod)
 set(K40T_NODE_LIBRARY_k40t_video_node k40t_video_nodelet)
 set(K40T_NODE_LIBRARY_k40t_skyport_node k40t_skyport_nodelet)
 set(K40T_NODE_LIBRARY_k40t_manager k40t_ros_common)
@@ -64,7 +68,7 @@ foreach(source ${K40T_ROS_NODES})
   install(TARGETS ${name} RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 endforeach()
 
-install(TARGETS k40t_ros_common k40t_pod_nodelet k40t_video_nodelet k40t_skyport_nodelet
+install(TARGETS k40t_ros_common k40t_pod k40t_pod_nodelet k40t_video_nodelet k40t_skyport_nodelet
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 install(DIRECTORY include/k40t_driver/ DESTINATION ${CATKIN_PACKAGE_INCLUDE_DESTINATION})

@@ -6,7 +6,9 @@
   - each product library loads only what it uses. What it loads is its ELF DT_NEEDED entries
     (readelf -d), followed through the project's own libraries in the devel space, so a library
     that needs libk40t_pod_nodelet.so also loads what that one needs: the pod driver no GStreamer
-    or OpenSSL, the video nodelet no OpenSSL, the SKYPORT bridge no OpenCV or GStreamer; none Qt.
+    or OpenSSL, the video nodelet no OpenSSL, the SKYPORT bridge no OpenCV or GStreamer; none Qt;
+  - the standalone k40t_node loads no nodelet library (nodelet's roslib brings rospack and
+    libpython: ~3 MB resident for nothing; issue 24, item 6).
     System libraries' own dependencies are not followed: they are not the project's to choose
     (PROJ's libcurl brings libcrypto through libssh2, OpenCV's FFmpeg brings libssl).
 Exits 1 naming each failure; --junit writes one test case. Needs no ROS master; run after a ROS
@@ -29,6 +31,9 @@ FORBIDDEN = {
     "lib/libk40t_video_nodelet": OPENSSL + QT,
     "lib/libk40t_skyport_nodelet": OPENCV + GSTREAMER + QT,
 }
+# Standalone node (path in the devel space) -> prefixes of libraries it must not load.
+NODELET = ("libnodeletlib.", "libclass_loader.", "libroslib.", "librospack.", "libpython")
+NODE_FORBIDDEN = {"lib/k40t_driver/k40t_node": NODELET}
 
 
 def libraries(plugin_file):
@@ -96,16 +101,21 @@ def check_declarations(devel):
     return failures
 
 
+def forbidden_loads(path, lib_dir, prefixes):
+    """Failures for each library the ELF file `path` loads whose name starts with one of prefixes."""
+    if not os.path.exists(path):
+        return ["%s not built" % path]
+    return ["%s loads %s (%s)" % (os.path.basename(path), dep, chain)
+            for dep, chain in sorted(loaded(path, lib_dir).items()) if dep.startswith(prefixes)]
+
+
 def check_links(devel):
     failures = []
     for path, prefixes in sorted(FORBIDDEN.items()):
         so = os.path.join(devel, path + ".so")
-        if not os.path.exists(so):
-            failures.append("%s not built" % so)
-            continue
-        for dep, chain in sorted(loaded(so, os.path.dirname(so)).items()):
-            if dep.startswith(prefixes):
-                failures.append("%s loads %s (%s)" % (os.path.basename(path), dep, chain))
+        failures += forbidden_loads(so, os.path.dirname(so), prefixes)
+    for path, prefixes in sorted(NODE_FORBIDDEN.items()):
+        failures += forbidden_loads(os.path.join(devel, path), os.path.join(devel, "lib"), prefixes)
     return failures
 
 

@@ -4,21 +4,24 @@ succeeds with feedback, can be cancelled (the gimbal and the zoom stop; the othe
 while the pod carries on), times out with a readable reason, and refuses bad goals with nothing
 sent on raw/tx. Shutdown during a goal: test_action_shutdown.py."""
 import math
+import os
 import sys
 import time
 import unittest
+from xmlrpc.client import ServerProxy
 
 import actionlib
+import rosgraph
 import rospy
 import rostest
-from actionlib_msgs.msg import GoalStatus
+from actionlib_msgs.msg import GoalStatus, GoalStatusArray
 
 from k40t_driver.msg import (Frame, FormatSdAction, FormatSdGoal, GimbalCalibrateAction, GimbalCalibrateGoal,
                              GimbalMoveToAction, GimbalMoveToGoal, PreciseReshootAction, PreciseReshootGoal,
                              TfUpgradeAction, TfUpgradeGoal, VisibleStatus, ZoomToAction, ZoomToGoal)
 from k40t_driver.srv import SetZoom
-from k40t_test_support import (BACKGROUND_IDS, Run, frame_id, ids_sent_since, name, service, start_driver_test,
-                               wait_until)
+from k40t_test_support import (BACKGROUND_IDS, Recorder, Run, frame_id, ids_sent_since, name, service,
+                               start_driver_test, wait_until)
 
 PKG = "k40t_driver"
 
@@ -96,6 +99,49 @@ class Actions(unittest.TestCase):
     def move_home(self):
         state, result = self.run_goal("gimbal/move_to", GimbalMoveToGoal(pitch=0.0, yaw=0.0)).wait(30.0)
         self.assertEqual(state, GoalStatus.SUCCEEDED, result.message)
+
+    # --- every action ----------------------------------------------------------------------
+    def test_idle_goal_threads_sleep(self):
+        """With no goal running, the six goal threads sleep until a goal comes (actionlib's own
+        execute thread woke 10 times a second each): a count of wake-ups, not a timing."""
+        uri = rosgraph.Master(rospy.get_name()).lookupNode(name("driver"))
+        _, _, pid = ServerProxy(uri).getPid(rospy.get_name())
+        tasks = "/proc/%d/task" % pid
+
+        def goal_threads():
+            found = []
+            for tid in os.listdir(tasks):
+                with open("%s/%s/comm" % (tasks, tid)) as comm:
+                    if comm.read().strip() == "k40t_goal":
+                        found.append(tid)
+            return found
+
+        def wakeups(tids):
+            total = 0
+            for tid in tids:
+                with open("%s/%s/status" % (tasks, tid)) as status:
+                    total += sum(int(line.split()[1]) for line in status if "ctxt_switches" in line)
+            return total
+
+        tids = goal_threads()
+        self.assertEqual(len(tids), 6, "goal threads: %s" % tids)
+        before = wakeups(tids)
+        time.sleep(2.0)
+        woke = wakeups(tids) - before
+        # Polling would be 6 threads x 10 a second x 2 s = 120; a goal ending from the test before
+        # may still wake its thread once or twice.
+        self.assertLessEqual(woke, 12, "idle goal threads woke %d times in 2 s" % woke)
+
+    def test_idle_status_once_a_second(self):
+        """k40t.launch's actionlib_status_frequency: an idle server re-publishes its status once a
+        second (actionlib's default is 5 a second); a count of messages, not a timing."""
+        status = Recorder(name("zoom_to/status"), GoalStatusArray)
+        try:
+            self.assertTrue(status.wait_for(1, timeout=5.0), "no zoom_to/status")
+            per_second = status.rate(3.0)
+        finally:
+            status.close()
+        self.assertLessEqual(per_second, 2.0, "zoom_to/status at %.1f a second" % per_second)
 
     # --- gimbal/move_to --------------------------------------------------------------------
     def test_move_to_arrives_with_feedback(self):

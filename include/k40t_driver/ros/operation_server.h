@@ -8,17 +8,22 @@
 // Feedback's `status`, where it has one, is the tracker's latest status text; the binding fills
 // the rest.
 //
-// Threads: a SimpleActionServer with an execute callback runs each goal on its own thread. The
-// server is built with autostart=false and started by start(); shutdown() ends a running goal
-// within ~0.1 s and joins that thread, so it must run before the PodDriver is stopped.
+// Threads: each server runs its goals on one thread of its own. It is not SimpleActionServer's
+// execute thread, which wakes 10 times a second while idle (60 wake-ups a second for the driver's
+// six actions, a tenth of its CPU at full telemetry): the server is used in its callback mode,
+// whose goal and preempt callbacks wake this thread, which sleeps without a timeout while idle.
+// The server is built with autostart=false and started by start(); shutdown() ends a running goal
+// at once and joins the thread, so it must run before the PodDriver is stopped.
 #pragma once
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
+#include <thread>
 #include <type_traits>
 #include <utility>
 
@@ -54,17 +59,31 @@ class OperationServer {
   };
 
   OperationServer(ros::NodeHandle nh, const std::string& name, Binding binding)
-      : binding_(std::move(binding)),
-        server_(
-            nh, name, [this](const typename Goal::ConstPtr& goal) { execute(*goal); }, false) {}
+      : binding_(std::move(binding)), server_(nh, name, false) {
+    // Both run under the server's lock: they only set a flag and wake the goal thread.
+    server_.registerGoalCallback([this] {
+      {
+        std::lock_guard<std::mutex> lock(goal_mutex_);
+        goal_pending_ = true;
+      }
+      goal_wakeup_.notify_one();
+    });
+    server_.registerPreemptCallback([this] { wake_active(); });
+    goal_thread_ = std::thread([this] { serve_goals(); });
+  }
   ~OperationServer() { shutdown(); }
 
   void start() { server_.start(); }
-  // Idempotent: SimpleActionServer::shutdown() asserts that its thread still exists.
+  // Idempotent; ends the running goal (cancelled: the driver is shutting down) and joins the
+  // thread.
   void shutdown() {
     if (stopping_.exchange(true)) return;
-    if (auto op = active()) op->update([](Op&) { return 0; });  // wake the goal thread
-    server_.shutdown();                                         // joins the goal thread
+    {
+      std::lock_guard<std::mutex> lock(goal_mutex_);  // no lost wake-up between check and wait
+    }
+    goal_wakeup_.notify_one();
+    wake_active();
+    if (goal_thread_.joinable()) goal_thread_.join();
   }
 
   // Runs f(op) on the running goal's operation, if any (status frames, on the I/O thread).
@@ -87,6 +106,26 @@ class OperationServer {
   static constexpr bool kFeedbackHasStatus = HasStatus<FeedbackMsg>::value;
 
   using Shared = operations::SharedOperation<Op>;
+
+  // The goal thread: sleeps until a goal arrives or shutdown(), then runs the newest goal.
+  void serve_goals() {
+    for (;;) {
+      {
+        std::unique_lock<std::mutex> lock(goal_mutex_);
+        goal_wakeup_.wait(lock, [this] { return goal_pending_ || stopping_; });
+        if (stopping_) return;
+        goal_pending_ = false;
+      }
+      // Only this thread accepts goals, so an available goal stays available until accepted.
+      if (!server_.isNewGoalAvailable()) continue;
+      const auto goal = server_.acceptNewGoal();
+      if (goal) execute(*goal);
+    }
+  }
+
+  void wake_active() {
+    if (auto op = active()) op->update([](Op&) { return 0; });
+  }
 
   std::shared_ptr<Shared> active() const {
     std::lock_guard<std::mutex> lock(active_mutex_);
@@ -182,10 +221,15 @@ class OperationServer {
   }
 
   Binding binding_;
-  actionlib::SimpleActionServer<Action> server_;
+  // Declared before server_: its callbacks use them until the server is destroyed.
   std::atomic<bool> stopping_{false};
+  std::mutex goal_mutex_;
+  std::condition_variable goal_wakeup_;
+  bool goal_pending_ = false;
   mutable std::mutex active_mutex_;
   std::shared_ptr<Shared> active_;
+  actionlib::SimpleActionServer<Action> server_;
+  std::thread goal_thread_;
 };
 
 }  // namespace k40t::driver

@@ -1,6 +1,6 @@
-// k40t_node: the driver as a standalone node (the same RosPod as the nodelet).
-#include "k40t_driver/ros/component_host.h"
+// k40t_node: the driver as a standalone node (the same RosPod as the nodelet, without nodelet).
 #include "k40t_driver/ros/ros_pod.h"
+#include "k40t_driver/ros/standalone_node.h"
 
 int main(int argc, char** argv) {
   // Services block while they wait for an ACK; the other callbacks keep running meanwhile.
