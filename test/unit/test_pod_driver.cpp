@@ -159,7 +159,9 @@ TEST(PodDriver, RateCommandsResendTheirSpeedWhenAnotherChangedIt) {
   pod.set_auto_ack(false);  // the pod refuses (here: never answers) the next speed
   driver->command_rate(20.0, 0.0);
   pod.wait_for(FakePod::count_of(protocol::GimbalDialSpeedRequest::kId, 7), milliseconds(2000));
-  std::this_thread::sleep_for(milliseconds(200));  // the request's last timeout
+  // The request's last timeout (3 sends, 100 ms each) and its failure handled: generous, as a
+  // busy machine delays the session's timer; a driver that never forgets fails at any wait.
+  std::this_thread::sleep_for(milliseconds(600));
   pod.set_auto_ack(true);
   const size_t before = dial_speeds(pod).size();
   driver->command_rate(20.0, 0.0);
