@@ -201,7 +201,8 @@ class Link(unittest.TestCase):
     def test_f_ctrl_c_is_no_loss(self):
         link = os.path.join(self.tmp, "ctrl_c_pod")
         launch = self.spawn("ctrl_c", ["roslaunch", "--wait", PKG, "sim.launch", "ns:=k40t_ctrl_c",
-                                       "sim_link:=" + link, "respawn:=false"])
+                                       "sim_link:=" + link, "respawn:=false",
+                                       "aggregate:=false"])  # link.test's sim.launch runs it
         self.assertTrue(launch.wait_output(r"K40T connected to the pod at serial://", 20.0),
                         launch.output())
         launch.interrupt_group()

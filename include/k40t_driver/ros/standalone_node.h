@@ -20,10 +20,12 @@ enum class Callbacks {
 
 // The whole main() of a standalone node named `node_name`.
 // Threads are named for `top -H` (transport/thread_name.h): roscpp's own (poll, XML-RPC, rosout,
-// timers) inherit "k40t_roscpp", the spinner's "k40t_spin"; the main thread is "k40t_main".
+// timers) inherit "k40t_roscpp", the spinner's "k40t_spin"; the main thread keeps the program's
+// name (the process name ps and pkill match).
 template <class Component>
 int run_standalone_node(int argc, char** argv, const char* node_name, const char* what,
                         Callbacks callbacks) {
+  const transport::SavedThreadName program_name;
   transport::name_this_thread("k40t_roscpp");
   // Our own SIGINT handler instead of roscpp's: the same shutdown request, remembered for
   // shutdown_requested().
@@ -42,14 +44,14 @@ int run_standalone_node(int argc, char** argv, const char* node_name, const char
   }
   const int exit_code = failure ? 1 : 0;
   if (callbacks == Callbacks::kOneAtATime) {
-    transport::name_this_thread("k40t_main");
+    program_name.restore();
     ros::spin();
     return exit_code;
   }
   ros::AsyncSpinner spinner(4);
   transport::name_this_thread("k40t_spin");
   spinner.start();
-  transport::name_this_thread("k40t_main");
+  program_name.restore();
   ros::waitForShutdown();
   return exit_code;
 }

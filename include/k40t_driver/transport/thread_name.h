@@ -17,6 +17,18 @@ void name_this_thread(const char (&name)[N]) {
   pthread_setname_np(pthread_self(), name);
 }
 
+// The calling thread's name now, to give back later: main() saves the program's name before naming
+// the threads it creates and takes it back, since the main thread's name is the process name
+// that ps, pkill and the device lock's "in use by pid N (NAME)" show.
+class SavedThreadName {
+ public:
+  SavedThreadName() { pthread_getname_np(pthread_self(), name_, sizeof name_); }
+  void restore() const { pthread_setname_np(pthread_self(), name_); }
+
+ private:
+  char name_[16] = {};
+};
+
 // Names the calling thread for its lifetime and gives it its previous name back.
 class ThreadNameScope {
  public:

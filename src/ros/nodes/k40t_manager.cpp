@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
   // Threads named for `top -H`: roscpp's inherit "k40t_roscpp", the loader's workers (the
   // nodelets' multi-threaded queue) "k40t_nodelet", the spinner's (services, default queue)
   // "k40t_spin".
+  const k40t::transport::SavedThreadName program_name;  // the process name: ps, pkill
   name_this_thread("k40t_roscpp");
   ros::init(argc, argv, "manager", ros::init_options::NoSigintHandler);
   install_stop_handlers();
@@ -56,7 +57,7 @@ int main(int argc, char** argv) {
   ros::AsyncSpinner spinner(1);
   name_this_thread("k40t_spin");
   spinner.start();
-  name_this_thread("k40t_main");
+  program_name.restore();
 
   while (!g_stop_requested && ros::ok()) std::this_thread::sleep_for(std::chrono::milliseconds(50));
 
