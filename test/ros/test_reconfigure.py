@@ -104,6 +104,22 @@ class Reconfigure(unittest.TestCase):
         time.sleep(0.3)  # the new configuration reaches the client
         return self.client.get_configuration(timeout=5.0)
 
+    def configuration_showing(self, expected, timeout=3.0):
+        """The client's configuration once it shows `expected` ({parameter: value}), or the last
+        one seen after `timeout`. The client keeps the last configuration the server published on
+        its update topic; a service's answer (set_palette, read_settings) travels on another
+        connection and can arrive before the update the write published under the same lock, so
+        one read right after the answer may show the configuration before it (a lag, no undo: a
+        write that was undone never shows and the caller's assertion fails)."""
+        config = {}
+
+        def shows():
+            config.update(self.client.get_configuration(timeout=5.0))
+            return all(config[key] == value for key, value in expected.items())
+
+        wait_until(shows, timeout)
+        return config
+
     def refusal_reported(self, text):
         """Diagnostics (published every 0.25 s) name the refused parameter."""
         return wait_until(lambda: (self.diagnostics.value("settings", "last refusal") or "").startswith(text), 3.0)
@@ -221,7 +237,7 @@ class Reconfigure(unittest.TestCase):
             thread.join()
         self.assertGreaterEqual(len(palettes), 30, "the service loop did not overlap the requests")
         expected = (palettes[-1], value)
-        config = self.client.get_configuration(timeout=5.0)
+        config = self.configuration_showing({"palette": palettes[-1], "thermal_sharpness": value})
         self.assertEqual((config["palette"], config["thermal_sharpness"]), expected)
         pod = self.read_from_pod()
         self.assertEqual((pod["palette"], pod["thermal_sharpness"]), expected)
@@ -239,8 +255,9 @@ class Reconfigure(unittest.TestCase):
                                    == "palette: palette 42 is outside 1..20", 3.0))
         response = service("set_palette", SetPalette)(palette=6)
         self.assertTrue(response.success, response.message)
-        config = self.client.get_configuration(timeout=5.0)
+        config = self.configuration_showing({"palette": 6, "last_refusal": ""})
         self.assertEqual((config["palette"], config["last_refusal"]), (6, ""))
+
     def test_measurement_off_expects_no_thermal_report(self):
         # Section 3.2.2.4: with temperature measurement off the pod sends no 0x000004. That is no
         # missing report (it used to go ERROR "No events recorded") and no alarm (the last flags
