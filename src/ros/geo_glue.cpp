@@ -46,7 +46,8 @@ sensor_msgs::NavSatFix to_nav_sat_fix(const geo::Located& located, const ros::Ti
 
 k40t_driver::LaserTarget to_laser_target(const protocol::TargetGpsAck& target,
                                          const ros::Time& stamp, const std::string& frame_id,
-                                         const VehicleState& vehicle) {
+                                         const VehicleState& vehicle,
+                                         protocol::LaserTargetZeros zeros) {
   k40t_driver::LaserTarget report;
   report.header.stamp = stamp;
   report.header.frame_id = frame_id;
@@ -57,10 +58,17 @@ k40t_driver::LaserTarget to_laser_target(const protocol::TargetGpsAck& target,
   report.longitude = target.longitude_deg;
   report.relative_height = target.relative_height_m;
   report.altitude_msl = target.altitude_m;
+  report.position_covariance.fill(-1.0);
+  // A no-return's zeros are no place: 0 deg, 0 deg would get the geoid's 17 m there and, from a
+  // vehicle thousands of km away, a covariance of 1e9 m^2 (which replay, without the vehicle,
+  // could not regenerate).
+  if (protocol::laser_target_no_return(target, zeros)) {
+    report.altitude = std::nan("");
+    return report;
+  }
   const Result<double> h = geo::Geoid::egm96().ellipsoid_from_msl(
       target.latitude_deg, target.longitude_deg, target.altitude_m);
   report.altitude = h ? h.value() : std::nan("");
-  report.position_covariance.fill(-1.0);
   if (target.code != protocol::ResponseCode::kOk || !h) return report;
   const std::optional<geo::Covariance3> covariance =
       laser_target_covariance({target.latitude_deg, target.longitude_deg, h.value()}, vehicle);

@@ -116,12 +116,13 @@ void advertise_decoded_topics(Sink& sink, PodDriver& driver, const RosPodConfig&
   auto report = sink.template advertise<k40t_driver::LaserTarget>("laser/target_report", 10, false);
   driver.on<p::TargetGpsAck>([target, report, ids, &driver](const p::TargetGpsAck& m, StampNs s) {
     const ros::Time t = to_ros_time(s);
-    const k40t_driver::LaserTarget full =
-        to_laser_target(m, t, ids.laser, driver.vehicle_state_at(s));
-    sensor_msgs::NavSatFix fix = to_nav_sat_fix(m, t, ids, full.position_covariance);
     // An OK answer at 0 deg, 0 deg is "no return" unless the pod says otherwise
     // (laser_target_zeros, docs/protocol/decisions.md#conventions).
-    if (p::laser_target_no_return(m, driver.codec().conventions.laser_target_zeros))
+    const p::LaserTargetZeros zeros = driver.codec().conventions.laser_target_zeros;
+    const k40t_driver::LaserTarget full =
+        to_laser_target(m, t, ids.laser, driver.vehicle_state_at(s), zeros);
+    sensor_msgs::NavSatFix fix = to_nav_sat_fix(m, t, ids, full.position_covariance);
+    if (p::laser_target_no_return(m, zeros))
       fix.status.status = sensor_msgs::NavSatStatus::STATUS_NO_FIX;
     target(fix);
     report(full);

@@ -10,6 +10,7 @@
 
 #include <tf2_ros/buffer.h>
 #include "k40t_driver/LaserTarget.h"
+#include "k40t_driver/protocol/convention_readings.h"
 #include "k40t_driver/protocol/messages/flight_controller.h"
 
 #include "k40t_driver/driver/vehicle_geo.h"
@@ -30,10 +31,13 @@ sensor_msgs::NavSatFix to_nav_sat_fix(const geo::Located& located, const ros::Ti
 // Every field of the pod's laser-target answer (ACK 0x010320), with an approximated covariance
 // when the vehicle state at its stamp has a fix: the fix's variances plus, in every direction,
 // (slant range x the default attitude sigma)^2 and the default range sigma^2 (docs/geo.md);
-// without a fix (replay, `k40t bag`) the covariance is unknown (all -1).
+// without a fix (replay, `k40t bag`) the covariance is unknown (all -1). An OK answer that is
+// "no return" under `zeros` (laser_target_zeros) is no position: its fields as sent, the
+// ellipsoid altitude NaN and the covariance all -1, whatever the vehicle state.
 k40t_driver::LaserTarget to_laser_target(const protocol::TargetGpsAck& target,
                                          const ros::Time& stamp, const std::string& frame_id,
-                                         const VehicleState& vehicle);
+                                         const VehicleState& vehicle,
+                                         protocol::LaserTargetZeros zeros);
 
 // ~attitude_sigma (deg), ~pointing_sigma (deg), ~range_sigma (m).
 geo::RayUncertainty read_uncertainty(const ros::NodeHandle& private_nh);

@@ -98,7 +98,8 @@ TEST(LaserTarget, NavSatFixCarriesTheReportsCovariance) {
   vehicle.latitude_deg = 22.5;
   vehicle.longitude_deg = 113.9;
   vehicle.altitude_m = 400.0;  // far above the target: a slant of a few hundred metres
-  const k40t_driver::LaserTarget report = to_laser_target(ack, ros::Time(3), "laser", vehicle);
+  const k40t_driver::LaserTarget report =
+      to_laser_target(ack, ros::Time(3), "laser", vehicle, protocol::LaserTargetZeros::kNoReturn);
   ASSERT_GT(report.position_covariance[0], vehicle.position_covariance[0]);
   const sensor_msgs::NavSatFix fix =
       to_nav_sat_fix(ack, ros::Time(3), FrameIds(), report.position_covariance);
@@ -107,13 +108,42 @@ TEST(LaserTarget, NavSatFixCarriesTheReportsCovariance) {
     EXPECT_EQ(fix.position_covariance[i], report.position_covariance[i]);
   EXPECT_EQ(fix.status.status, sensor_msgs::NavSatStatus::STATUS_FIX);
 
-  const k40t_driver::LaserTarget blind =
-      to_laser_target(ack, ros::Time(3), "laser", VehicleState());
+  const k40t_driver::LaserTarget blind = to_laser_target(ack, ros::Time(3), "laser", VehicleState(),
+                                                         protocol::LaserTargetZeros::kNoReturn);
   ASSERT_EQ(blind.position_covariance[0], -1.0);
   const sensor_msgs::NavSatFix unknown =
       to_nav_sat_fix(ack, ros::Time(3), FrameIds(), blind.position_covariance);
   EXPECT_EQ(unknown.position_covariance_type, sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN);
   for (double c : unknown.position_covariance) EXPECT_EQ(c, 0.0);
+}
+
+// An OK answer at 0 deg, 0 deg is "no return" under laser_target_zeros: no_return (the default):
+// no position, so no ellipsoid altitude (not the geoid's 17 m at 0 deg, 0 deg) and no covariance
+// (not one from a vehicle thousands of km away), however good the vehicle's fix; laser/target
+// says no fix with an unknown covariance. Under "position" the same zeros are a place.
+TEST(LaserTarget, NoReturnZerosAreNoPosition) {
+  const protocol::TargetGpsAck zeros;  // code OK, every field 0
+  VehicleState vehicle;
+  vehicle.has_fix = true;
+  vehicle.latitude_deg = 47.3977;
+  vehicle.longitude_deg = 8.5456;
+  vehicle.altitude_m = 500.0;
+  const k40t_driver::LaserTarget report =
+      to_laser_target(zeros, ros::Time(3), "laser", vehicle, protocol::LaserTargetZeros::kNoReturn);
+  EXPECT_EQ(report.code, 0);
+  EXPECT_EQ(report.latitude, 0.0);
+  EXPECT_EQ(report.longitude, 0.0);
+  EXPECT_EQ(report.altitude_msl, 0.0);
+  EXPECT_TRUE(std::isnan(report.altitude));
+  for (double c : report.position_covariance) EXPECT_EQ(c, -1.0);
+  const sensor_msgs::NavSatFix fix =
+      to_nav_sat_fix(zeros, ros::Time(3), FrameIds(), report.position_covariance);
+  EXPECT_EQ(fix.position_covariance_type, sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN);
+
+  const k40t_driver::LaserTarget place =
+      to_laser_target(zeros, ros::Time(3), "laser", vehicle, protocol::LaserTargetZeros::kPosition);
+  EXPECT_NEAR(place.altitude, 17.16, 0.1);  // EGM96's undulation at 0 deg, 0 deg
+  EXPECT_GT(place.position_covariance[0], 0.0);
 }
 
 TEST(ThermalStats, DegreesCoordinatesAndAlarms) {
