@@ -14,6 +14,11 @@ void Dispatcher::on_frame(FrameHandler handler) {
   frame_handlers_.push_back(std::move(handler));
 }
 
+void Dispatcher::on_frame_routed(FrameHandler handler) {
+  std::lock_guard<std::mutex> lock(feed_mutex_);
+  routed_handlers_.push_back(std::move(handler));
+}
+
 void Dispatcher::on_decode_error(DecodeErrorHandler handler) {
   std::lock_guard<std::mutex> lock(feed_mutex_);
   decode_error_handlers_.push_back(std::move(handler));
@@ -36,6 +41,11 @@ void Dispatcher::feed(const uint8_t* data, size_t size) {
 
 void Dispatcher::route(const protocol::FrameView& frame) {
   for (const FrameHandler& handler : frame_handlers_) handler(frame);
+  route_typed(frame);
+  for (const FrameHandler& handler : routed_handlers_) handler(frame);
+}
+
+void Dispatcher::route_typed(const protocol::FrameView& frame) {
   const auto found = routes_.find(frame.header.message_id);
   if (found == routes_.end()) return;
   for (const Route& typed : found->second) {

@@ -40,7 +40,9 @@ struct Session::Impl {
               return sender.send(id, payload.data(), payload.size, request_source(id), to);
             },
             options.ack_timeout, options.retries, options.codec) {
-    dispatcher.on_frame([this](const protocol::FrameView& frame) { handle_frame(frame); });
+    // After every observer of the frame: the caller of a request wakes to a driver that has
+    // seen its ACK.
+    dispatcher.on_frame_routed([this](const protocol::FrameView& frame) { handle_frame(frame); });
   }
 
   void handle_frame(const protocol::FrameView& frame);

@@ -2,6 +2,7 @@
 // errors, requests from the other side (0x000310), sequence numbers, raw/tx.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <thread>
 #include <vector>
 
@@ -17,6 +18,7 @@ using protocol::FrameView;
 using protocol::Payload;
 
 constexpr protocol::MessageId kGpsRequest = 0x000310;
+constexpr protocol::MessageId kGimbalVersion = 0x000018;  // any request the pod ACKs
 
 TEST(SessionRouting, PeriodicReportReachesItsTypedHandler) {
   SessionLink link;
@@ -71,6 +73,27 @@ TEST(SessionRouting, UndecodablePayloadGoesToTheDecodeErrorHandler) {
   EXPECT_EQ(attitudes.size(), 0u);
   EXPECT_EQ(link.host->stats().decode_errors, 1u);
   EXPECT_EQ(link.host->stats().parser.frames_good, 1u);
+}
+
+// An observer of the ACK (the driver's box-tracking and capture-mode guards) must have seen it
+// before the requester wakes, or the caller's next request reads a state the pod left already.
+// The observer is slow on purpose (registered after the session's own handler, as the driver's
+// are): were the request completed first, it would return while the observer still sleeps.
+TEST(SessionRouting, ObserversOfAnAckSeeItBeforeItsRequestReturns) {
+  SessionLink link;
+  std::atomic<bool> observed{false};
+  link.host->dispatcher().on_frame([&](const FrameView& f) {
+    if (f.header.message_id != protocol::ack_id_of(kGimbalVersion)) return;
+    std::this_thread::sleep_for(100ms);
+    observed = true;
+  });
+  link.pod->set_request_handler(
+      kGimbalVersion, [&](const FrameView&) { return std::optional<Payload>(ack_payload(0, {})); });
+  link.start();
+  const uint8_t request[] = {0x00};
+  const session::AckResult r = link.host->request_raw(kGimbalVersion, request, sizeof(request));
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_TRUE(observed.load()) << "the request returned before an observer saw its ACK";
 }
 
 TEST(SessionRouting, PodGpsRequestIsAnsweredAsTheFlightController) {

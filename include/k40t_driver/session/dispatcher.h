@@ -41,8 +41,12 @@ class Dispatcher {
   // goes to the decode-error handler instead (and is counted). Several handlers may share an id.
   template <class Msg>
   void on(std::function<void(const Msg&, const protocol::FrameView&)> handler);
-  // Every good frame, before typed routing (raw/rx topics, monitors, ACK matching).
+  // Every good frame, before typed routing (raw/rx topics, monitors).
   void on_frame(FrameHandler handler);
+  // Every good frame, after the frame handlers and the typed routes. The session completes its
+  // requests here: whoever waits on a request then finds every observer (box tracking, capture
+  // mode, conventions, published state) already updated by the ACK that ends it.
+  void on_frame_routed(FrameHandler handler);
   void on_decode_error(DecodeErrorHandler handler);
 
   // Bytes as they arrive from a link, in any chunking.
@@ -67,12 +71,14 @@ class Dispatcher {
 
   void add_route(protocol::MessageId id, Route route);
   void route(const protocol::FrameView& frame);
+  void route_typed(const protocol::FrameView& frame);
   void publish_stats();
 
   const protocol::CodecOptions codec_;
   std::mutex feed_mutex_;  // one feeder at a time; the parser is not re-entrant
   protocol::FrameParser parser_;
   std::vector<FrameHandler> frame_handlers_;
+  std::vector<FrameHandler> routed_handlers_;
   std::vector<DecodeErrorHandler> decode_error_handlers_;
   std::unordered_map<protocol::MessageId, std::vector<Route>> routes_;
 
