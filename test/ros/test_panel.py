@@ -169,7 +169,8 @@ class PanelTest(unittest.TestCase):
         self.assertTrue(wait_until(lambda: "camera_mode: ok" in self.panel.text("message"), WAIT),
                         self.panel.text("message"))
         self.panel.do("click record_start")
-        self.assertTrue(wait_until(lambda: "recording yes" in self.pod.status(), WAIT))
+        self.assertTrue(wait_until(lambda: "recording yes" in self.pod.status(), WAIT),
+                        "panel: %r; pod: %r" % (self.panel.text("message"), self.pod.status()))
         self.assertTrue(wait_until(lambda: re.search(r"0:0[1-9]", self.panel.text("status_record")), WAIT),
                         "no recording time: " + self.panel.text("status_record"))
         self.panel.do("click record_stop")
