@@ -34,7 +34,20 @@ class RvizPanel:
         self.log = open(os.path.join(self.dir, "rviz.log"), "w")
         self.rviz = subprocess.Popen(["rviz", "-d", config, "__name:=panel_test_rviz"], env=env,
                                      stdout=self.log, stderr=subprocess.STDOUT)
-        self.text("message", timeout=startup_timeout)  # the panel is up and its hook answers
+        self._wait_until_shown(startup_timeout)
+
+    def _wait_until_shown(self, timeout):
+        """The hook answers as soon as the panel exists, which on a loaded machine can be before
+        rviz has shown its window ("... is not visible"): ask again until the panel is shown."""
+        deadline = time.time() + timeout
+        while True:
+            try:
+                self.text("message", timeout=max(1.0, deadline - time.time()))
+                return
+            except PanelError as error:
+                if "not visible" not in str(error) or time.time() >= deadline:
+                    raise
+                time.sleep(0.2)
 
     @staticmethod
     def _start_xvfb():
