@@ -35,7 +35,8 @@ void LookAtController::update_rate(double now_s, const geo::GimbalAim& desired) 
 }
 
 LookAtStep LookAtController::step(double now_s, const geo::Vector3& target,
-                                  const std::optional<geo::GimbalAim>& joints, double joints_s) {
+                                  const std::optional<geo::GimbalAim>& joints, double joints_s,
+                                  double target_age_s) {
   LookAtStep out;
   const Result<geo::GimbalAim> aim = geo::aim_along(target);
   if (!aim) {
@@ -46,22 +47,24 @@ LookAtStep LookAtController::step(double now_s, const geo::Vector3& target,
   out.reach = geo::check_reach(out.desired, config_.limits);
   out.error_deg = joints ? geo::pointing_error_deg(*joints, target) : std::nan("");
   if (!out.reach) return out;
-  update_rate(now_s, out.desired);
+  const double age = std::clamp(target_age_s, 0.0, kMaxRateGapS);
+  update_rate(now_s - age, out.desired);
+  const double lead = config_.lead_s + age;
 
   const geo::GimbalLimits& limits = config_.limits;
   geo::GimbalAim predicted;
-  predicted.yaw_deg = out.desired.yaw_deg + rate_.yaw_deg * config_.lead_s;
+  predicted.yaw_deg = out.desired.yaw_deg + rate_.yaw_deg * lead;
   predicted.yaw_deg = limits.yaw_continuous
                           ? geo::wrap_deg(predicted.yaw_deg)
                           : std::clamp(predicted.yaw_deg, limits.yaw_min_deg, limits.yaw_max_deg);
-  predicted.pitch_deg = std::clamp(out.desired.pitch_deg + rate_.pitch_deg * config_.lead_s,
+  predicted.pitch_deg = std::clamp(out.desired.pitch_deg + rate_.pitch_deg * lead,
                                    limits.pitch_min_deg, limits.pitch_max_deg);
   if (config_.drive == LookAtDrive::kAngle) {
     out.angle = angle_command(predicted);
   } else if (joints) {  // no report yet: nothing to close the loop on, nothing commanded
-    const double age = std::clamp(now_s - joints_s, 0.0, kMaxRateGapS);
-    geo::GimbalAim now{joints->yaw_deg + commanded_rate_.yaw_deg * age,
-                       joints->pitch_deg + commanded_rate_.pitch_deg * age};
+    const double joints_age = std::clamp(now_s - joints_s, 0.0, kMaxRateGapS);
+    geo::GimbalAim now{joints->yaw_deg + commanded_rate_.yaw_deg * joints_age,
+                       joints->pitch_deg + commanded_rate_.pitch_deg * joints_age};
     if (limits.yaw_continuous) now.yaw_deg = geo::wrap_deg(now.yaw_deg);
     out.rate = rate_command(predicted, now);
   }

@@ -60,6 +60,16 @@ Vector3 boresight(const GimbalAim& aim) {
   return {std::cos(p) * std::cos(y), -std::cos(p) * std::sin(y), std::sin(p)};
 }
 
+Vector3 in_optical_frame(const GimbalAim& aim, const Vector3& t) {
+  const double y = aim.yaw_deg * kDegToRad;
+  const Vector3 f = boresight(aim);
+  const Vector3 r{-std::sin(y), -std::cos(y), 0};  // right: base -y turned by the yaw
+  const Vector3 d{f[1] * r[2] - f[2] * r[1], f[2] * r[0] - f[0] * r[2],
+                  f[0] * r[1] - f[1] * r[0]};  // down = forward x right
+  const auto dot = [&t](const Vector3& a) { return a[0] * t[0] + a[1] * t[1] + a[2] * t[2]; };
+  return {dot(r), dot(d), dot(f)};
+}
+
 Status check_reach(const GimbalAim& aim, const GimbalLimits& limits) {
   if (aim.pitch_deg > limits.pitch_max_deg)
     return Status::fail("the target is " + degrees(aim.pitch_deg) +

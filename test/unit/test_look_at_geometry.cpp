@@ -47,6 +47,22 @@ TEST(LookAtGeometry, BoresightIsTheInverseOfAim) {
   EXPECT_NEAR(aim_along(b)->pitch_deg, -20, 1e-9);
 }
 
+TEST(LookAtGeometry, OpticalFrameOfTheBoresight) {
+  // Looking ahead: a point 100 m ahead, 10 m left and 5 m up is x -10 (left), y -5 (up), z 100.
+  Vector3 o = in_optical_frame({0, 0}, {100, 10, 5});
+  EXPECT_NEAR(o[0], -10, 1e-9);
+  EXPECT_NEAR(o[1], -5, 1e-9);
+  EXPECT_NEAR(o[2], 100, 1e-9);
+  // Looking 90 deg right (base -y) and 45 deg down: the point (0, -10, -10) is 14.14 m ahead;
+  // the base's forward (1, 0, 0) is on the camera's left (x -1).
+  o = in_optical_frame({90, -45}, {0, -10, -10});
+  EXPECT_NEAR(o[2], std::sqrt(200.0), 1e-9);
+  EXPECT_NEAR(o[0], 0, 1e-9);
+  EXPECT_NEAR(o[1], 0, 1e-9);
+  o = in_optical_frame({90, -45}, {1, 0, 0});
+  EXPECT_NEAR(o[0], -1, 1e-9);
+}
+
 TEST(LookAtGeometry, EnuToBodyUndoesTheAttitude) {
   // Heading east: ENU east (1, 0, 0) is body forward; north is body left.
   Vector3 v = enu_to_body(pose_at(90), {1, 0, 0});

@@ -52,10 +52,15 @@ class LookAtController {
   // One control step at `now_s` (seconds of the clock the reports are stamped with): `target` in
   // the gimbal's base frame, `joints` the last reported joint angles (none before the first
   // report), taken at `joints_s`.
+  // `target_age_s`: how old what `target` was computed from is (the last fix, the TF's stamp):
+  // the target is led by that much more.
   LookAtStep step(double now_s, const geo::Vector3& target,
-                  const std::optional<geo::GimbalAim>& joints, double joints_s = 0);
+                  const std::optional<geo::GimbalAim>& joints, double joints_s = 0,
+                  double target_age_s = 0);
   // Forget the history (a new goal, a jump of the target).
   void reset();
+  // The last angle command did not go out: the next step sends again even if nothing changed.
+  void forget_sent() { sent_.reset(); }
   const LookAtConfig& config() const { return config_; }
   // The target's angular rate the controller estimates, deg/s.
   geo::GimbalAim rate_estimate() const { return rate_; }

@@ -60,6 +60,10 @@ double yaw_turn_deg(double current_deg, double desired_deg, const GimbalLimits& 
 // `angle` wrapped into (-180, 180].
 double wrap_deg(double angle);
 
+// `target` (base frame) in the optical frame of a camera on the boresight at `aim` (z forward,
+// x right, y down; the cameras' offsets from the gimbal's centre, centimetres, are left out).
+Vector3 in_optical_frame(const GimbalAim& aim, const Vector3& target);
+
 // Degrees between the boresight at `aim` and `direction` (base frame).
 double pointing_error_deg(const GimbalAim& aim, const Vector3& direction);
 
