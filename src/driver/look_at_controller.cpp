@@ -10,28 +10,24 @@ constexpr double kMaxRateGapS = 0.5;  // steps further apart than this restart t
 }
 
 void LookAtController::reset() {
-  previous_.reset();
+  history_.clear();
   rate_ = {};
   sent_.reset();
   commanded_rate_ = {};
 }
 
 void LookAtController::update_rate(double now_s, const geo::GimbalAim& desired) {
-  const double dt = now_s - previous_s_;
-  if (previous_ && dt > 0 && dt <= kMaxRateGapS) {
-    // The target's own motion: always the short way, whatever the joint can do.
-    const double yaw_rate = geo::wrap_deg(desired.yaw_deg - previous_->yaw_deg) / dt;
-    const double pitch_rate = (desired.pitch_deg - previous_->pitch_deg) / dt;
-    const double a = config_.rate_smoothing;
-    rate_.yaw_deg = a * yaw_rate + (1 - a) * rate_.yaw_deg;
-    rate_.pitch_deg = a * pitch_rate + (1 - a) * rate_.pitch_deg;
-  } else if (!previous_ || dt > kMaxRateGapS) {
-    rate_ = {};
-  }
-  if (dt > 0 || !previous_) {
-    previous_ = desired;
-    previous_s_ = now_s;
-  }
+  if (!history_.empty() && now_s <= history_.back().t_s) return;  // nothing newer
+  if (!history_.empty() && now_s - history_.back().t_s > kMaxRateGapS) history_.clear();
+  history_.push_back({now_s, desired});
+  while (history_.size() > 2 && now_s - history_[1].t_s >= config_.rate_window_s)
+    history_.pop_front();  // keep the newest sample at least a window back
+  const Sample& oldest = history_.front();
+  const double dt = now_s - oldest.t_s;
+  if (dt < config_.rate_window_s) return;  // too short to tell: the last estimate stands
+  // The target's own motion: always the short way, whatever the joint can do.
+  rate_.yaw_deg = geo::wrap_deg(desired.yaw_deg - oldest.aim.yaw_deg) / dt;
+  rate_.pitch_deg = (desired.pitch_deg - oldest.aim.pitch_deg) / dt;
 }
 
 LookAtStep LookAtController::step(double now_s, const geo::Vector3& target,

@@ -37,7 +37,6 @@ double in_range(const ros::NodeHandle& nh, const std::string& name, double fallb
 
 }  // namespace
 
-
 LookAtServer::LookAtServer(ros::NodeHandle nh, const ros::NodeHandle& private_nh, PodDriver& driver,
                            const RosPodConfig& config, const tf2_ros::Buffer& tf)
     : driver_(driver),
@@ -126,18 +125,28 @@ void LookAtServer::on_point(const geometry_msgs::PointStamped::ConstPtr& msg) {
 }
 
 void LookAtServer::run() {
+  using Clock = std::chrono::steady_clock;
+  const auto period =
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(period_s_));
+  Clock::time_point next_step = Clock::now();
   for (;;) {
     {
       std::unique_lock<std::mutex> lock(mutex_);
       if (stopping_) break;
-      const bool work = session_ || pending_goal_ || latest_point_;
-      if (work) {
-        wakeup_.wait_for(lock, std::chrono::duration<double>(period_s_));
+      // Steps keep their period while something is followed (a point does not bring the next
+      // one forward: the rate estimate and the pod's load want a steady pace); a goal, a cancel
+      // or the first point is served at once.
+      const auto urgent = [this] { return stopping_ || pending_goal_ || preempt_; };
+      if (session_) {
+        wakeup_.wait_until(lock, next_step, urgent);
+      } else if (latest_point_) {
+        wakeup_.wait_for(lock, period, urgent);  // a stale point is dropped by update_session
       } else {
         wakeup_.wait(lock, [this] { return stopping_ || pending_goal_ || latest_point_; });
       }
       if (stopping_) break;
     }
+    next_step = std::max(next_step + period, Clock::now());
     const ros::Time now = ros::Time::now();
     Following* f = update_session(now);
     if (f && !step(*f, now)) session_.reset();

@@ -35,21 +35,42 @@ TEST(LookAtController, HoldsAStillTargetWithOneCommand) {
   EXPECT_NEAR(second.error_deg, 0, 1e-9);
 }
 
+Vector3 at_yaw(double yaw_deg) {
+  const double y = yaw_deg * M_PI / 180;
+  return Vector3{std::cos(y), -std::sin(y), 0};
+}
+
 TEST(LookAtController, LeadsAMovingTarget) {
   LookAtConfig config;
   config.lead_s = 0.1;
-  config.rate_smoothing = 1.0;  // the newest difference only: exact figures
   LookAtController controller(config);
-  // The target turns right at 10 deg/s: 0 deg at t 0, 0.5 deg at t 0.05.
-  const auto at = [](double yaw_deg) {
-    const double y = yaw_deg * M_PI / 180;
-    return Vector3{std::cos(y), -std::sin(y), 0};
-  };
-  controller.step(0.0, at(0), std::nullopt);
-  const LookAtStep step = controller.step(0.05, at(0.5), std::nullopt);
+  // The target turns right at 10 deg/s; steps every 0.05 s. Before 0.2 s (the rate window) no
+  // rate is known: the command is the target itself.
+  const LookAtStep first = controller.step(0.0, at_yaw(0), std::nullopt);
+  EXPECT_NEAR(first.angle->yaw_deg, 0, 1e-9);
+  for (int i = 1; i <= 3; ++i) controller.step(0.05 * i, at_yaw(0.5 * i), std::nullopt);
+  EXPECT_NEAR(controller.rate_estimate().yaw_deg, 0, 1e-9);
+  const LookAtStep step = controller.step(0.2, at_yaw(2.0), std::nullopt);
   EXPECT_NEAR(controller.rate_estimate().yaw_deg, 10, 1e-9);
   ASSERT_TRUE(step.angle);
-  EXPECT_NEAR(step.angle->yaw_deg, 0.5 + 10 * 0.1, 1e-9);  // where it will be 0.1 s later
+  EXPECT_NEAR(step.angle->yaw_deg, 2.0 + 10 * 0.1, 1e-9);  // where it will be 0.1 s later
+  // What the target was computed from is 0.05 s old: led by that much more.
+  const LookAtStep late = controller.step(0.3, at_yaw(2.5), std::nullopt, 0, 0.05);
+  EXPECT_NEAR(late.angle->yaw_deg, 2.5 + 10 * 0.15, 1e-9);
+}
+
+TEST(LookAtController, RateOfATargetSlowerThanTheSteps) {
+  // A 10 Hz tracker's points at 20 Hz steps: every other step sees the same point. The rate is
+  // the change over the window, not over one step (which would give 0 and 20 deg/s in turn).
+  LookAtController controller({});
+  for (int i = 0; i <= 12; ++i) {
+    const double t = 0.05 * i;
+    const double point_t = 0.1 * (i / 2);
+    controller.step(t, at_yaw(10 * point_t), std::nullopt);
+    if (t >= 0.3) {
+      EXPECT_NEAR(controller.rate_estimate().yaw_deg, 10, 2.6) << t;
+    }
+  }
 }
 
 TEST(LookAtController, RefusesATargetAboveTheUpperLimit) {

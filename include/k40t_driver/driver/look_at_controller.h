@@ -16,6 +16,7 @@
 // reach otherwise) is refused with the reason, and the glue stops following.
 #pragma once
 
+#include <deque>
 #include <optional>
 
 #include "k40t_driver/geo/look_at_geometry.h"
@@ -34,7 +35,10 @@ struct LookAtConfig {
   double lead_s = 0.06;
   double rate_gain = 2.0;        // rate drive: 1/s
   double min_change_deg = 0.01;  // 0x000012's resolution: smaller changes are not sent
-  double rate_smoothing = 0.5;   // weight of the newest difference in the rate estimate
+  // The target's angular rate is its change over at least this long (s): steps and targets
+  // come at their own rates (a 10 Hz tracker, 20 Hz steps), and a difference over one step
+  // would see 0 or twice the rate.
+  double rate_window_s = 0.2;
 };
 
 struct LookAtStep {
@@ -73,8 +77,11 @@ class LookAtController {
   void update_rate(double now_s, const geo::GimbalAim& desired);
 
   LookAtConfig config_;
-  std::optional<geo::GimbalAim> previous_;
-  double previous_s_ = 0;
+  struct Sample {
+    double t_s;
+    geo::GimbalAim aim;
+  };
+  std::deque<Sample> history_;  // the last targets, the oldest up to kMaxRateGapS back
   geo::GimbalAim rate_;
   std::optional<geo::GimbalAim> sent_;
   geo::GimbalAim commanded_rate_;
