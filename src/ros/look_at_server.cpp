@@ -19,22 +19,6 @@ constexpr double kDegToRad = M_PI / 180.0;
 constexpr double kTeleHalfWidthMm = 2.8;
 constexpr double kTeleFocalMm = 4.7;
 
-LookAtDrive read_drive(const ros::NodeHandle& private_nh) {
-  const std::string drive = private_nh.param<std::string>("look_at_drive", "angle");
-  if (drive == "rate") return LookAtDrive::kRate;
-  if (drive != "angle")
-    ROS_WARN("~look_at_drive '%s' unknown (angle or rate): angle is used", drive.c_str());
-  return LookAtDrive::kAngle;
-}
-
-double in_range(const ros::NodeHandle& nh, const std::string& name, double fallback, double min,
-                double max) {
-  const double value = nh.param(name, fallback);
-  if (std::isfinite(value) && value >= min && value <= max) return value;
-  ROS_WARN("~%s %g outside %g..%g: %g is used", name.c_str(), value, min, max, fallback);
-  return fallback;
-}
-
 }  // namespace
 
 LookAtServer::LookAtServer(ros::NodeHandle nh, const ros::NodeHandle& private_nh, PodDriver& driver,
@@ -43,11 +27,9 @@ LookAtServer::LookAtServer(ros::NodeHandle nh, const ros::NodeHandle& private_nh
       resolver_(tf, driver, config.ids.base,
                 private_nh.param<std::string>("vehicle_frame", config.ids.base)),
       server_(nh, "gimbal/look_at", false) {
-  config_.drive = read_drive(private_nh);
-  config_.limits.yaw_continuous = private_nh.param("gimbal_yaw_continuous", false);
-  config_.lead_s = in_range(private_nh, "look_at_lead", config_.lead_s, 0, 1);
-  period_s_ = 1.0 / in_range(private_nh, "look_at_rate", 20, 10, 50);
-  point_timeout_s_ = in_range(private_nh, "look_at_point_timeout", 1.0, 0.1, 60);
+  config_ = config.look_at.control;
+  period_s_ = 1.0 / config.look_at.rate_hz;
+  point_timeout_s_ = config.look_at.point_timeout_s;
   tan_half_fov_1x_ = kTeleHalfWidthMm / kTeleFocalMm;
 
   driver.on<protocol::GimbalAttitude>([this](const protocol::GimbalAttitude& m, StampNs stamp) {
@@ -151,7 +133,10 @@ void LookAtServer::run() {
     Following* f = update_session(now);
     if (f && !step(*f, now)) session_.reset();
   }
-  if (session_) end(*session_, false, "the driver is shutting down");
+  if (session_) {
+    stop_gimbal();  // nothing follows any more: the gimbal must not keep turning
+    end(*session_, false, "the driver is shutting down; the gimbal stopped");
+  }
   session_.reset();
   if (server_.isActive()) server_.setAborted(k40t_driver::LookAtResult(), "shutting down");
 }
