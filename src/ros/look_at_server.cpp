@@ -202,9 +202,14 @@ LookAtServer::Following* LookAtServer::update_session(const ros::Time& now) {
     point_time = latest_point_time_;
   }
   if (goal) {  // a goal replaces whatever was followed (actionlib ended a replaced goal)
+    const bool was_following = session_ != nullptr;
     session_ = std::make_unique<Following>(config_);
     if (const std::optional<std::string> refused = configure(*session_, *goal)) {
       session_.reset();
+      if (was_following) {  // what it replaced ended: the gimbal must not go on turning
+        stop_gimbal();
+        marker_pub_.publish(clear_look_at_markers(resolver_.base_frame()));
+      }
       k40t_driver::LookAtResult result;
       result.message = *refused;
       result.error = result.slant_range = std::nan("");

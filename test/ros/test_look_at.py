@@ -7,7 +7,8 @@ angle between the simulator's boresight and the direction from the pod to the ob
   - hover, 100 m slant: within 0.2 deg within 2 s of the goal;
   - the yaw wrap: from 150 deg right to 160 deg left of the nose, the short way (50 deg through the
     back, never near 0);
-  - a target 45 deg up (above the 30 deg limit): aborted with the reason within 0.5 s;
+  - a target 45 deg up (above the 30 deg limit): aborted with the reason within 0.5 s; bad
+    goals aborted naming the field;
   - a straight pass at 15 m/s, 100 m abeam: error p95 <= 1 deg and the object in the central 10 %
     of the image at 1x; cancel stops the gimbal;
   - an orbit of 150 m at 10 m/s keeping a 30 m footprint: the true width within 10 % p95;
@@ -183,6 +184,29 @@ class LookAtTest(unittest.TestCase):
         self.assertIn("above the gimbal's upper limit", result.message)
         self.assertIn("45.", result.message)
         self.assertLess(took, 0.5)
+
+    def test_3b_bad_goals_are_refused_naming_the_field(self):
+        hot = self.feeder.latest["hot"]
+        wgs84 = dict(target_type=LookAtGoal.TARGET_WGS84, latitude=hot[0], longitude=hot[1],
+                     altitude=hot[2])
+        cases = [
+            (dict(target_type=7), "target_type must be"),
+            (dict(target_type=LookAtGoal.TARGET_POINT), "the point has no frame_id"),
+            (dict(wgs84, latitude=91.0), "latitude"),
+            (dict(wgs84, altitude_datum=5), "altitude_datum must be"),
+            (dict(wgs84, zoom_policy=LookAtGoal.ZOOM_FIXED, zoom_ratio=200.0), "zoom_ratio must be"),
+            (dict(wgs84, zoom_policy=LookAtGoal.ZOOM_FOOTPRINT, footprint_width=0.0),
+             "footprint_width must be"),
+            (dict(wgs84, zoom_policy=LookAtGoal.ZOOM_FOOTPRINT, footprint_width=30.0,
+                  lens=LookAtGoal.LENS_THERMAL), "use LENS_TELE"),
+            (dict(wgs84, max_rate=1.0), "max_rate must be"),
+            (dict(wgs84, tolerance=-1.0), "tolerance must be"),
+        ]
+        for fields, reason in cases:
+            state, result = Run(self.client, LookAtGoal(**fields)).wait(5.0)
+            self.assertEqual(state, actionlib.GoalStatus.ABORTED, fields)
+            self.assertIn(reason, result.message, fields)
+            self.assertFalse(result.success)
 
     def test_4_straight_pass_at_15_m_s(self):
         # Flying south, the object 100 m west of the track, abeam 6 s from now: measured from
