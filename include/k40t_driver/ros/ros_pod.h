@@ -52,7 +52,7 @@ class RosPod {
   std::unique_ptr<CommandInput> commands_;
   ros::Subscriber replay_;  // replay mode's input (raw/rx)
   std::unique_ptr<TargetLocator> locator_;
-  std::unique_ptr<PodActions> actions_;  // live mode; shut down before the driver stops
+  std::unique_ptr<PodActions> actions_;    // live mode; shut down before the driver stops
   std::unique_ptr<LookAtServer> look_at_;  // live mode; the same
 };
 
