@@ -13,7 +13,8 @@ angle between the simulator's boresight and the direction from the pod to the ob
     of the image at 1x; cancel stops the gimbal;
   - an orbit of 150 m at 10 m/s keeping a 30 m footprint: the true width within 10 % p95;
   - gimbal/look_at_point: followed, shown on gimbal/look_at_marker, and dropped when the points
-    stop (the dead-man)."""
+    stop (the dead-man);
+  - a point goal in a TF frame of its own (a static transform from the gimbal's base)."""
 import math
 import threading
 import time
@@ -22,7 +23,8 @@ import unittest
 import actionlib
 import rospy
 import rostest
-from geometry_msgs.msg import PointStamped
+import tf2_ros
+from geometry_msgs.msg import PointStamped, TransformStamped
 from sensor_msgs.msg import JointState
 from visualization_msgs.msg import Marker, MarkerArray
 
@@ -313,6 +315,34 @@ class LookAtTest(unittest.TestCase):
         print("LOOKAT dead-man: following ended %.2f s after the last point" % (cleared_at - stopped))
         self.assertLess(cleared_at - stopped, 1.2)
         self.assertAlmostEqual(a, b, delta=0.05)
+
+    def test_7_point_goal_in_another_tf_frame(self):
+        # A frame 10 m ahead of the gimbal's base and 5 m below, turned 90 deg left: its x axis
+        # points left. 40 m along it is (10, 40, -5) in the base: 75.96 deg left, 6.91 deg down.
+        broadcaster = tf2_ros.StaticTransformBroadcaster()
+        t = TransformStamped()
+        t.header.stamp = rospy.Time.now()
+        t.header.frame_id, t.child_frame_id = "k40t_base_link", "look_at_test_frame"
+        t.transform.translation.x, t.transform.translation.z = 10.0, -5.0
+        t.transform.rotation.z, t.transform.rotation.w = math.sin(math.pi / 4), math.cos(math.pi / 4)
+        broadcaster.sendTransform(t)
+        goal = LookAtGoal(target_type=LookAtGoal.TARGET_POINT, follow=False)
+        goal.point.header.frame_id = "look_at_test_frame"
+        goal.point.point.x = 40.0
+        state = None
+        deadline = time.time() + 10.0
+        while time.time() < deadline:  # until the driver's TF buffer has the frame
+            state, result = Run(self.client, goal).wait(15.0)
+            if state == actionlib.GoalStatus.SUCCEEDED or "no TF" not in result.message:
+                break
+            time.sleep(0.2)
+        self.assertEqual(state, actionlib.GoalStatus.SUCCEEDED, result.message)
+        time.sleep(0.2)
+        yaw, pitch = self.feeder.latest["boresight"]  # heading 0: the joints'
+        print("LOOKAT point in another frame: boresight yaw %.2f pitch %.2f deg (want -75.96, "
+              "-6.91)" % (yaw, pitch))
+        self.assertAlmostEqual(yaw, -75.96, delta=0.25)
+        self.assertAlmostEqual(pitch, -6.91, delta=0.25)
 
 
 if __name__ == "__main__":
