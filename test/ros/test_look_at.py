@@ -4,7 +4,7 @@ simulated vehicle's true position and attitude are fed to the driver (geo_truth.
 gimbal/look_at goal names the hot object by its WGS-84 position, and the true pointing error is the
 angle between the simulator's boresight and the direction from the pod to the object, both from
 'truth'. Scenarios (the simulator's `fly` and `orbit` move the vehicle):
-  - hover, 100 m slant: within 0.2 deg within 2 s of the goal;
+  - hover, 100 m slant: within 0.2 deg within 2 s of the goal (and a fixed zoom of 2x);
   - the yaw wrap: from 150 deg right to 160 deg left of the nose, the short way (50 deg through the
     back, never near 0);
   - a target 45 deg up (above the 30 deg limit): aborted with the reason within 0.5 s; bad
@@ -134,10 +134,13 @@ class LookAtTest(unittest.TestCase):
         horizontal = math.sqrt(100.0 ** 2 - (GROUND_HEIGHT - HOT_RADIUS) ** 2)
         self.place(150, horizontal)
         t0 = time.time()
-        run = Run(self.client, self.goal_at_hot(False))
+        run = Run(self.client, self.goal_at_hot(False, zoom_policy=LookAtGoal.ZOOM_FIXED,
+                                                zoom_ratio=2.0))
         state, result = run.wait(10.0)
         self.assertEqual(state, actionlib.GoalStatus.SUCCEEDED, result.message)
         self.assertTrue(wait_until(lambda: true_error_deg(self.feeder.latest) <= 0.2, 3.0))
+        self.assertTrue(wait_until(lambda: abs(self.feeder.latest["zoom"] - 2.0) < 0.01, 3.0),
+                        "ZOOM_FIXED: the pod's zoom is %.2f" % self.feeder.latest["zoom"])
         time.sleep(max(0.0, t0 + 3.0 - time.time()))  # a second of holding after the 2 s
         within = [t for t, truth in self.log.samples if t >= t0 and true_error_deg(truth) <= 0.2]
         settled_s = min(within) - t0
@@ -160,9 +163,12 @@ class LookAtTest(unittest.TestCase):
         horizontal = math.sqrt(100.0 ** 2 - (GROUND_HEIGHT - HOT_RADIUS) ** 2)
         self.place(200, horizontal)
         t0 = time.time()
-        state, result = Run(self.client, self.goal_at_hot(False)).wait(10.0)
+        state, result = Run(self.client, self.goal_at_hot(
+            False, zoom_policy=LookAtGoal.ZOOM_FIXED, zoom_ratio=1.0)).wait(10.0)
         self.assertEqual(state, actionlib.GoalStatus.SUCCEEDED, result.message)
         took = time.time() - t0
+        # Back to 1x for the pass (its image check is at 1x).
+        self.assertTrue(wait_until(lambda: abs(self.feeder.latest["zoom"] - 1.0) < 0.01, 3.0))
         yaws = self.joint_yaws_since(t0)
         nearest_zero = min(abs(y) for y in yaws)
         print("LOOKAT yaw wrap 150 right -> 160 left: settled in %.2f s, |yaw| never below %.1f deg"
