@@ -164,17 +164,22 @@ class LookAtTest(unittest.TestCase):
         self.place(200, horizontal)
         t0 = time.time()
         state, result = Run(self.client, self.goal_at_hot(
-            False, zoom_policy=LookAtGoal.ZOOM_FIXED, zoom_ratio=1.0)).wait(10.0)
+            False, zoom_policy=LookAtGoal.ZOOM_FIXED, zoom_ratio=1.0,
+            max_rate=math.radians(20))).wait(10.0)
         self.assertEqual(state, actionlib.GoalStatus.SUCCEEDED, result.message)
         took = time.time() - t0
         # Back to 1x for the pass (its image check is at 1x).
         self.assertTrue(wait_until(lambda: abs(self.feeder.latest["zoom"] - 1.0) < 0.01, 3.0))
         yaws = self.joint_yaws_since(t0)
         nearest_zero = min(abs(y) for y in yaws)
-        print("LOOKAT yaw wrap 150 right -> 160 left: settled in %.2f s, |yaw| never below %.1f deg"
+        print("LOOKAT yaw wrap 150 right -> 160 left at 20 deg/s: settled in %.2f s, |yaw| never "
+              "below %.1f deg"
               % (took, nearest_zero))
         self.assertGreater(nearest_zero, 140.0)  # the long way would pass 0
-        self.assertLess(took, 4.0)  # 50 deg at 30 deg/s; the long way (310 deg) takes 10 s
+        # 50 deg at the goal's max_rate, 20 deg/s: 2.5 s (the default 30 deg/s: 1.7 s); the long
+        # way (310 deg) would take 15.5 s.
+        self.assertGreater(took, 2.4)
+        self.assertLess(took, 4.0)
 
     def test_3_above_the_upper_limit_is_refused_within_half_a_second(self):
         truth = self.feeder.latest
