@@ -2,7 +2,8 @@
 # target so that catkin's output directories apply to every executable (rosrun k40t_driver k40t).
 set(K40T_CATKIN_COMPONENTS
   roscpp nodelet pluginlib std_msgs std_srvs sensor_msgs geometry_msgs nav_msgs diagnostic_msgs
-  diagnostic_updater dynamic_reconfigure tf2 tf2_ros tf2_msgs actionlib actionlib_msgs message_generation)
+  diagnostic_updater dynamic_reconfigure tf2 tf2_ros tf2_msgs actionlib actionlib_msgs visualization_msgs
+  message_generation)
 find_package(catkin REQUIRED COMPONENTS ${K40T_CATKIN_COMPONENTS})
 
 # Message and service definitions are globbed: adding a .msg/.srv file is enough.
@@ -24,4 +25,4 @@ catkin_package(
   LIBRARIES k40t_ros_common k40t_pod_nodelet k40t_video_nodelet k40t_skyport_nodelet
   CATKIN_DEPENDS roscpp nodelet pluginlib std_msgs std_srvs sensor_msgs geometry_msgs nav_msgs
                  diagnostic_msgs diagnostic_updater dynamic_reconfigure tf2 tf2_ros tf2_msgs actionlib
-                 actionlib_msgs message_runtime)
+                 actionlib_msgs visualization_msgs message_runtime)

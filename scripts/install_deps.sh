@@ -22,6 +22,7 @@ packages=(
   gstreamer1.0-rtsp gstreamer1.0-tools gstreamer1.0-plugins-base-apps
   libgeographiclib-dev libproj-dev proj-data
   librosbag-storage-dev libyaml-cpp-dev
+  libvisualization-msgs-dev python3-visualization-msgs
   catkin-lint
 )
 

@@ -107,6 +107,14 @@ Result<RosPodConfig> read_params(ParamReader& p) {
   c.range.max_range = static_cast<float>(p.number("laser_max_range", 1500.0, 0, 1e5));
   c.range.field_of_view = static_cast<float>(p.number("laser_field_of_view", 0.003, 0, 3.2));
   c.rate_tolerance = p.number("rate_tolerance", 0.5, 0.01, 0.99);
+  const std::string drive = p.get<std::string>("look_at_drive", "angle");
+  if (drive != "angle" && drive != "rate")
+    p.fail("look_at_drive", "must be angle or rate, got '" + drive + "'");
+  c.look_at.control.drive = drive == "rate" ? LookAtDrive::kRate : LookAtDrive::kAngle;
+  c.look_at.control.lead_s = p.number("look_at_lead", c.look_at.control.lead_s, 0, 1);
+  c.look_at.control.limits.yaw_continuous = p.get("gimbal_yaw_continuous", false);
+  c.look_at.rate_hz = p.number("look_at_rate", 20, 10, 50);
+  c.look_at.point_timeout_s = p.number("look_at_point_timeout", 1.0, 0.1, 60);
 
   if (!p.error().empty()) return Result<RosPodConfig>::fail(p.error());
   return c;

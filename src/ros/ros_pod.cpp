@@ -56,6 +56,10 @@ RosPod::RosPod(ros::NodeHandle nh, ros::NodeHandle private_nh, const RosPodConfi
   diagnostics_ =
       std::make_unique<PodDiagnostics>(nh, private_nh, *driver_, config_, settings_.get());
   locator_ = std::make_unique<TargetLocator>(nh, private_nh, *driver_, config_, *diagnostics_);
+  if (!config_.driver.replay) {
+    const transport::ThreadNameScope look_at_thread("k40t_look_at");
+    look_at_ = std::make_unique<LookAtServer>(nh, private_nh, *driver_, config_, locator_->tf());
+  }
   services_ = std::make_unique<PodServices>(nh, *driver_);
   settings_services_ = std::make_unique<SettingsServices>(nh, settings_.get());
   job_services_ = std::make_unique<JobServices>(nh, *driver_);
@@ -69,6 +73,7 @@ RosPod::~RosPod() {
   // waiting for it); then the link stops so that no handler runs into a half-destroyed glue
   // object.
   if (actions_) actions_->shutdown();
+  if (look_at_) look_at_->shutdown();
   if (driver_) driver_->stop();
 }
 
@@ -80,6 +85,7 @@ Status RosPod::start() {
   }
   const Status started = driver_->start();
   if (started && actions_) actions_->start();  // goals are taken once the link runs
+  if (started && look_at_) look_at_->start();
   return started;
 }
 

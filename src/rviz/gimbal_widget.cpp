@@ -15,6 +15,7 @@ namespace k40t::rviz_panel {
 namespace {
 
 constexpr double kRepeatPeriodMs = 100;  // well inside the driver's 0.5 s dead-man timeout
+constexpr double kLookAtPeriodMs = 200;  // well inside look_at_point_timeout (1 s)
 
 double radians(double degrees) {
   return degrees * M_PI / 180.0;
@@ -53,6 +54,11 @@ GimbalWidget::GimbalWidget(PodLink* link, QWidget* parent)
   yaw_->setToolTip("Yaw, positive turns left");
   auto* move = new QPushButton("Move", this);
   move->setObjectName("gimbal_move");
+  look_at_ = new QPushButton("Look at clicked point", this);
+  look_at_->setObjectName("gimbal_look_at_clicked");
+  look_at_->setCheckable(true);
+  look_at_->setToolTip(
+      "While down, the gimbal follows the point clicked with rviz's Publish Point tool");
 
   auto* side = new QGridLayout;
   side->addWidget(new QLabel("Max rate", this), 0, 0);
@@ -64,7 +70,8 @@ GimbalWidget::GimbalWidget(PodLink* link, QWidget* parent)
   side->addWidget(new QLabel("Yaw", this), 3, 0);
   side->addWidget(yaw_, 3, 1);
   side->addWidget(move, 4, 0, 1, 2);
-  side->setRowStretch(5, 1);
+  side->addWidget(look_at_, 5, 0, 1, 2);
+  side->setRowStretch(6, 1);
   auto* layout = new QHBoxLayout(this);
   layout->addWidget(joystick_, 1);
   layout->addLayout(side);
@@ -76,6 +83,23 @@ GimbalWidget::GimbalWidget(PodLink* link, QWidget* parent)
   connect(look_down, &QPushButton::clicked, this, [this] { link_->trigger("gimbal/look_down"); });
   connect(move, &QPushButton::clicked, this,
           [this] { link_->setAngle(radians(pitch_->value()), radians(yaw_->value())); });
+  look_at_repeat_.setInterval(kLookAtPeriodMs);
+  connect(&look_at_repeat_, &QTimer::timeout, this, [this] { link_->publishLookAt(); });
+  connect(look_at_, &QPushButton::toggled, this, &GimbalWidget::lookAtClicked);
+  connect(link_, &PodLink::clickedPoint, this, [this](const QString& where) {
+    if (look_at_->isChecked()) look_at_->setToolTip("Looking at " + where);
+  });
+}
+
+// Down: only points clicked from now on are followed; up: the points stop, and with them the
+// following (the driver's dead-man).
+void GimbalWidget::lookAtClicked(bool on) {
+  if (on) {
+    link_->forgetClicked();
+    look_at_repeat_.start();
+  } else {
+    look_at_repeat_.stop();
+  }
 }
 
 void GimbalWidget::onDeflected(double right, double up) {

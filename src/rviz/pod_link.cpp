@@ -49,6 +49,7 @@ void PodLink::shutdown() {
   worker_.reset();  // no call may report to a half-destroyed link or panel
   subscribers_.clear();
   rate_pub_ = ros::Publisher();
+  look_at_pub_ = ros::Publisher();
   nh_.reset();
 }
 
@@ -56,6 +57,7 @@ bool PodLink::setNamespace(const QString& ns) {
   if (!worker_) return false;
   subscribers_.clear();
   rate_pub_ = ros::Publisher();
+  look_at_pub_ = ros::Publisher();
   nh_.reset();
   statuses_.clear();
   ns_ = ns;
@@ -82,7 +84,24 @@ bool PodLink::setNamespace(const QString& ns) {
       "/diagnostics", 20,
       [this](const diagnostic_msgs::DiagnosticArray::ConstPtr& msg) { onDiagnostics(*msg); }));
   rate_pub_ = nh.advertise<geometry_msgs::Twist>("gimbal/cmd_rate", 1);
+  look_at_pub_ = nh.advertise<geometry_msgs::PointStamped>("gimbal/look_at_point", 1);
+  subscribers_.push_back(nh.subscribe<geometry_msgs::PointStamped>(
+      "/clicked_point", 1, [this](const geometry_msgs::PointStamped::ConstPtr& msg) {
+        clicked_ = *msg;
+        Q_EMIT clickedPoint(QString("%1 %2 %3 in %4")
+                                .arg(msg->point.x, 0, 'f', 1)
+                                .arg(msg->point.y, 0, 'f', 1)
+                                .arg(msg->point.z, 0, 'f', 1)
+                                .arg(QString::fromStdString(msg->header.frame_id)));
+      }));
   return true;
+}
+
+void PodLink::publishLookAt() {
+  if (!look_at_pub_ || !clicked_) return;
+  geometry_msgs::PointStamped point = *clicked_;
+  point.header.stamp = ros::Time::now();
+  look_at_pub_.publish(point);
 }
 
 void PodLink::publishRate(double pitch_rate, double yaw_rate) {

@@ -10,11 +10,13 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <dynamic_reconfigure/Config.h>
+#include <geometry_msgs/PointStamped.h>
 #include <k40t_driver/CameraStatus.h>
 #include <k40t_driver/PhotoStatus.h>
 #include <k40t_driver/RecordStatus.h>
@@ -44,6 +46,11 @@ class PodLink : public QObject {
 
   // gimbal/cmd_rate, rad/s (REP 103: pitch positive = down, yaw positive = left).
   void publishRate(double pitch_rate, double yaw_rate);
+  // "Look at clicked point": the last point rviz's Publish Point tool sent (/clicked_point, in
+  // rviz's fixed frame) since forgetClicked(), published again on gimbal/look_at_point; the
+  // driver follows it while it keeps coming (its look_at_point_timeout dead-man).
+  void publishLookAt();
+  void forgetClicked() { clicked_.reset(); }
   // Service calls: each outcome arrives as callFinished(what, success, message).
   void trigger(const QString& relative_service);  // std_srvs/Trigger, e.g. "gimbal/center"
   void setAngle(double pitch, double yaw);
@@ -70,6 +77,7 @@ class PodLink : public QObject {
   // statuses, the level and message of its link status, and the statuses that are not OK.
   void health(int level, int link_level, const QString& link_message, const QString& others);
   void callFinished(const QString& what, bool success, const QString& message);
+  void clickedPoint(const QString& where);  // a point came on /clicked_point
 
  private:
   template <class Srv>
@@ -83,6 +91,8 @@ class PodLink : public QObject {
   std::unique_ptr<ros::NodeHandle> nh_;
   std::vector<ros::Subscriber> subscribers_;
   ros::Publisher rate_pub_;
+  ros::Publisher look_at_pub_;
+  std::optional<geometry_msgs::PointStamped> clicked_;
   std::unique_ptr<ServiceWorker> worker_;
 };
 

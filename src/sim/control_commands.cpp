@@ -1,5 +1,6 @@
 #include "k40t_driver/sim/control_commands.h"
 
+#include "k40t_driver/sim/lens.h"
 #include "k40t_driver/sim/number_text.h"
 
 #include <cmath>
@@ -143,6 +144,22 @@ std::string run_hot_object(const Args& args, const Numbers& n, ControlTarget& ta
   return "ok hot object " + args[0] + " m north, " + args[1] + " m east of the take-off point";
 }
 
+// The vehicle's motion from now on (vehicle_motion.h), from where it is.
+std::string run_fly(const Args& args, const Numbers& n, ControlTarget& target) {
+  target.with_model(
+      [&](PodModel& pod) { pod.ground_truth().motion().fly(pod.now_s(), n[0], n[1]); });
+  return "ok flying " + args[0] + " m/s north, " + args[1] + " m/s east";
+}
+
+std::string run_orbit(const Args& args, const Numbers& n, ControlTarget& target) {
+  bool started = false;
+  target.with_model([&](PodModel& pod) {
+    started = pod.ground_truth().motion().orbit(pod.now_s(), n[0], n[1], n[2]);
+  });
+  if (!started) return "error: the vehicle is at the orbit's centre";
+  return "ok orbiting " + args[0] + " m north, " + args[1] + " m east at " + args[2] + " m/s";
+}
+
 std::string run_photos(const Args&, const Numbers&, ControlTarget& target) {
   std::ostringstream out;
   out << "ok";
@@ -185,7 +202,7 @@ std::string run_truth(const Args&, const Numbers&, ControlTarget& target) {
   out << "ok";
   target.with_model([&](PodModel& pod) {
     const GroundTruth& truth = pod.ground_truth();
-    const Vec3 v = truth.velocity();
+    const Vec3 v = truth.velocity(pod.now_s());
     out << " unix " << pod.unix_time_s();
     put_point(out, "pod", pod.pod_position(), truth);
     out << " pod_ne " << pod.pod_position().x << " " << pod.pod_position().y;
@@ -195,6 +212,8 @@ std::string run_truth(const Args&, const Numbers&, ControlTarget& target) {
     put_point(out, "laser", pod.laser_spot(), truth);
     const std::optional<double> range = pod.laser_range();
     out << " range " << (range ? *range : 0.0);
+    const double zoom = pod.zoom().zoom();
+    out << " zoom " << zoom << " hfov " << field_of_view(Lens::kTele, zoom).horizontal_deg;
   });
   return out.str();
 }
@@ -240,6 +259,12 @@ const std::vector<Command>& commands() {
       {"photos", 0, 0, run_photos},
       {"truth", 0, 0, run_truth},
       {"hot-object NORTH EAST", 2, 2, run_hot_object, {{"NORTH", -1e5, 1e5}, {"EAST", -1e5, 1e5}}},
+      {"fly NORTH EAST", 2, 2, run_fly, {{"NORTH", -100, 100}, {"EAST", -100, 100}}},
+      {"orbit NORTH EAST SPEED",
+       3,
+       3,
+       run_orbit,
+       {{"NORTH", -1e5, 1e5}, {"EAST", -1e5, 1e5}, {"SPEED", -100, 100}}},
       {"geotags", 0, 0, run_geotags},
       {"flight-data", 0, 0, run_flight_data},
   };

@@ -16,7 +16,7 @@ bool inside_image(double x_px, double y_px) {
 }  // namespace
 
 void GimbalModel::Axis::aim(double where) {
-  target = std::clamp(where, min, max);
+  target = wraps ? wrap_deg(where) : std::clamp(where, min, max);
   drive = Drive::kToTarget;
 }
 
@@ -26,27 +26,38 @@ double GimbalModel::Axis::advance(double dt_s) {
   switch (drive) {
     case Drive::kHold:
       break;
-    case Drive::kToTarget:
-      if (std::abs(target - angle) <= step) {
+    case Drive::kToTarget: {
+      // A continuous joint turns the short way (through +-180 when that is shorter).
+      const double to_go = wraps ? wrap_deg(target - angle) : target - angle;
+      if (std::abs(to_go) <= step) {
         angle = target;
         drive = Drive::kHold;
       } else {
-        angle += target > angle ? step : -step;
+        angle += to_go > 0 ? step : -step;
+        if (wraps) angle = wrap_deg(angle);
       }
       break;
+    }
     case Drive::kNegative:
     case Drive::kPositive:
+      if (wraps) {
+        angle = wrap_deg(angle + (drive == Drive::kPositive ? step : -step));
+        target = angle;
+        break;
+      }
       angle = std::clamp(angle + (drive == Drive::kPositive ? step : -step), min, max);
       target = angle;
       if (angle == min || angle == max) drive = Drive::kHold;  // at the end stop
       break;
   }
-  return dt_s > 0 ? (angle - before) / dt_s : 0.0;
+  const double moved = wraps ? wrap_deg(angle - before) : angle - before;
+  return dt_s > 0 ? moved / dt_s : 0.0;
 }
 
 GimbalModel::GimbalModel(const GimbalConfig& config) : config_(config) {
   yaw_.min = config.yaw_min_deg;
   yaw_.max = config.yaw_max_deg;
+  yaw_.wraps = config.yaw_continuous;
   pitch_.min = config.pitch_min_deg;
   pitch_.max = config.pitch_max_deg;
   yaw_.speed = pitch_.speed = config.default_dial_speed_deg_s;

@@ -8,7 +8,8 @@ namespace {
 constexpr size_t kMaxGeotags = 1000;  // a long run keeps the latest
 }
 
-GroundTruth::GroundTruth(const VehicleConfig& config) : config_(config) {
+GroundTruth::GroundTruth(const VehicleConfig& config)
+    : config_(config), motion_(config.velocity_north_m_s, config.velocity_east_m_s) {
   const Result<double> ground = geo::Geoid::egm96().ellipsoid_from_msl(
       config.origin_latitude_deg, config.origin_longitude_deg, config.origin_ground_msl_m);
   if (!ground) return;
@@ -18,7 +19,8 @@ GroundTruth::GroundTruth(const VehicleConfig& config) : config_(config) {
 }
 
 Vec3 GroundTruth::pod_position(double t_s, double height_m) const {
-  return {config_.velocity_north_m_s * t_s, config_.velocity_east_m_s * t_s, height_m};
+  const Vec3 ground = motion_.position(t_s);
+  return {ground.x, ground.y, height_m};
 }
 
 Result<TruePoint> GroundTruth::to_earth(const Vec3& point) const {

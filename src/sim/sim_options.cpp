@@ -79,6 +79,9 @@ const std::vector<OptionSpec>& option_table() {
       Kinds::number<double>(
           "--velocity-east", "M/S", "the vehicle flies east at this speed (default 0)", -100.0,
           100.0, [](SimOptions& o) -> double& { return o.pod.vehicle.velocity_east_m_s; }),
+      Kinds::flag("--gimbal-yaw-continuous",
+                  "the gimbal's yaw turns through +-180 (no end stops; the default has them)",
+                  [](SimOptions& o) -> bool& { return o.pod.gimbal.yaw_continuous; }),
       Kinds::number<double>("--gps-delay", "S",
                             "the GPS request leaves this long after its photo (default 0)", 0.0,
                             5.0, [](SimOptions& o) -> double& { return o.gps_request_delay_s; }),

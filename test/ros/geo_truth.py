@@ -57,6 +57,8 @@ def parse_truth(reply):
     i = words.index("boresight")
     out["boresight"] = (float(words[i + 1]), float(words[i + 2]))  # yaw cw from north, pitch up
     out["range"] = float(words[words.index("range") + 1])
+    out["zoom"] = float(words[words.index("zoom") + 1])  # the tele's hybrid zoom
+    out["hfov"] = float(words[words.index("hfov") + 1])  # its horizontal field of view, deg
     return out
 
 

@@ -3,7 +3,8 @@
 rviz/k40t.rviz on a virtual X display, the test presses the panel's buttons, drags its joystick,
 types into it and picks from its combo boxes (real Qt input events through the panel's test hook),
 and checks through the simulator's control socket that the pod itself changed: palette, image
-mode, zoom (slider and held buttons), gimbal (joystick, held keys, move to angles, centre), photo,
+mode, zoom (slider and held buttons), gimbal (joystick, held keys, move to angles, centre, look at
+the point clicked with rviz's Publish Point tool), photo,
 recording, laser. A refused call must show the driver's message in the panel, and a namespace with
 no driver behind it must leave rviz running with a message saying so.
 
@@ -18,7 +19,7 @@ import unittest
 import rospy
 import rostest
 
-from geometry_msgs.msg import Twist
+from geometry_msgs.msg import PointStamped, Twist
 
 from k40t_driver.srv import SetPalette
 from k40t_test_support import Recorder, SimControl, wait_until
@@ -160,6 +161,26 @@ class PanelTest(unittest.TestCase):
         self.assertPod("yaw", 0, 0.5)
         self.panel.do("click gimbal_look_down")
         self.assertPod("pitch", -90, 0.5)
+
+    def test_08a_look_at_clicked_point(self):
+        # rviz's Publish Point tool sends /clicked_point in the fixed frame; here the gimbal's
+        # base: 100 m ahead, 50 m right, 30 m below = yaw 26.57 deg right, pitch 15.02 deg down.
+        clicked = rospy.Publisher("/clicked_point", PointStamped, queue_size=1)
+        looks = Recorder(self.ns + "/gimbal/look_at_point", PointStamped)
+        self.panel.do("click gimbal_look_at_clicked")  # down
+        point = PointStamped()
+        point.header.frame_id = "k40t_base_link"
+        point.point.x, point.point.y, point.point.z = 100.0, -50.0, -30.0
+        self.assertTrue(wait_until(lambda: clicked.publish(point) or looks.count() > 0, WAIT, step=0.2),
+                        "the panel does not pass the clicked point on")
+        self.assertPod("yaw", 26.57, 0.1)
+        self.assertPod("pitch", -15.02, 0.1)
+        self.panel.do("click gimbal_look_at_clicked")  # up: the points stop
+        up = time.time()
+        time.sleep(1.0)
+        self.assertEqual(looks.messages(since=up + 0.3), [])
+        looks.close()
+        clicked.unregister()
 
     def test_09_record_photo_and_laser(self):
         self.panel.do("click record_start")  # refused in photo mode: the pod's message shows

@@ -15,6 +15,7 @@
 #include "k40t_driver/protocol/result.h"
 #include "k40t_driver/ros/command_input.h"
 #include "k40t_driver/ros/job_services.h"
+#include "k40t_driver/ros/look_at_server.h"
 #include "k40t_driver/ros/pod_actions.h"
 #include "k40t_driver/ros/pod_diagnostics.h"
 #include "k40t_driver/ros/pod_services.h"
@@ -51,7 +52,8 @@ class RosPod {
   std::unique_ptr<CommandInput> commands_;
   ros::Subscriber replay_;  // replay mode's input (raw/rx)
   std::unique_ptr<TargetLocator> locator_;
-  std::unique_ptr<PodActions> actions_;  // live mode; shut down before the driver stops
+  std::unique_ptr<PodActions> actions_;    // live mode; shut down before the driver stops
+  std::unique_ptr<LookAtServer> look_at_;  // live mode; the same
 };
 
 }  // namespace k40t::driver

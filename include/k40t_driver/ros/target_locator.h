@@ -39,6 +39,8 @@ class TargetLocator {
  public:
   TargetLocator(ros::NodeHandle nh, const ros::NodeHandle& private_nh, PodDriver& driver,
                 const RosPodConfig& config, PodDiagnostics& diagnostics);
+  // Its TF buffer, for gimbal/look_at (one listener per driver).
+  const tf2_ros::Buffer& tf() const { return tf_; }
 
  private:
   void on_range(double distance_m, StampNs stamp);

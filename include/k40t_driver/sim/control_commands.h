@@ -19,7 +19,11 @@
 //   photo-resolution CODE   the visible photo resolution held and reported (0x14..0x16)
 //   truth                   true positions now (sim/ground_truth.h): Unix time, pod (and its
 //                           metres north, east of the take-off point), velocity, heading, hot
-//                           object, laser spot (lat lon h_ellipsoid h_msl), range
+//                           object, laser spot (lat lon h_ellipsoid h_msl), range, the tele's
+//                           zoom and horizontal field of view (deg)
+//   fly NORTH EAST          the vehicle flies at this velocity (m/s) from where it is; 0 0 hovers
+//   orbit NORTH EAST SPEED  the vehicle circles the point (metres from the take-off point)
+//                           through where it is, at SPEED m/s (positive clockwise from above)
 //   hot-object NORTH EAST   move the hot object (metres from the take-off point)
 //   geotags                 per photo: geotag error against the truth, distance moved by the
 //                           time the answer arrived

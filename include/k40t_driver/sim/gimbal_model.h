@@ -1,7 +1,9 @@
 // The simulated gimbal (document section 3.1): joint angles that move toward what was commanded at
-// the dial speed, inside the mechanical limits (pitch +30/-90, yaw +-180, no wrap through the
-// back: the yaw joint has end stops), plus the servo, stabilisation, calibration and restart
-// states the status report shows. Pure model: no wire format, no wall clock; step(dt) advances it.
+// the dial speed, inside the mechanical limits (pitch +30/-90, yaw +-180, by default no wrap
+// through the back: the yaw joint has end stops; `yaw_continuous` (--gimbal-yaw-continuous)
+// makes it turn through +-180 instead, the short way to a commanded angle), plus the servo,
+// stabilisation, calibration and restart states the status report shows. Pure model: no wire
+// format, no wall clock; step(dt) advances it.
 //
 // Motion is at constant speed (no acceleration phase), so a move of A degrees at dial speed S
 // takes A / S seconds: what the document's "dial speed, corresponding to 1-30 degrees/second"
@@ -29,6 +31,8 @@ struct GimbalConfig {
   double pitch_max_deg = 30;
   double yaw_min_deg = -180;
   double yaw_max_deg = 180;
+  bool yaw_continuous =
+      false;  // no end stops: +-180 is one place, angles are reached the short way
   double min_dial_speed_deg_s = 1;
   double max_dial_speed_deg_s = 30;
   double default_dial_speed_deg_s = protocol::GimbalDialSpeedRequest::kDefaultDegS;
@@ -97,6 +101,7 @@ class GimbalModel {
     double min = 0;
     double max = 0;
     Drive drive = Drive::kHold;
+    bool wraps = false;           // a continuous joint: angles in (-180, 180], no end stops
     void aim(double where);       // clamps to the limits
     double advance(double dt_s);  // returns the rate
   };

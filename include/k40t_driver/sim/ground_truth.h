@@ -1,11 +1,11 @@
 // The simulated world on the Earth: where the take-off point is (WGS 84), how the vehicle
-// carrying the pod moves (a constant velocity from the take-off point, at the world's ground
-// height above it), and so the true geodetic position of the pod, of the world's objects and of
-// the laser spot at any model time. Also the geotag log: for each photo, the pod's true position
-// when it was taken and when the host's GPS answer (0x010310) arrived, and that answer, so the
-// geotag error is measured against the truth. And the flight data the host last sent in the
-// laser-target request 0x000320 (ground speed, climb rate...), so a test can compare it with what
-// it fed the driver.
+// carrying the pod moves (vehicle_motion.h: a constant velocity from the take-off point, or a
+// circle, at the world's ground height above it), and so the true geodetic position of the pod, of
+// the world's objects and of the laser spot at any model time. Also the geotag log: for each photo,
+// the pod's true position when it was taken and when the host's GPS answer (0x010310) arrived, and
+// that answer, so the geotag error is measured against the truth. And the flight data the host last
+// sent in the laser-target request 0x000320 (ground speed, climb rate...), so a test can compare it
+// with what it fed the driver.
 //
 // The world frame of world.h is the pod's (x north, y east, z up, pod at the origin); the truth
 // frame here is the local ENU frame of the take-off point on the ground (geo/geodesy.h), in the
@@ -19,6 +19,7 @@
 
 #include "k40t_driver/geo/geodesy.h"
 #include "k40t_driver/sim/geometry.h"
+#include "k40t_driver/sim/vehicle_motion.h"
 
 namespace k40t::sim {
 
@@ -26,7 +27,7 @@ struct VehicleConfig {
   double origin_latitude_deg = 47.3769;  // the take-off point, on the ground
   double origin_longitude_deg = 8.5417;
   double origin_ground_msl_m = 408.0;  // the ground's height above mean sea level
-  double velocity_north_m_s = 0;       // constant, from model time 0
+  double velocity_north_m_s = 0;       // constant, from model time 0 (until `fly` or `orbit`)
   double velocity_east_m_s = 0;
 };
 
@@ -60,7 +61,9 @@ class GroundTruth {
   const VehicleConfig& config() const { return config_; }
   // The pod's position in the truth frame at model time t, `height_m` above the ground.
   Vec3 pod_position(double t_s, double height_m) const;
-  Vec3 velocity() const { return {config_.velocity_north_m_s, config_.velocity_east_m_s, 0}; }
+  Vec3 velocity(double t_s) const { return motion_.velocity(t_s); }
+  // The vehicle's motion from now on (control commands `fly`, `orbit`).
+  VehicleMotion& motion() { return motion_; }
   // A point of the truth frame on the Earth; fails only without the geoid (proj-data).
   Result<TruePoint> to_earth(const Vec3& point) const;
   // The inverse, for an answer given in latitude, longitude and height above sea level.
@@ -80,6 +83,7 @@ class GroundTruth {
 
  private:
   VehicleConfig config_;
+  VehicleMotion motion_;
   std::optional<geo::LocalFrame> frame_;  // none without the geoid
   std::vector<GeotagRecord> geotags_;
   ReceivedFlightData received_;

@@ -90,6 +90,28 @@ TEST(YamlParams, BadValuesFailNamingTheParameter) {
   EXPECT_NE(short_list.error().find("laser_offset must be a list of 3 numbers"), std::string::npos);
 }
 
+TEST(YamlParams, LookAtParameters) {
+  Result<RosPodConfig> c = config_from(
+      "look_at_drive: rate\nlook_at_rate: 25\ngimbal_yaw_continuous: true\nlook_at_lead: 0.1\n"
+      "look_at_point_timeout: 2\n");
+  ASSERT_TRUE(c) << c.error();
+  EXPECT_EQ(c->look_at.control.drive, LookAtDrive::kRate);
+  EXPECT_DOUBLE_EQ(c->look_at.rate_hz, 25);
+  EXPECT_TRUE(c->look_at.control.limits.yaw_continuous);
+  EXPECT_DOUBLE_EQ(c->look_at.control.lead_s, 0.1);
+  EXPECT_DOUBLE_EQ(c->look_at.point_timeout_s, 2);
+  Result<RosPodConfig> defaults = config_from("device: serial:///dev/ttyUSB1\n");
+  ASSERT_TRUE(defaults) << defaults.error();
+  EXPECT_EQ(defaults->look_at.control.drive, LookAtDrive::kAngle);
+  EXPECT_FALSE(defaults->look_at.control.limits.yaw_continuous);
+  Result<RosPodConfig> bad = config_from("look_at_drive: fast\n");
+  ASSERT_FALSE(bad);
+  EXPECT_EQ(bad.error(), "parameter ~/look_at_drive must be angle or rate, got 'fast'");
+  Result<RosPodConfig> slow = config_from("look_at_rate: 5\n");
+  ASSERT_FALSE(slow);  // below the 10 Hz
+  EXPECT_NE(slow.error().find("look_at_rate must be 10..50"), std::string::npos) << slow.error();
+}
+
 // A conventions file as `k40t probe --out` writes it (docs/protocol/decisions.md#conventions): each
 // reading by its name; the diagnostic learns which ones were set.
 TEST(YamlParams, ConventionsAreReadByTheirNames) {
