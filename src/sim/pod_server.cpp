@@ -332,6 +332,7 @@ std::string PodServer::status() {
       out << "centre";
     }
     // What the pod is busy with: tests wait on these instead of on a 1 Hz status topic.
+    out << " focus-m " << pod.zoom().focus_distance_m() << " roll " << pose.joint_deg.roll;
     out << " shooting " << (pod.camera().shooting() ? "yes" : "no") << " zooming "
         << (pod.zoom().zooming() ? "yes" : "no") << " upgrading "
         << (pod.camera().upgrading() ? "yes" : "no");
