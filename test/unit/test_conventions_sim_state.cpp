@@ -115,7 +115,7 @@ TEST(ConventionsFocusPlus, TheOtherReadingGoesFarther) {
 // guard (fed the driver's frames, as ros/pod_services.cpp feeds it) decides under the driver's
 // reading. Returns the guard's verdict and, sent anyway, the pod's answer.
 struct StopOutcome {
-  Status guard;
+  Status guard = Status::ok();
   bool pod_stopped = false;  // the pod accepted the stop and its photo job ended
 };
 

@@ -99,7 +99,7 @@ TEST_F(SimCameraRequests, PhotoAndRecordingRefusalsCarryTheirCodes) {
   EXPECT_EQ(h.send(burst), ResponseCode::kOk);
   EXPECT_EQ(h.send(photo()), ResponseCode::kOk);
   EXPECT_EQ(h.send(photo()), ResponseCode::kPhotoInProgress);
-  EXPECT_EQ(h.send(record(p::RecordAction::kStart)), ResponseCode::kPhotoInProgress);
+  EXPECT_EQ(h.send(record(p::RecordAction::kStart)), ResponseCode::kTimeout);  // photo mode
   h.run(2.0);
   const auto photos = h.status_frames<p::PhotoStatus>();
   ASSERT_EQ(photos.size(), 6u);
