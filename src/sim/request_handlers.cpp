@@ -73,9 +73,15 @@ std::optional<protocol::Payload> answer_request(PodModel& pod, const protocol::C
   if (!entry) return std::nullopt;
   const bool gimbal_request = request.header.message_id <= 0x0000FF;
   if (!gimbal_request && !pod.camera_available()) return std::nullopt;  // nobody home to answer
-  if (ignored_in_capture_mode(pod, request.header.message_id)) return std::nullopt;
+  // The check of the mode comes after the model's: a request the mode ignores changes nothing in
+  // the model (it refuses it), and a payload too short is still a length mismatch.
+  const bool ignored = ignored_in_capture_mode(pod, request.header.message_id);
   RequestContext ctx{pod, codec};
-  return entry->handle(ctx, request);
+  protocol::Payload ack = entry->handle(ctx, request);
+  if (ignored && protocol::ack_response_code(ack.data(), ack.size, codec) !=
+                     protocol::ResponseCode::kLengthMismatch)
+    return std::nullopt;
+  return ack;
 }
 
 }  // namespace k40t::sim
