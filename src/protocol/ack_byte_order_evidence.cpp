@@ -61,7 +61,8 @@ void fit_ack_byte_order(MessageId ack_id, const uint8_t* payload, size_t size, A
   fold(ack_id, payload, 0, known_response_code, fit);
   for (const Int16Field& field : kRangedFields) {
     if (field.ack != ack_id || size < field.at + 2) continue;  // a code-only refusal
-    fold(ack_id, payload, field.at, [&](uint16_t raw) { return fits(field, raw); }, fit);
+    fold(
+        ack_id, payload, field.at, [&](uint16_t raw) { return fits(field, raw); }, fit);
   }
 }
 

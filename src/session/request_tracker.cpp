@@ -7,8 +7,8 @@
 
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/messages/ack.h"
-#include "k40t_driver/transport/thread_name.h"
 #include "k40t_driver/protocol/repeat_safety.h"
+#include "k40t_driver/transport/thread_name.h"
 
 namespace k40t::session {
 

@@ -4,12 +4,12 @@
 
 #include "code_mapping.h"
 #include "k40t_driver/protocol/convention_readings.h"
-#include "k40t_driver/sim/attitude_order.h"
 #include "k40t_driver/protocol/messages/camera.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/protocol/messages/laser.h"
 #include "k40t_driver/protocol/messages/thermal.h"
 #include "k40t_driver/protocol/messages/visible.h"
+#include "k40t_driver/sim/attitude_order.h"
 
 namespace k40t::sim {
 
@@ -60,9 +60,9 @@ Result<p::Payload> gimbal_attitude(const PodModel& pod, const p::CodecOptions& c
   report.joint_pitch_deg = pose.joint_deg.pitch;
   // The attitude in the Euler order the pod uses (attitude_order): the chain's own angles, or the
   // aerospace angles of the same rotation.
-  const YawPitchRoll attitude = attitude_in_order(
-      {pod.attitude_yaw_deg(), pose.joint_deg.pitch, pose.joint_deg.roll},
-      codec.conventions.attitude_order);
+  const YawPitchRoll attitude =
+      attitude_in_order({pod.attitude_yaw_deg(), pose.joint_deg.pitch, pose.joint_deg.roll},
+                        codec.conventions.attitude_order);
   report.yaw_deg = wrap_deg(attitude.yaw);
   report.roll_deg = attitude.roll;
   report.pitch_deg = attitude.pitch;

@@ -167,7 +167,8 @@ bool PodServer::hold_calibration_ack(const protocol::FrameView& request,
   const bool calibration = id == protocol::GimbalDriftCalibrationRequest::kId ||
                            id == protocol::GimbalLinearCalibrationRequest::kId ||
                            id == protocol::GimbalAccelerationCalibrationRequest::kId;
-  if (!calibration || options_.codec.conventions.calibration_end != protocol::CalibrationEnd::kAck ||
+  if (!calibration ||
+      options_.codec.conventions.calibration_end != protocol::CalibrationEnd::kAck ||
       protocol::ack_response_code(ack.data(), ack.size, options_.codec) !=
           protocol::ResponseCode::kOk)
     return false;

@@ -16,7 +16,8 @@ namespace {
 bool ignored_in_capture_mode(const PodModel& pod, protocol::MessageId id) {
   const CaptureMode mode = pod.camera().settings().capture_mode;
   if (id == protocol::RecordRequest::kId) return mode == CaptureMode::kPhoto;
-  const bool photo = id == protocol::TakePhotoRequest::kId || id == protocol::PreciseReshootRequest::kId;
+  const bool photo =
+      id == protocol::TakePhotoRequest::kId || id == protocol::PreciseReshootRequest::kId;
   return photo && mode == CaptureMode::kVideo;
 }
 

@@ -101,9 +101,9 @@ void ZoomModel::step(double dt_s, EventQueue& events) {
   if (focus_left_s_ > 0) focus_left_s_ = std::max(0.0, focus_left_s_ - dt_s);
   if (manual_focus_) {
     const double factor = std::exp2(dt_s / config_.manual_focus_halving_s);
-    focus_distance_m_ = std::clamp(manual_nearer_ ? focus_distance_m_ / factor
-                                                  : focus_distance_m_ * factor,
-                                   config_.min_focus_m, config_.max_focus_m);
+    focus_distance_m_ =
+        std::clamp(manual_nearer_ ? focus_distance_m_ / factor : focus_distance_m_ * factor,
+                   config_.min_focus_m, config_.max_focus_m);
   }
   if (!moving_) return;
   if (announce_start_) {

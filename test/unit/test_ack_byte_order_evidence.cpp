@@ -60,7 +60,8 @@ void read_thermal_settings(ConventionsRig& rig) {
 }
 
 TEST(AckByteOrderEvidence, ADriverReadingBigAgainstALittleEndianPodIsNamed) {
-  ConventionsRig rig({}, {}, [](sim::SimOptions& o) { o.codec.ack_byte_order = p::ByteOrder::kLittle; });
+  ConventionsRig rig({}, {},
+                     [](sim::SimOptions& o) { o.codec.ack_byte_order = p::ByteOrder::kLittle; });
   read_thermal_settings(rig);
   ASSERT_TRUE(rig.contradicts("ack_byte_order"));
   const std::string why = rig.reading("ack_byte_order").contradiction;

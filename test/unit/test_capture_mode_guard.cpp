@@ -91,9 +91,9 @@ TEST(CaptureModeGuard, AStopInPhotoMode2FollowsTheReading) {
 TEST(CaptureModeGuard, AgainstTheSilentPodTheUserGetsTheReason) {
   sim::testing::SimLink link;
   const p::CodecOptions codec;
-  ASSERT_EQ(link.send(k40t::testing::request_with(&p::CaptureModeRequest::mode,
-                                                  p::CaptureMode::kVideo)),
-            p::ResponseCode::kOk);
+  ASSERT_EQ(
+      link.send(k40t::testing::request_with(&p::CaptureModeRequest::mode, p::CaptureMode::kVideo)),
+      p::ResponseCode::kOk);
   const auto video = link.wait_report<p::CameraSystemStatus>(
       [](const p::CameraSystemStatus& s) { return s.capture_mode == p::CaptureMode::kVideo; });
   ASSERT_TRUE(video);

@@ -119,8 +119,8 @@ TEST(ConventionsCalibration, TheGoalEndsWithin2SOfThePodsEndUnderEachReading) {
     // the pod's end is now.
     const Clock::time_point end = pod_end.value_or(goal_end);
     const double apart_s = std::chrono::duration<double>(goal_end - end).count();
-    EXPECT_LT(std::abs(apart_s), 2.0) << reading << ": the goal ended " << apart_s
-                                      << " s after the pod's calibration";
+    EXPECT_LT(std::abs(apart_s), 2.0)
+        << reading << ": the goal ended " << apart_s << " s after the pod's calibration";
     if (!pod_end) {
       bool calibrating = true;
       rig.rig.pod().with_model([&](sim::PodModel& m) { calibrating = m.gimbal().calibrating(); });

@@ -1,7 +1,8 @@
-// Three readings the simulator plays with state of its own (docs/protocol/decisions.md#conventions):
-// attitude_order (the gimbal holds a roll, so the attitude's Euler order shows), focus_plus (a
-// focus distance that manual focus moves) and photo_mode_2 (a self-timer or a time-lapse). The
-// driver core loaded with the pod's reading gives the truth; loaded with the other it does not.
+// Three readings the simulator plays with state of its own
+// (docs/protocol/decisions.md#conventions): attitude_order (the gimbal holds a roll, so the
+// attitude's Euler order shows), focus_plus (a focus distance that manual focus moves) and
+// photo_mode_2 (a self-timer or a time-lapse). The driver core loaded with the pod's reading gives
+// the truth; loaded with the other it does not.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -37,8 +38,8 @@ Quaternion published(const p::GimbalAttitude& a, p::AttitudeOrder order) {
 
 // Right 30, down 45, with the roll joint at 10 deg: 7.6 deg between the two readings.
 struct AttitudeCase {
-  double driver_error_deg = 0;   // the driver's attitude against the truth
-  double order_spread_deg = 0;   // the truth's angles composed in the other order
+  double driver_error_deg = 0;  // the driver's attitude against the truth
+  double order_spread_deg = 0;  // the truth's angles composed in the other order
 };
 
 AttitudeCase attitude_against_truth(const std::string& pod, const std::string& driver) {
@@ -59,14 +60,16 @@ AttitudeCase attitude_against_truth(const std::string& pod, const std::string& d
     chain.yaw = m.attitude_yaw_deg();
   });
   EXPECT_DOUBLE_EQ(chain.roll, 10);
-  const Quaternion truth =
-      attitude_rotation(rep103_from_pod(chain.yaw, chain.roll, chain.pitch), p::AttitudeOrder::kZxy);
+  const Quaternion truth = attitude_rotation(rep103_from_pod(chain.yaw, chain.roll, chain.pitch),
+                                             p::AttitudeOrder::kZxy);
   const p::GimbalAttitude a = *rig.attitude();
   AttitudeCase out;
-  out.driver_error_deg = degrees_between(published(a, rig.driver().codec().conventions.attitude_order), truth);
-  out.order_spread_deg = degrees_between(
-      attitude_rotation(rep103_from_pod(chain.yaw, chain.roll, chain.pitch), p::AttitudeOrder::kZyx),
-      truth);
+  out.driver_error_deg =
+      degrees_between(published(a, rig.driver().codec().conventions.attitude_order), truth);
+  out.order_spread_deg =
+      degrees_between(attitude_rotation(rep103_from_pod(chain.yaw, chain.roll, chain.pitch),
+                                        p::AttitudeOrder::kZyx),
+                      truth);
   return out;
 }
 
@@ -121,12 +124,11 @@ struct StopOutcome {
 
 StopOutcome stop_in_photo_mode_2(const std::string& pod, const std::string& driver) {
   auto guard = std::make_shared<operations::CaptureModeGuard>();
-  ConventionsRig rig({"photo_mode_2=" + pod}, {"photo_mode_2=" + driver}, {},
-                     [guard](PodDriver& d) {
-                       d.on_rx_frame([guard, &d](const p::FrameView& f, StampNs) {
-                         guard->frame_received(f, d.codec());
-                       });
-                     });
+  ConventionsRig rig(
+      {"photo_mode_2=" + pod}, {"photo_mode_2=" + driver}, {}, [guard](PodDriver& d) {
+        d.on_rx_frame(
+            [guard, &d](const p::FrameView& f, StampNs) { guard->frame_received(f, d.codec()); });
+      });
   p::PhotoSettingsRequest mode2;
   mode2.photo_mode = p::PhotoMode::kTimeLapse;
   mode2.time_lapse_interval_s = 5;
@@ -141,11 +143,12 @@ StopOutcome stop_in_photo_mode_2(const std::string& pod, const std::string& driv
   p::TakePhotoRequest stop;
   stop.action = p::PhotoAction::kStop;
   const bool accepted = rig.driver().request(stop).ok();
-  out.pod_stopped = accepted && eventually([&] {
-    bool shooting = true;
-    rig.pod().with_model([&](sim::PodModel& m) { shooting = m.camera().shooting(); });
-    return !shooting;
-  });
+  out.pod_stopped =
+      accepted && eventually([&] {
+        bool shooting = true;
+        rig.pod().with_model([&](sim::PodModel& m) { shooting = m.camera().shooting(); });
+        return !shooting;
+      });
   return out;
 }
 
