@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <utility>
 
+#include "k40t_driver/protocol/ack_byte_order_evidence.h"
+
 namespace k40t::driver {
 
 namespace p = protocol;
@@ -228,6 +230,22 @@ void ConventionTracker::calibration_evidence(p::CalibrationEnd seen, const std::
   }
 }
 
+void ConventionTracker::observe_ack(p::MessageId ack_id, const uint8_t* payload, size_t size) {
+  p::AckOrderFit fit;
+  p::fit_ack_byte_order(ack_id, payload, size, fit);
+  if (!fit.tells()) return;
+  const p::ByteOrder seen = fit.big ? p::ByteOrder::kBig : p::ByteOrder::kLittle;
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (seen != codec_.ack_byte_order) {
+    contradict("ack_byte_order", fit.evidence + " reads sensibly " + p::to_string(seen) +
+                                     "-endian only: set ack_byte_order: " + p::to_string(seen));
+    return;
+  }
+  for (const auto& c : confirmed_)
+    if (c.first == "ack_byte_order") return;
+  confirmed_.emplace_back("ack_byte_order", fit.evidence);
+}
+
 void ConventionTracker::observe_crc_coverage(p::CrcCoverage locked) {
   if (locked == p::CrcCoverage::kAuto) return;
   std::lock_guard<std::mutex> lock(mutex_);
@@ -269,6 +287,8 @@ std::vector<ConventionStatus> ConventionTracker::report() const {
     s.source = from_parameters_.count(s.name) ? "parameter" : "default";
     for (const auto& d : detected_)
       if (d.first == s.name) s.source = "detected from " + d.second;
+    for (const auto& c : confirmed_)
+      if (c.first == s.name) s.source += ", confirmed by " + c.second;
     for (const auto& c : contradictions_)
       if (c.first == s.name) s.contradiction = c.second;
     out.push_back(std::move(s));

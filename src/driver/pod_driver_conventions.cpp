@@ -1,6 +1,7 @@
 // The PodDriver's part in the open readings (docs/protocol/decisions.md#conventions): what it
 // shows the ConventionTracker of the frames it sends and receives.
 #include "k40t_driver/driver/pod_driver.h"
+#include "k40t_driver/protocol/message_id.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/gimbal.h"
 
@@ -20,6 +21,8 @@ void PodDriver::observe_sent(const FrameView& frame) {
 
 void PodDriver::observe_received(const FrameView& frame) {
   const protocol::MessageId id = frame.header.message_id;
+  if (protocol::kind_of(id) == protocol::MessageKind::kAck)
+    conventions_.observe_ack(id, frame.payload, frame.payload_size);
   const bool calibration_ack =
       id == protocol::ack_id_of(protocol::GimbalDriftCalibrationRequest::kId) ||
       id == protocol::ack_id_of(protocol::GimbalLinearCalibrationRequest::kId) ||

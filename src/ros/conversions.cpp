@@ -231,7 +231,8 @@ sensor_msgs::Range to_range(double distance_m, const ros::Time& stamp, const Fra
 
 sensor_msgs::NavSatFix to_nav_sat_fix(const protocol::TargetGpsAck& target, const ros::Time& stamp,
                                       const FrameIds& ids,
-                                      const boost::array<double, 9>& covariance) {
+                                      const boost::array<double, 9>& covariance,
+                                      protocol::LaserTargetZeros zeros) {
   sensor_msgs::NavSatFix fix;
   fix.header = header(stamp, ids.laser);
   fix.status.status = target.code == protocol::ResponseCode::kOk
@@ -240,11 +241,17 @@ sensor_msgs::NavSatFix to_nav_sat_fix(const protocol::TargetGpsAck& target, cons
   fix.status.service = sensor_msgs::NavSatStatus::SERVICE_GPS;
   fix.latitude = target.latitude_deg;
   fix.longitude = target.longitude_deg;
+  fix.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN;
+  // No return is no place: no fix, and no height (not the geoid's 17 m at 0 deg, 0 deg).
+  if (protocol::laser_target_no_return(target, zeros)) {
+    fix.status.status = sensor_msgs::NavSatStatus::STATUS_NO_FIX;
+    fix.altitude = std::numeric_limits<double>::quiet_NaN();
+    return fix;
+  }
   // The pod's altitude is above sea level; NavSatFix's is above the ellipsoid (NaN: unknown).
   const Result<double> ellipsoid = geo::Geoid::egm96().ellipsoid_from_msl(
       target.latitude_deg, target.longitude_deg, target.altitude_m);
   fix.altitude = ellipsoid ? ellipsoid.value() : std::numeric_limits<double>::quiet_NaN();
-  fix.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN;
   if (covariance[0] < 0 || covariance[4] < 0 || covariance[8] < 0) return fix;
   fix.position_covariance = covariance;
   fix.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_APPROXIMATED;

@@ -144,8 +144,14 @@ void PodActions::create_camera_actions(ros::NodeHandle& nh) {
     g.args.folder = goal.folder;
     g.args.name = goal.name;
     g.timeout_s = goal.timeout;
-    std::lock_guard<std::mutex> lock(visible_mutex_);
-    return ops::PreciseReshoot::create(g, latest_visible_, now_s);
+    Result<ops::PreciseReshoot> created = [&] {
+      std::lock_guard<std::mutex> lock(visible_mutex_);
+      return ops::PreciseReshoot::create(g, latest_visible_, now_s);
+    }();
+    // The goal's own errors first; then the mode, which would leave the pod silent.
+    if (!created) return created;
+    const Status allowed = capture_mode_.allows(p::CaptureMode::kPhoto, "precise re-shoots");
+    return allowed ? std::move(created) : Result<ops::PreciseReshoot>::fail(allowed.message());
   };
   reshoot.send = sends_its_request();
   reshoot_ = std::make_unique<ReshootServer>(nh, "precise_reshoot", std::move(reshoot));
@@ -165,6 +171,12 @@ void PodActions::create_maintenance_actions(ros::NodeHandle& nh) {
 }
 
 void PodActions::subscribe_status() {
+  driver_.on_tx_frame([this](const p::FrameView& frame, StampNs) {
+    capture_mode_.frame_sent(frame, driver_.codec());
+  });
+  driver_.on_rx_frame([this](const p::FrameView& frame, StampNs) {
+    capture_mode_.frame_received(frame, driver_.codec());
+  });
   driver_.on<p::GimbalAttitude>([this](const p::GimbalAttitude& m, StampNs) {
     move_->feed([&](ops::GimbalMove& op) { op.on_attitude(m); });
   });

@@ -151,6 +151,10 @@ void PodServices::advertise_camera() {
       [this](const p::FrameView& frame, StampNs) { mode_.frame_received(frame, driver_.codec()); });
   serve<k40t_driver::TakePhoto>("take_photo", [this](auto& req, auto& res) {
     const p::PhotoAction action = req.stop ? p::PhotoAction::kStop : p::PhotoAction::kStart;
+    if (req.stop) {
+      const Status stop = mode_.allows_stop(driver_.codec().conventions.photo_mode_2);
+      if (!stop) return fail(res, stop.message());
+    }
     fill(res, in_mode(p::CaptureMode::kPhoto, "photo requests",
                       file_capture<p::TakePhotoRequest>(req, action)));
   });
@@ -182,7 +186,10 @@ AckResult PodServices::in_mode(p::CaptureMode mode, const char* what, const Req&
     return AckResult::not_sent(std::string(Req::kName) + ": " + valid.message());
   if (const Status allowed = mode_.allows(mode, what); !allowed)
     return AckResult::not_sent(allowed.message());
-  return driver_.request(request);
+  AckResult result = driver_.request(request);
+  if (result.sent && !result.received)
+    result.message = operations::CaptureModeGuard::unanswered(mode, what, result.message);
+  return result;
 }
 
 void PodServices::advertise_gimbal() {

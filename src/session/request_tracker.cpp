@@ -7,8 +7,8 @@
 
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/messages/ack.h"
-#include "k40t_driver/transport/thread_name.h"
 #include "k40t_driver/protocol/repeat_safety.h"
+#include "k40t_driver/transport/thread_name.h"
 
 namespace k40t::session {
 
@@ -22,9 +22,14 @@ std::string code_hex(uint16_t code) {
 
 }  // namespace
 
+std::chrono::milliseconds RequestTracker::once_wait(protocol::MessageId id) const {
+  return std::max<std::chrono::milliseconds>(ack_timeout_ * max_attempts_,
+                                             protocol::done_ack_wait(id, codec_.conventions));
+}
+
 std::string RequestTracker::not_repeated_message(protocol::MessageId id) const {
   return "no ACK for " + protocol::display_name(id) + " within " +
-         std::to_string((ack_timeout_ * max_attempts_).count()) +
+         std::to_string(once_wait(id).count()) +
          " ms; not sent again, since a repeat would repeat the action: the pod may have done it "
          "(see its status reports)";
 }
@@ -221,7 +226,8 @@ void RequestTracker::after_attempt(const Attempt& attempt, Clock::time_point now
   if (slot.state == SlotState::kSending) {
     slot.state = SlotState::kWaiting;
     // Sent once: as long as every attempt of a repeatable request would have waited.
-    slot.deadline = now + (pending.once ? ack_timeout_ * max_attempts_ : ack_timeout_);
+    // (or as long as the action may take, for a pod that answers when done).
+    slot.deadline = now + (pending.once ? once_wait(pending.id) : ack_timeout_);
   }
 }
 

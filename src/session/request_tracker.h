@@ -1,7 +1,8 @@
 // The request side of a session (docs/protocol/decisions.md#a5): one outstanding request per
 // message id, the others for that id queued behind it; ACKs matched by id; timeouts and retries;
 // AckResult messages. A request whose repeat would repeat an action (protocol/repeat_safety.h) is
-// written once and waited for as long as all the attempts would take. It owns the thread that
+// written once and waited for as long as all the attempts would take (longer for a pod that
+// answers only once the action is done: protocol::done_ack_wait()). It owns the thread that
 // writes attempts, watches deadlines and runs completion callbacks, so neither the transport's I/O
 // thread nor a caller's thread ever waits on the link.
 #pragma once
@@ -101,6 +102,8 @@ class RequestTracker {
   void complete_with_ack(Slot& slot);
   void fail_everything();
   std::string not_repeated_message(protocol::MessageId id) const;
+  // How long a request sent once waits for its ACK.
+  std::chrono::milliseconds once_wait(protocol::MessageId id) const;
 
   const SendAttempt send_;
   const std::chrono::milliseconds ack_timeout_;

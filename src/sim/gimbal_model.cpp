@@ -232,7 +232,7 @@ void GimbalModel::step(double dt_s, EventQueue& events) {
   pose_.rate_deg_s.yaw = driven ? yaw_.advance(dt_s) : 0.0;
   pose_.rate_deg_s.pitch = driven ? pitch_.advance(dt_s) : 0.0;
   pose_.rate_deg_s.roll = 0;
-  pose_.joint_deg = {yaw_.angle, pitch_.angle, 0};
+  pose_.joint_deg = {yaw_.angle, pitch_.angle, config_.roll_deg};
 }
 
 }  // namespace k40t::sim

@@ -5,6 +5,7 @@
 
 #include "code_mapping.h"
 #include "handler_support.h"
+#include "k40t_driver/protocol/convention_readings.h"
 #include "k40t_driver/protocol/messages/camera.h"
 
 namespace k40t::sim {
@@ -102,6 +103,28 @@ ContinuousZoom zoom_command(p::ZoomCommand command) {
   return same_code<ContinuousZoom>(command);
 }
 
+// 0x000313: codes 1 "+" and 2 "-" of manual focus go nearer or farther as the pod's reading says
+// (focus_plus, docs/protocol/decisions.md#conventions).
+HandlerEntry focus_entry() {
+  return {p::FocusRequest::kId, [](RequestContext& ctx, const p::FrameView& frame) {
+            const Decoded<p::FocusRequest> d = decode<p::FocusRequest>(frame, ctx.codec);
+            if (!d.request) return code_ack(d.refusal, ctx.codec);
+            const p::FocusRequest& req = *d.request;
+            FocusArea area;
+            area.left = req.area_left_px;
+            area.top = req.area_top_px;
+            area.right = req.area_right_px;
+            area.bottom = req.area_bottom_px;
+            FocusCommand command = same_code<FocusCommand>(req.command);
+            if (command == FocusCommand::kManualNear || command == FocusCommand::kManualFar) {
+              const bool nearer =
+                  p::manual_focus_is_nearer(req.command, ctx.codec.conventions.focus_plus);
+              command = nearer ? FocusCommand::kManualNear : FocusCommand::kManualFar;
+            }
+            return outcome_ack(ctx.pod.zoom().focus(command, area), ctx.codec);
+          }};
+}
+
 }  // namespace
 
 void add_camera_handlers(std::vector<HandlerEntry>& out) {
@@ -149,14 +172,7 @@ void add_camera_handlers(std::vector<HandlerEntry>& out) {
       [](PodModel& pod, const p::FactoryResetRequest&) { return pod.factory_reset(); }));
   out.push_back(plain<p::SetIpRequest>(set_ip));
   out.push_back(with_data<p::GetIpRequest>(get_ip));
-  out.push_back(plain<p::FocusRequest>([](PodModel& pod, const p::FocusRequest& req) {
-    FocusArea area;
-    area.left = req.area_left_px;
-    area.top = req.area_top_px;
-    area.right = req.area_right_px;
-    area.bottom = req.area_bottom_px;
-    return pod.zoom().focus(same_code<FocusCommand>(req.command), area);
-  }));
+  out.push_back(focus_entry());
   out.push_back(store<p::OsdWatermarkRequest>([](PodModel& pod, const p::OsdWatermarkRequest& req) {
     pod.camera().settings().watermark = req.enabled;
   }));

@@ -9,6 +9,7 @@
 #include "k40t_driver/protocol/messages/laser.h"
 #include "k40t_driver/protocol/messages/thermal.h"
 #include "k40t_driver/protocol/messages/visible.h"
+#include "k40t_driver/sim/attitude_order.h"
 
 namespace k40t::sim {
 
@@ -57,9 +58,14 @@ Result<p::Payload> gimbal_attitude(const PodModel& pod, const p::CodecOptions& c
   report.joint_yaw_deg = pose.joint_deg.yaw;
   report.joint_roll_deg = pose.joint_deg.roll;
   report.joint_pitch_deg = pose.joint_deg.pitch;
-  report.yaw_deg = pod.attitude_yaw_deg();
-  report.roll_deg = pose.joint_deg.roll;
-  report.pitch_deg = pose.joint_deg.pitch;
+  // The attitude in the Euler order the pod uses (attitude_order): the chain's own angles, or the
+  // aerospace angles of the same rotation.
+  const YawPitchRoll attitude =
+      attitude_in_order({pod.attitude_yaw_deg(), pose.joint_deg.pitch, pose.joint_deg.roll},
+                        codec.conventions.attitude_order);
+  report.yaw_deg = wrap_deg(attitude.yaw);
+  report.roll_deg = attitude.roll;
+  report.pitch_deg = attitude.pitch;
   report.yaw_rate_deg_s = pose.rate_deg_s.yaw;
   report.pitch_rate_deg_s = pose.rate_deg_s.pitch;
   report.roll_rate_deg_s = pose.rate_deg_s.roll;

@@ -7,6 +7,7 @@
 #include "k40t_driver/protocol/convention_readings.h"
 #include "k40t_driver/protocol/messages/ack.h"
 #include "k40t_driver/protocol/messages/flight_controller.h"
+#include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/sim/request_handlers.h"
 
 namespace k40t::sim {
@@ -148,6 +149,7 @@ std::optional<protocol::Payload> PodServer::on_request(const protocol::FrameView
     ack = answer_request(pod_, options_.codec, request);
   }
   if (!ack) return std::nullopt;
+  if (hold_calibration_ack(request, *ack)) return std::nullopt;
   // The pod did what was asked; only its answer is lost or late.
   if (faults_.drop_ack()) return std::nullopt;
   const std::chrono::milliseconds delay = faults_.ack_delay();
@@ -159,11 +161,46 @@ std::optional<protocol::Payload> PodServer::on_request(const protocol::FrameView
   return ack;
 }
 
+bool PodServer::hold_calibration_ack(const protocol::FrameView& request,
+                                     const protocol::Payload& ack) {
+  const protocol::MessageId id = request.header.message_id;
+  const bool calibration = id == protocol::GimbalDriftCalibrationRequest::kId ||
+                           id == protocol::GimbalLinearCalibrationRequest::kId ||
+                           id == protocol::GimbalAccelerationCalibrationRequest::kId;
+  if (!calibration ||
+      options_.codec.conventions.calibration_end != protocol::CalibrationEnd::kAck ||
+      protocol::ack_response_code(ack.data(), ack.size, options_.codec) !=
+          protocol::ResponseCode::kOk)
+    return false;
+  std::lock_guard<std::mutex> lock(delayed_mutex_);
+  calibration_ack_ = DelayedAck{SteadyClock::now(), request.header, ack};
+  return true;
+}
+
+void PodServer::release_calibration_ack(bool succeeded) {
+  std::lock_guard<std::mutex> lock(delayed_mutex_);
+  if (!calibration_ack_) return;
+  DelayedAck ack = *calibration_ack_;
+  calibration_ack_.reset();
+  if (!succeeded) {
+    protocol::PlainAck failed;
+    failed.code = protocol::ResponseCode::kFailure;
+    Result<protocol::Payload> encoded = protocol::encode_payload(failed, options_.codec);
+    if (encoded) ack.payload = encoded.value();
+  }
+  ack.due = SteadyClock::now();
+  delayed_.push_front(ack);
+}
+
 void PodServer::advance_model(double dt_s, std::vector<Outgoing>& out,
                               std::vector<GpsRequestEvent>& gps) {
   std::lock_guard<std::mutex> lock(model_mutex_);
   pod_.step(dt_s);
   for (const PodEvent& event : pod_.take_events()) {
+    const auto* maintenance = std::get_if<MaintenanceEvent>(&event);
+    if (maintenance && maintenance->calibration &&
+        maintenance->state != MaintenanceState::kRepairing)
+      release_calibration_ack(maintenance->state == MaintenanceState::kSucceeded);
     if (const auto* request = std::get_if<GpsRequestEvent>(&event)) {
       pod_.ground_truth().photo_taken(request->photo_id, pod_.pod_position());
       gps.push_back(*request);
@@ -332,6 +369,7 @@ std::string PodServer::status() {
       out << "centre";
     }
     // What the pod is busy with: tests wait on these instead of on a 1 Hz status topic.
+    out << " focus-m " << pod.zoom().focus_distance_m() << " roll " << pose.joint_deg.roll;
     out << " shooting " << (pod.camera().shooting() ? "yes" : "no") << " zooming "
         << (pod.zoom().zooming() ? "yes" : "no") << " upgrading "
         << (pod.camera().upgrading() ? "yes" : "no");

@@ -70,6 +70,11 @@ const std::vector<OptionSpec>& option_table() {
          const Status set = protocol::set_convention_assignment({o.crc_coverage, o.codec}, v);
          return set ? set : Status::fail(option + ": " + set.message());
        }},
+      Kinds::number<double>(
+          "--gimbal-roll", "DEG",
+          "the roll joint holds this angle, right-down positive (default 0; the attitude "
+          "report's Euler order shows only with a roll)",
+          -45.0, 45.0, [](SimOptions& o) -> double& { return o.pod.gimbal.roll_deg; }),
       Kinds::number<double>("--ground-height", "M",
                             "flat ground this far below the pod (default 30 m)", 1.0, 10000.0,
                             [](SimOptions& o) -> double& { return o.pod.world.ground_height_m; }),

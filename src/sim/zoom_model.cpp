@@ -8,7 +8,10 @@
 namespace k40t::sim {
 
 ZoomModel::ZoomModel(const ZoomConfig& config)
-    : config_(config), zoom_(config.min_zoom), target_(config.min_zoom) {}
+    : config_(config),
+      zoom_(config.min_zoom),
+      target_(config.min_zoom),
+      focus_distance_m_(config.scene_distance_m) {}
 
 void ZoomModel::reset() {
   zoom_ = target_ = config_.min_zoom;
@@ -16,6 +19,7 @@ void ZoomModel::reset() {
   focus_left_s_ = 0;
   auto_focus_after_zoom_ = true;
   focus_area_.reset();
+  focus_distance_m_ = config_.scene_distance_m;
 }
 
 void ZoomModel::start(double target) {
@@ -62,6 +66,7 @@ Outcome ZoomModel::focus(FocusCommand command, const FocusArea& area) {
     manual_focus_ = false;
     focus_left_s_ = config_.focus_time_s;
     focus_area_ = on;
+    focus_distance_m_ = config_.scene_distance_m;
   };
   switch (command) {
     case FocusCommand::kArea:
@@ -78,6 +83,7 @@ Outcome ZoomModel::focus(FocusCommand command, const FocusArea& area) {
     case FocusCommand::kManualFar:
     case FocusCommand::kStopManual:
       manual_focus_ = command != FocusCommand::kStopManual;
+      manual_nearer_ = command == FocusCommand::kManualNear;
       break;
     case FocusCommand::kAutoAfterZoomOn:
     case FocusCommand::kAutoAfterZoomOff:
@@ -93,6 +99,12 @@ double ZoomModel::focal_length_mm() const {
 
 void ZoomModel::step(double dt_s, EventQueue& events) {
   if (focus_left_s_ > 0) focus_left_s_ = std::max(0.0, focus_left_s_ - dt_s);
+  if (manual_focus_) {
+    const double factor = std::exp2(dt_s / config_.manual_focus_halving_s);
+    focus_distance_m_ =
+        std::clamp(manual_nearer_ ? focus_distance_m_ / factor : focus_distance_m_ * factor,
+                   config_.min_focus_m, config_.max_focus_m);
+  }
   if (!moving_) return;
   if (announce_start_) {
     events.push_back(ZoomStatusEvent{true});
@@ -104,7 +116,10 @@ void ZoomModel::step(double dt_s, EventQueue& events) {
   if (zoom_ == target_) {
     moving_ = false;
     events.push_back(ZoomStatusEvent{false});
-    if (auto_focus_after_zoom_) focus_left_s_ = config_.focus_time_s;
+    if (auto_focus_after_zoom_) {
+      focus_left_s_ = config_.focus_time_s;
+      focus_distance_m_ = config_.scene_distance_m;
+    }
     return;
   }
   since_status_s_ += dt_s;

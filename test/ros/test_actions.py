@@ -15,6 +15,7 @@ import rosgraph
 import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus, GoalStatusArray
+from dynamic_reconfigure.client import Client as ReconfigureClient
 
 from k40t_driver.msg import (Frame, FormatSdAction, FormatSdGoal, GimbalCalibrateAction, GimbalCalibrateGoal,
                              GimbalMoveToAction, GimbalMoveToGoal, PreciseReshootAction, PreciseReshootGoal,
@@ -306,6 +307,17 @@ class Actions(unittest.TestCase):
                                             "focal_length_mm")
         self.assert_refused_without_sending("precise_reshoot", PreciseReshootGoal(resolution=RES_4000x3000, name="n" * 33),
                                             "name")
+
+    def test_precise_reshoot_in_video_mode_is_refused_with_the_reason(self):
+        # A precise re-shoot is a photo request: in video mode the pod does not answer it (section
+        # 3.2.4.1), so the goal is refused at once, naming the mode, with nothing sent.
+        reconfigure = ReconfigureClient(name("driver"), timeout=10.0)
+        self.assertEqual(reconfigure.update_configuration({"camera_mode": 1})["camera_mode"], 1)
+        try:
+            self.assert_refused_without_sending("precise_reshoot", PreciseReshootGoal(resolution=RES_4000x3000),
+                                                "video mode")
+        finally:
+            reconfigure.update_configuration({"camera_mode": 0})
 
     # --- tf_upgrade ------------------------------------------------------------------------
     def test_tf_upgrade_times_out_cancels_and_succeeds(self):

@@ -3,6 +3,9 @@
 // simulator that reports calibrations in 0x000008 (status) or ends them with the ACK (ack).
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cmath>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -29,7 +32,8 @@ class CalibrationGoal {
     });
   }
   // Runs one drift calibration with the driver's calibration_end; returns how it ended.
-  operations::OperationTracker run(PodDriver& driver) {
+  // `poll` runs at every look at the goal (every few ms) until it ends.
+  operations::OperationTracker run(PodDriver& driver, const std::function<void()>& poll = {}) {
     Result<GimbalCalibration> created =
         GimbalCalibration::create(0, 0, ConventionTracker::steady_now_s(),
                                   driver.conventions().conventions().calibration_end);
@@ -43,6 +47,7 @@ class CalibrationGoal {
       op_->tracker().acknowledged(a.ok(), a.message);
     });
     EXPECT_TRUE(test::eventually([&] {
+      if (poll) poll();
       std::lock_guard<std::mutex> lock(mutex_);
       return op_->tracker().check(ConventionTracker::steady_now_s()) != Phase::kRunning;
     }));
@@ -58,7 +63,9 @@ class CalibrationGoal {
 struct CalibrationRig {
   CalibrationRig(const std::vector<std::string>& pod, const std::vector<std::string>& driver)
       : rig(pod, driver, {}, [this](PodDriver& d) { goal.attach(d); }) {}
-  operations::OperationTracker calibrate() { return goal.run(rig.driver()); }
+  operations::OperationTracker calibrate(const std::function<void()>& poll = {}) {
+    return goal.run(rig.driver(), poll);
+  }
   CalibrationGoal goal;  // before rig: the driver's handler uses it
   ConventionsRig rig;
 };
@@ -87,6 +94,39 @@ TEST(ConventionsCalibration, AutoFollows0x000008WhenThePodSendsIt) {
   EXPECT_EQ(done.phase(), Phase::kSucceeded) << done.reason();
   EXPECT_GT(done.reports(), 1);  // "repairing" frames, then "succeeded" ended it
   EXPECT_EQ(done.reason(), "gimbal drift calibration: done");
+}
+
+// Issue 21's "Done when": the driver with the pod's reading (what `k40t probe --calibration`
+// writes) ends the goal within 2 s of the end of the calibration in the simulated pod (its model:
+// the truth). A pod whose calibrations end with their ACK sends that ACK when it is done.
+TEST(ConventionsCalibration, TheGoalEndsWithin2SOfThePodsEndUnderEachReading) {
+  using Clock = std::chrono::steady_clock;
+  for (const char* reading : {"ack", "status"}) {
+    const std::string c = std::string("calibration_end=") + reading;
+    CalibrationRig rig({c}, {c});
+    std::optional<Clock::time_point> pod_end;
+    bool pod_started = false;
+    const operations::OperationTracker done = rig.calibrate([&] {
+      bool calibrating = false;
+      rig.rig.pod().with_model([&](sim::PodModel& m) { calibrating = m.gimbal().calibrating(); });
+      pod_started = pod_started || calibrating;
+      if (pod_started && !calibrating && !pod_end) pod_end = Clock::now();
+    });
+    const Clock::time_point goal_end = Clock::now();
+    EXPECT_EQ(done.phase(), Phase::kSucceeded) << reading << ": " << done.reason();
+    ASSERT_TRUE(pod_started) << reading;
+    // The goal may end before the poll sees the pod's end (the ACK left in the same step): then
+    // the pod's end is now.
+    const Clock::time_point end = pod_end.value_or(goal_end);
+    const double apart_s = std::chrono::duration<double>(goal_end - end).count();
+    EXPECT_LT(std::abs(apart_s), 2.0)
+        << reading << ": the goal ended " << apart_s << " s after the pod's calibration";
+    if (!pod_end) {
+      bool calibrating = true;
+      rig.rig.pod().with_model([&](sim::PodModel& m) { calibrating = m.gimbal().calibrating(); });
+      EXPECT_FALSE(calibrating) << reading << ": the goal ended while the pod still calibrates";
+    }
+  }
 }
 
 TEST(ConventionsCalibration, StatusAgainstAPodThatOnlyAcksIsNamed) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "k40t_driver/protocol/messages/camera_capture.h"
+#include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/protocol/repeat_safety.h"
 #include "session_test_link.h"
 
@@ -20,14 +21,21 @@ using protocol::Payload;
 // A host with attempts of `timeout` (three in all) and a pod that answers each request `id`
 // `delay` after it came (on a thread of its own, as a pod that first asks for GPS would), or never
 // when `delay` is negative.
+session::SessionOptions host_with(std::chrono::milliseconds timeout, protocol::CalibrationEnd end) {
+  session::SessionOptions o = host_options(timeout, 2);
+  o.codec.conventions.calibration_end = end;
+  return o;
+}
+
 struct LatePod {
   Collector<protocol::FrameHeader> seen;
   std::vector<std::thread> answers;
   SessionLink link;  // last: stopped before what its handlers use goes
 
   LatePod(std::chrono::milliseconds timeout, protocol::MessageId id,
-          std::chrono::milliseconds delay)
-      : link(host_options(timeout, 2)) {
+          std::chrono::milliseconds delay,
+          protocol::CalibrationEnd end = protocol::CalibrationEnd::kAuto)
+      : link(host_with(timeout, end)) {
     link.pod->set_request_handler(id, [this, delay](const FrameView& f) -> std::optional<Payload> {
       seen.add(f.header);
       if (delay.count() < 0) return std::nullopt;
@@ -83,6 +91,24 @@ TEST(SessionSentOnce, AZoomStepIsSentOnceAContinuousZoomIsRetried) {
   ASSERT_TRUE(pod.seen.wait_for_count(4));
 }
 
+// A calibration is sent once too (a repeat starts it again); a pod whose calibrations end with
+// their ACK (calibration_end: ack, or auto until known) answers when done, seconds later: that
+// ACK is awaited up to kCalibrationAckWait. Under status the usual wait ends it.
+TEST(SessionSentOnce, ACalibrationsLateAckIsAwaitedUnlessItsEndIsAStatus) {
+  LatePod ack_pod(20ms, protocol::GimbalDriftCalibrationRequest::kId, 300ms);
+  const session::AckResult done =
+      ack_pod.link.host->request(protocol::GimbalDriftCalibrationRequest{});
+  EXPECT_TRUE(done.ok()) << done.message;
+  EXPECT_EQ(done.attempts, 1);
+  LatePod status_pod(20ms, protocol::GimbalDriftCalibrationRequest::kId, 300ms,
+                     protocol::CalibrationEnd::kStatus);
+  const session::AckResult late =
+      status_pod.link.host->request(protocol::GimbalDriftCalibrationRequest{});
+  EXPECT_FALSE(late.received);
+  EXPECT_EQ(late.attempts, 1);
+  EXPECT_NE(late.message.find("within 60 ms; not sent again"), std::string::npos) << late.message;
+}
+
 // Section 3.2.4.6: byte 1 of 0x000306 is the command, 3 / 4 one step in / out.
 TEST(RepeatSafety, TheActionsAreListedAndNothingElse) {
   const uint8_t step_out[] = {0x04};
@@ -92,8 +118,16 @@ TEST(RepeatSafety, TheActionsAreListedAndNothingElse) {
   EXPECT_FALSE(protocol::repeat_safe(0x000307, nullptr, 0));  // precise re-shoot
   EXPECT_FALSE(protocol::repeat_safe(0x000306, step_out, 1));
   EXPECT_TRUE(protocol::repeat_safe(0x000306, stop, 1));
-  EXPECT_TRUE(protocol::repeat_safe(0x000304, nullptr, 0));  // zoom to a ratio
-  EXPECT_TRUE(protocol::repeat_safe(0x000012, nullptr, 0));  // gimbal to an angle
+  EXPECT_TRUE(protocol::repeat_safe(0x000304, nullptr, 0));   // zoom to a ratio
+  EXPECT_TRUE(protocol::repeat_safe(0x000012, nullptr, 0));   // gimbal to an angle
+  EXPECT_FALSE(protocol::repeat_safe(0x000013, nullptr, 0));  // drift calibration
+  EXPECT_FALSE(protocol::repeat_safe(0x00002E, nullptr, 0));  // linear calibration
+  EXPECT_FALSE(protocol::repeat_safe(0x000031, nullptr, 0));  // accelerometer calibration
+  protocol::Conventions c;
+  EXPECT_EQ(protocol::done_ack_wait(0x000013, c), protocol::kCalibrationAckWait);  // auto
+  c.calibration_end = protocol::CalibrationEnd::kStatus;
+  EXPECT_EQ(protocol::done_ack_wait(0x000013, c).count(), 0);
+  EXPECT_EQ(protocol::done_ack_wait(0x000302, c).count(), 0);
 }
 
 }  // namespace

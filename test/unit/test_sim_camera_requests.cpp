@@ -62,12 +62,24 @@ TEST_F(SimCameraRequests, ModesAndPhotoSettingsShowInTheSystemStatus) {
   EXPECT_DOUBLE_EQ(status.sd_total_mb, 65530);  // 64 GB in the wire's 10 MB steps
 }
 
-TEST_F(SimCameraRequests, PhotoAndRecordingRefusalsCarryTheirCodes) {
-  EXPECT_EQ(h.send(record(p::RecordAction::kStart)), ResponseCode::kFailure);  // photo mode
+// Section 3.2.4.1 note: in photo mode the pod does not answer a record request, in video mode a
+// photo request (0x000302, and the precise re-shoot 0x000307): no ACK at all (kTimeout here).
+TEST_F(SimCameraRequests, TheOtherCaptureModesRequestsGetNoAnswer) {
+  EXPECT_EQ(h.send(record(p::RecordAction::kStart)), ResponseCode::kTimeout);  // photo mode
+  EXPECT_EQ(h.send(record(p::RecordAction::kStop)), ResponseCode::kTimeout);
   EXPECT_EQ(h.send(mode(p::CaptureMode::kVideo)), ResponseCode::kOk);
-  EXPECT_EQ(h.send(photo()), ResponseCode::kFailure);  // video mode, not recording
+  EXPECT_EQ(h.send(photo()), ResponseCode::kTimeout);  // video mode
+  p::PreciseReshootRequest reshoot;
+  EXPECT_EQ(h.send(reshoot), ResponseCode::kTimeout);
+  EXPECT_TRUE(h.pod.camera().photos().empty());
+  EXPECT_FALSE(h.pod.camera().shooting());
+  EXPECT_EQ(h.send(mode(p::CaptureMode::kPhoto)), ResponseCode::kOk);
+  EXPECT_EQ(h.send(reshoot), ResponseCode::kOk);  // the same request, in photo mode
+}
+
+TEST_F(SimCameraRequests, PhotoAndRecordingRefusalsCarryTheirCodes) {
+  EXPECT_EQ(h.send(mode(p::CaptureMode::kVideo)), ResponseCode::kOk);
   EXPECT_EQ(h.send(record(p::RecordAction::kStart)), ResponseCode::kOk);
-  EXPECT_EQ(h.send(photo()), ResponseCode::kRecording);
   EXPECT_EQ(h.send(mode(p::CaptureMode::kPhoto)), ResponseCode::kRecording);
   EXPECT_EQ(h.send(p::FormatSdRequest{}), ResponseCode::kRecording);
   EXPECT_EQ(h.send(record(p::RecordAction::kStart)), ResponseCode::kBusy);
@@ -87,7 +99,7 @@ TEST_F(SimCameraRequests, PhotoAndRecordingRefusalsCarryTheirCodes) {
   EXPECT_EQ(h.send(burst), ResponseCode::kOk);
   EXPECT_EQ(h.send(photo()), ResponseCode::kOk);
   EXPECT_EQ(h.send(photo()), ResponseCode::kPhotoInProgress);
-  EXPECT_EQ(h.send(record(p::RecordAction::kStart)), ResponseCode::kPhotoInProgress);
+  EXPECT_EQ(h.send(record(p::RecordAction::kStart)), ResponseCode::kTimeout);  // photo mode
   h.run(2.0);
   const auto photos = h.status_frames<p::PhotoStatus>();
   ASSERT_EQ(photos.size(), 6u);

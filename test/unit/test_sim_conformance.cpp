@@ -71,12 +71,12 @@ TEST_F(SimConformance, BurstRecordingAndModeRules) {
   p::RecordRequest record;
   record.lens = p::RecordLensMode::kVisible;
   record.action = p::RecordAction::kStart;
-  EXPECT_EQ(link.send(record), ResponseCode::kFailure);  // photo mode
+  EXPECT_EQ(link.send(record), ResponseCode::kTimeout);  // photo mode: no answer (3.2.4.1)
   EXPECT_EQ(link.send(request_with(&p::CaptureModeRequest::mode, p::CaptureMode::kVideo)),
             ResponseCode::kOk);
   const SimLink::Mark before_record = link.mark();
   EXPECT_EQ(link.send(record), ResponseCode::kOk);
-  EXPECT_EQ(link.send(photo), ResponseCode::kRecording);
+  EXPECT_EQ(link.send(photo), ResponseCode::kTimeout);  // video mode: no answer
   EXPECT_TRUE(link.wait_report<p::RecordStatus>(
       before_record, [](const p::RecordStatus& r) { return r.recording_time_s == 2; }));
   record.action = p::RecordAction::kStop;

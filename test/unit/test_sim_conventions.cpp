@@ -1,10 +1,13 @@
 // The simulator playing the document's open readings (docs/protocol/decisions.md#conventions)
-// where its model, not only its encoding, changes: shutters beyond 16 bits of microseconds, and
-// photo mode 2 as a self-timer. The bytes of each reading are test_convention_readings.cpp's.
+// where its model, not only its encoding, changes: shutters beyond 16 bits of microseconds,
+// photo mode 2 as a self-timer, and the attitude's Euler order with a roll held. The bytes of each
+// reading are test_convention_readings.cpp's.
 #include <gtest/gtest.h>
 
 #include "k40t_driver/protocol/messages/camera.h"
+#include "k40t_driver/protocol/messages/gimbal.h"
 #include "k40t_driver/protocol/messages/visible.h"
+#include "k40t_driver/sim/sim_options.h"
 #include "sim_pod_harness.h"
 
 namespace k40t::sim {
@@ -60,6 +63,40 @@ TEST(SimConventions, PhotoMode2AsASelfTimer) {
   lapse.run(11.0);
   EXPECT_GE(lapse.pod.camera().photos().size(), 2u);
   EXPECT_EQ(lapse.send(photo(p::PhotoAction::kStop)), ResponseCode::kOk);
+}
+
+// attitude_order with the roll joint at 10 deg and the gimbal down 45: the joint chain's rotation
+// R = Rx(10 deg) Ry(45 deg) (REP 103: roll right-down and pitch down positive). zxy reports the
+// chain's own angles; zyx the Z-Y-X angles of R, worked out from its matrix: yaw = atan2(R10, R00)
+// = -9.851 deg REP 103, pitch = asin(-R20) = 44.136, roll = atan2(R21, R22) = 14.002, so in the
+// pod's terms left 9.85, down 44.14, right-down 14.00.
+TEST(SimConventions, TheAttitudeIsReportedInThePodsEulerOrder) {
+  PodConfig config;
+  config.gimbal.roll_deg = 10;
+  for (const p::AttitudeOrder order : {p::AttitudeOrder::kZxy, p::AttitudeOrder::kZyx}) {
+    p::CodecOptions codec;
+    codec.conventions.attitude_order = order;
+    PodHarness h(config, codec);
+    p::GimbalAngleRequest down45;
+    down45.pitch_deg = -45;
+    down45.yaw_move = false;
+    ASSERT_EQ(h.send(down45), ResponseCode::kOk);
+    h.run(3.0);  // 45 deg at 20 deg/s
+    const p::GimbalAttitude a = h.report<p::GimbalAttitude>();
+    EXPECT_NEAR(a.joint_roll_deg, 10, 0.01);
+    EXPECT_NEAR(a.joint_pitch_deg, -45, 0.01);
+    const bool zxy = order == p::AttitudeOrder::kZxy;
+    EXPECT_NEAR(a.yaw_deg, zxy ? 0 : -9.85, 0.01);
+    EXPECT_NEAR(a.pitch_deg, zxy ? -45 : -44.14, 0.01);
+    EXPECT_NEAR(a.roll_deg, zxy ? 10 : 14.00, 0.01);
+  }
+}
+
+TEST(SimConventions, TheRollIsAnOption) {
+  const auto options = parse_sim_options({"--gimbal-roll", "-12.5"});
+  ASSERT_TRUE(options) << options.error();
+  EXPECT_EQ(options->pod.gimbal.roll_deg, -12.5);
+  EXPECT_FALSE(parse_sim_options({"--gimbal-roll", "60"}));  // -45..45
 }
 
 }  // namespace

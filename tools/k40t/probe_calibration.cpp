@@ -1,7 +1,9 @@
 // --calibration: one drift calibration (0x000013, 3.1.2.3) and how its end shows. The document
 // gives the calibrations only an ACK; 0x000008 (3.2.1.4) is the camera's upgrade/repair report.
 // The reading `calibration_end` (docs/protocol/decisions.md#conventions) is "status" when the pod
-// reports "repairing" (state 3) in 0x000008 soon after the OK ACK, and "ack" when it does not.
+// reports "repairing" (state 3) in 0x000008 soon after the OK ACK, and "ack" when it does not: a
+// pod that answers the calibration when it is done (the session waits up to 60 s for that ACK,
+// protocol/repeat_safety.h).
 #include <cstdio>
 
 #include "k40t_driver/protocol/messages/camera_reports.h"
@@ -58,8 +60,13 @@ Status learn_calibration_end(ProbeLink& link, ProbeReport& report, std::string& 
   link.wait_until([&] { return state_since(link, acked, {kRepairing}).has_value(); },
                   std::chrono::duration_cast<std::chrono::milliseconds>(kRepairingWindow));
   if (!state_since(link, acked, {kRepairing})) {
-    report.learned("calibration_end", "ack",
-                   "no 0x000008 'repairing' within 1.5 s of 0x010013 OK: the ACK is the end");
+    // A pod whose ACK is the end answers once the calibration is done: the ACK's delay is its
+    // length (an OK at once is a calibration the pod does not time for the host).
+    std::snprintf(line, sizeof(line),
+                  "0x010013 OK %.1f s after the request, then no 0x000008 'repairing' within "
+                  "1.5 s: the ACK is the end",
+                  std::chrono::duration<double>(acked - sent).count());
+    report.learned("calibration_end", "ack", line);
     return Status::ok();
   }
   // "repairing": the end is the next "succeeded" or "failed" after it.

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "frame_text.h"
+#include "k40t_driver/protocol/ack_byte_order_evidence.h"
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/convention_readings.h"
 #include "k40t_driver/protocol/conventions.h"
@@ -48,12 +49,6 @@ std::string format(const char* pattern, double a, double b = 0, double c = 0) {
   return text;
 }
 
-std::string hex_bytes(uint8_t a, uint8_t b) {
-  char text[8];
-  std::snprintf(text, sizeof(text), "%02X %02X", a, b);
-  return text;
-}
-
 // Of the candidate readings, those every frame fits. One left: learned; several: the default is
 // kept (the frames cannot tell them apart); none: the frames contradict each other.
 void decide(ProbeReport& report, const char* name, const std::set<std::string>& fitting,
@@ -88,66 +83,17 @@ void learn_crc_coverage(const ProbeLink& link, ProbeReport& report) {
   }
 }
 
-bool known_response_code(uint16_t code) {
-  return code <= 0x000A || (code >= 0x0201 && code <= 0x0204);
-}
-
-// Multi-byte ACK fields with documented ranges: 0x010100's int16 limits (3.2.2.1: alarms
-// -1000..5000, difference 1..6000, or -2732 "off"; reference -300..500; float 0..800, all
-// 0.1 degC) and 0x010502's SBUS end points (3.2.6.3: 0..2047).
-struct Int16Field {
-  protocol::MessageId ack;
-  size_t at;
-  int lo;
-  int hi;
-  bool off_code;
-};
-constexpr std::array<Int16Field, 7> kAckRangedFields = {{{0x010100, 10, -1000, 5000, true},
-                                                         {0x010100, 12, -1000, 5000, true},
-                                                         {0x010100, 14, 1, 6000, true},
-                                                         {0x010100, 17, -300, 500, false},
-                                                         {0x010100, 19, 0, 800, false},
-                                                         {0x010502, 2, 0, 2047, false},
-                                                         {0x010502, 4, 0, 2047, false}}};
-
-bool fits(const Int16Field& f, uint16_t raw) {
-  const int value = static_cast<int16_t>(raw);
-  return (value >= f.lo && value <= f.hi) || (f.off_code && value == -2732);
-}
-
 void learn_ack_byte_order(const ProbeLink& link, ProbeReport& report) {
-  bool big = true;
-  bool little = true;
-  std::string evidence;
+  protocol::AckOrderFit fit;
   for (protocol::MessageId id : link.ids()) {
     if (protocol::kind_of(id) != protocol::MessageKind::kAck) continue;
-    for (const HeardFrame& f : link.frames(id)) {
-      if (f.payload.size() < 2 || f.payload[0] == f.payload[1]) continue;
-      const bool as_big = known_response_code(u16_big(f.payload, 0));
-      const bool as_little = known_response_code(u16_little(f.payload, 0));
-      if (as_big != as_little && evidence.empty())
-        evidence = id_text(id) + " response code bytes " + hex_bytes(f.payload[0], f.payload[1]);
-      big = big && as_big;
-      little = little && as_little;
-    }
-  }
-  for (const Int16Field& field : kAckRangedFields) {
-    for (const HeardFrame& f : link.frames(field.ack)) {
-      if (f.payload.size() < field.at + 2) continue;  // a code-only refusal
-      const bool as_big = fits(field, u16_big(f.payload, field.at));
-      const bool as_little = fits(field, u16_little(f.payload, field.at));
-      if (as_big != as_little && evidence.empty())
-        evidence = id_text(field.ack) +
-                   format(" bytes %.0f-%.0f: ", field.at + 1.0, field.at + 2.0) +
-                   hex_bytes(f.payload[field.at], f.payload[field.at + 1]);
-      big = big && as_big;
-      little = little && as_little;
-    }
+    for (const HeardFrame& f : link.frames(id))
+      protocol::fit_ack_byte_order(id, f.payload.data(), f.payload.size(), fit);
   }
   std::set<std::string> fitting;
-  if (big) fitting.insert("big");
-  if (little) fitting.insert("little");
-  decide(report, "ack_byte_order", fitting, evidence,
+  if (fit.big) fitting.insert("big");
+  if (fit.little) fitting.insert("little");
+  decide(report, "ack_byte_order", fitting, fit.evidence,
          "every ACK field heard reads the same both ways (codes 0, symmetric values)");
 }
 

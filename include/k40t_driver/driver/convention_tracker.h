@@ -8,6 +8,10 @@
 //     the 0x000002 report counts the other way contradicts yaw_sign / pitch_sign. Contradictions
 //     are kept and shown by the `conventions` diagnostic (WARN);
 //   - calibration_end: whether 0x000008 reports a calibration the pod acknowledged.
+//   - ack_byte_order: ACKs whose bytes read sensibly one way only (protocol/
+//     ack_byte_order_evidence.h: response codes, the thermal and SBUS read-backs) confirm the value
+//     in force (shown with its source) or contradict it. The driver cannot change its ACK byte
+//     order while it runs, so this reading has no `auto`: a contradiction names the value to set.
 // ROS-free and thread-safe: observations come from the I/O thread, reports from any thread.
 #pragma once
 
@@ -52,6 +56,8 @@ class ConventionTracker {
   // ACK 0x010100 as the layout decoded it (before the readings are applied).
   void observe_thermal_settings(const protocol::ThermalSettingsAck& as_decoded);
   void observe_crc_coverage(protocol::CrcCoverage locked);
+  // Any ACK (0x01xxxx) as received, before decoding.
+  void observe_ack(protocol::MessageId ack_id, const uint8_t* payload, size_t size);
   // How a gimbal calibration ends: its OK ACK (0x010013, 0x01002E, 0x010031), then whether
   // 0x000008 says "repairing" within kCalibrationQuietS (status) or not (ack). Decided on the next
   // observation after that time.
@@ -99,6 +105,7 @@ class ConventionTracker {
   protocol::YawRange yaw_range_ = protocol::YawRange::kSigned;
   std::vector<std::pair<std::string, std::string>> detected_;        // name, evidence
   std::vector<std::pair<std::string, std::string>> contradictions_;  // name, why
+  std::vector<std::pair<std::string, std::string>> confirmed_;       // name, by which frame
   std::optional<protocol::GimbalAttitude> last_attitude_;            // true values
   std::optional<double> calibration_acked_s_;  // a calibration whose end is being watched
   AxisCheck yaw_check_;

@@ -32,6 +32,7 @@
 #include "k40t_driver/driver/pod_frames.h"
 #include "k40t_driver/driver/vehicle_inputs.h"
 #include "k40t_driver/driver/vehicle_state.h"
+#include "k40t_driver/protocol/convention_readings.h"
 #include "k40t_driver/protocol/frame.h"
 #include "k40t_driver/protocol/messages/camera_reports.h"
 #include "k40t_driver/protocol/messages/camera_status.h"
@@ -72,10 +73,12 @@ sensor_msgs::Range to_range(double distance_m, const ros::Time& stamp, const Fra
                             const RangeLimits& limits);
 // The laser target's position (0x010320) with `covariance` (ENU m^2, laser/target_report's
 // approximation) as COVARIANCE_TYPE_APPROXIMATED; a negative diagonal (the report's "no fix")
-// gives COVARIANCE_TYPE_UNKNOWN and zeros.
+// gives COVARIANCE_TYPE_UNKNOWN and zeros. A "no return" under `zeros` (laser_target_zeros,
+// docs/protocol/decisions.md#conventions) is STATUS_NO_FIX with a NaN altitude.
 sensor_msgs::NavSatFix to_nav_sat_fix(const protocol::TargetGpsAck& target, const ros::Time& stamp,
                                       const FrameIds& ids,
-                                      const boost::array<double, 9>& covariance);
+                                      const boost::array<double, 9>& covariance,
+                                      protocol::LaserTargetZeros zeros);
 
 k40t_driver::Frame to_frame_msg(const uint8_t* bytes, size_t size, const ros::Time& stamp,
                                 uint8_t direction);

@@ -121,10 +121,7 @@ void advertise_decoded_topics(Sink& sink, PodDriver& driver, const RosPodConfig&
     const p::LaserTargetZeros zeros = driver.codec().conventions.laser_target_zeros;
     const k40t_driver::LaserTarget full =
         to_laser_target(m, t, ids.laser, driver.vehicle_state_at(s), zeros);
-    sensor_msgs::NavSatFix fix = to_nav_sat_fix(m, t, ids, full.position_covariance);
-    if (p::laser_target_no_return(m, zeros))
-      fix.status.status = sensor_msgs::NavSatStatus::STATUS_NO_FIX;
-    target(fix);
+    target(to_nav_sat_fix(m, t, ids, full.position_covariance, zeros));
     report(full);
   });
 }

@@ -23,6 +23,7 @@
 #include "k40t_driver/ZoomToAction.h"
 #include "k40t_driver/driver/pod_driver.h"
 #include "k40t_driver/operations/camera_operations.h"
+#include "k40t_driver/operations/capture_mode_guard.h"
 #include "k40t_driver/operations/gimbal_operations.h"
 #include "k40t_driver/ros/operation_server.h"
 
@@ -67,6 +68,8 @@ class PodActions {
   PodDriver& driver_;
   mutable std::mutex visible_mutex_;
   std::optional<protocol::VisibleStatus> latest_visible_;
+  // precise_reshoot is a photo request: in video mode the pod does not answer it (3.2.4.1).
+  operations::CaptureModeGuard capture_mode_;
 
   std::unique_ptr<OperationServer<k40t_driver::GimbalMoveToAction, operations::GimbalMove>> move_;
   std::unique_ptr<

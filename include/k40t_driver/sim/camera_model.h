@@ -4,8 +4,8 @@
 // photo records.
 //
 // Refusals (document 3.2.4.1 note: "in photo mode it does not respond to the video recording
-// command; in video mode it does not respond to the photo command"; the simulator answers with a
-// code rather than silence):
+// command; in video mode it does not respond to the photo command": the protocol front-end,
+// answer_request(), stays silent then; the model's own outcomes are these):
 //   photo in video mode      -> kRecording while a recording runs, else kFailure
 //   record in photo mode     -> kPhotoInProgress while a burst/time-lapse runs, else kFailure
 //   photo while one is taken -> kPhotoInProgress;  record start while recording -> kBusy

@@ -40,10 +40,14 @@ struct GimbalConfig {
   double linear_calibration_s = 8;
   double accelerometer_calibration_s = 6;
   double restart_s = 2;  // soft restart: motors off, then back to centre
+  // The roll joint's angle (right-down positive), held: the document has no roll command. Not 0,
+  // it lets the attitude report show its Euler order (attitude_order); the world geometry
+  // (laser, video, pointing) keeps a camera without roll.
+  double roll_deg = 0;
 };
 
-// What 0x000002 reports. Joint angles are relative to the pod's base; the vehicle is level, so
-// attitude pitch/roll equal the joints' and attitude yaw adds the vehicle heading.
+// What 0x000002 reports. Joint angles are relative to the pod's base (the chain yaw, roll, pitch);
+// the vehicle is level, so the attitude is the joints' rotation turned by the vehicle heading.
 struct GimbalPose {
   YawPitchRoll joint_deg;
   YawPitchRoll rate_deg_s;

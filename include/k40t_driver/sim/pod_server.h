@@ -71,6 +71,9 @@ class PodServer : public ControlTarget {
   void ask_for_gps(const GpsRequestEvent& request);
   void fire_scheduled_faults(SteadyClock::time_point now);
   void send_due_acks(SteadyClock::time_point now);
+  // calibration_end: ack: holds an accepted calibration's ACK; true if it did.
+  bool hold_calibration_ack(const protocol::FrameView& request, const protocol::Payload& ack);
+  void release_calibration_ack(bool succeeded);  // under model_mutex_
 
   SimOptions options_;
   FaultInjector faults_;
@@ -86,6 +89,9 @@ class PodServer : public ControlTarget {
 
   std::mutex delayed_mutex_;
   std::deque<DelayedAck> delayed_;
+  // Under calibration_end: ack the pod answers a calibration when it is done: its OK ACK waits
+  // here until then (docs/protocol/decisions.md#conventions).
+  std::optional<DelayedAck> calibration_ack_;
   std::vector<ScheduledFault> pending_faults_;
   SteadyClock::time_point started_at_{};
 

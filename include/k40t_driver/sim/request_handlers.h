@@ -40,8 +40,9 @@ const std::vector<HandlerEntry>& request_handlers();
 const HandlerEntry* find_request_handler(protocol::MessageId id);
 
 // The ACK payload for `request`; nullopt when the pod stays silent: an id it does not know
-// (section 2.1: "any system that does not recognise ... will skip the packet"), or a camera
-// request while the camera is shut down or rebooting.
+// (section 2.1: "any system that does not recognise ... will skip the packet"), a camera
+// request while the camera is shut down or rebooting, or a photo request (0x000302, 0x000307) in
+// video mode and a record request (0x000303) in photo mode (section 3.2.4.1 note).
 std::optional<protocol::Payload> answer_request(PodModel& pod, const protocol::CodecOptions& codec,
                                                 const protocol::FrameView& request);
 

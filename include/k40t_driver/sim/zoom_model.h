@@ -3,7 +3,9 @@
 // `doubling_time_s`, as a zoom motor with digital zoom behind it looks to the user), emitting
 // 0x020304 "zooming" when it starts and every `status_period_s` while it moves, and "done" when it
 // stops. After a zoom the camera refocuses (if auto focus after zoom is on), and the focus
-// commands make it busy too.
+// commands make it busy too. The focus distance: manual focus (0x000313 codes 1/2, which way the
+// reading focus_plus says) moves it nearer or farther in log space while it runs; auto focus
+// (auto, one-touch, area, after a zoom) puts it back on the scene at `scene_distance_m`.
 #pragma once
 
 #include <optional>
@@ -20,6 +22,10 @@ struct ZoomConfig {
   double step_factor = 1.4142135623730951;  // one "zoom in/out" step: half a doubling
   double status_period_s = 0.2;             // 0x020304 rate while zooming
   double focus_time_s = 0.6;                // auto focus, one-touch, area, and after a zoom
+  double scene_distance_m = 100;            // where auto focus focuses
+  double manual_focus_halving_s = 0.5;      // manual near halves the distance this often
+  double min_focus_m = 1;
+  double max_focus_m = 10000;
 };
 
 enum class ContinuousZoom { kIn, kOut, kStop, kStepIn, kStepOut };  // 0x000306 byte 1, 0..4
@@ -60,6 +66,7 @@ class ZoomModel {
   bool zooming() const { return moving_; }
   bool focusing() const { return manual_focus_ || focus_left_s_ > 0; }
   bool auto_focus_after_zoom() const { return auto_focus_after_zoom_; }
+  double focus_distance_m() const { return focus_distance_m_; }
   // The area the camera focuses on; nullopt: the centre.
   const std::optional<FocusArea>& focus_area() const { return focus_area_; }
   // The telephoto focal length follows the optical part (lens.h).
@@ -76,6 +83,8 @@ class ZoomModel {
   bool announce_start_ = false;
   double since_status_s_ = 0;
   bool manual_focus_ = false;
+  bool manual_nearer_ = false;  // while manual_focus_: which way
+  double focus_distance_m_ = 0;
   double focus_left_s_ = 0;
   bool auto_focus_after_zoom_ = true;
   std::optional<FocusArea> focus_area_;

@@ -102,7 +102,8 @@ TEST(LaserTarget, NavSatFixCarriesTheReportsCovariance) {
       to_laser_target(ack, ros::Time(3), "laser", vehicle, protocol::LaserTargetZeros::kNoReturn);
   ASSERT_GT(report.position_covariance[0], vehicle.position_covariance[0]);
   const sensor_msgs::NavSatFix fix =
-      to_nav_sat_fix(ack, ros::Time(3), FrameIds(), report.position_covariance);
+      to_nav_sat_fix(ack, ros::Time(3), FrameIds(), report.position_covariance,
+                     protocol::LaserTargetZeros::kNoReturn);
   EXPECT_EQ(fix.position_covariance_type, sensor_msgs::NavSatFix::COVARIANCE_TYPE_APPROXIMATED);
   for (size_t i = 0; i < 9; ++i)
     EXPECT_EQ(fix.position_covariance[i], report.position_covariance[i]);
@@ -112,7 +113,8 @@ TEST(LaserTarget, NavSatFixCarriesTheReportsCovariance) {
                                                          protocol::LaserTargetZeros::kNoReturn);
   ASSERT_EQ(blind.position_covariance[0], -1.0);
   const sensor_msgs::NavSatFix unknown =
-      to_nav_sat_fix(ack, ros::Time(3), FrameIds(), blind.position_covariance);
+      to_nav_sat_fix(ack, ros::Time(3), FrameIds(), blind.position_covariance,
+                     protocol::LaserTargetZeros::kNoReturn);
   EXPECT_EQ(unknown.position_covariance_type, sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN);
   for (double c : unknown.position_covariance) EXPECT_EQ(c, 0.0);
 }
@@ -137,13 +139,21 @@ TEST(LaserTarget, NoReturnZerosAreNoPosition) {
   EXPECT_TRUE(std::isnan(report.altitude));
   for (double c : report.position_covariance) EXPECT_EQ(c, -1.0);
   const sensor_msgs::NavSatFix fix =
-      to_nav_sat_fix(zeros, ros::Time(3), FrameIds(), report.position_covariance);
+      to_nav_sat_fix(zeros, ros::Time(3), FrameIds(), report.position_covariance,
+                     protocol::LaserTargetZeros::kNoReturn);
   EXPECT_EQ(fix.position_covariance_type, sensor_msgs::NavSatFix::COVARIANCE_TYPE_UNKNOWN);
+  EXPECT_EQ(fix.status.status, sensor_msgs::NavSatStatus::STATUS_NO_FIX);
+  EXPECT_TRUE(std::isnan(fix.altitude)) << fix.altitude;  // not the geoid's 17.16 m there
 
   const k40t_driver::LaserTarget place =
       to_laser_target(zeros, ros::Time(3), "laser", vehicle, protocol::LaserTargetZeros::kPosition);
   EXPECT_NEAR(place.altitude, 17.16, 0.1);  // EGM96's undulation at 0 deg, 0 deg
   EXPECT_GT(place.position_covariance[0], 0.0);
+  const sensor_msgs::NavSatFix place_fix =
+      to_nav_sat_fix(zeros, ros::Time(3), FrameIds(), place.position_covariance,
+                     protocol::LaserTargetZeros::kPosition);
+  EXPECT_EQ(place_fix.status.status, sensor_msgs::NavSatStatus::STATUS_FIX);
+  EXPECT_NEAR(place_fix.altitude, 17.16, 0.1);
 }
 
 TEST(ThermalStats, DegreesCoordinatesAndAlarms) {
