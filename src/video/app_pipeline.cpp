@@ -59,11 +59,11 @@ bool planes_packed(const GstVideoFrame& frame) {
 void hold_frame(std::unique_ptr<GstVideoFrame> frame, PipelineSample& out) {
   const auto* data = static_cast<const uint8_t*>(GST_VIDEO_FRAME_PLANE_DATA(frame.get(), 0));
   const guint last = GST_VIDEO_FRAME_N_PLANES(frame.get()) - 1;
-  out.held_size = static_cast<size_t>(static_cast<const uint8_t*>(
-                                          GST_VIDEO_FRAME_PLANE_DATA(frame.get(), last)) -
-                                      data) +
-                  static_cast<size_t>(GST_VIDEO_FRAME_PLANE_STRIDE(frame.get(), last)) *
-                      GST_VIDEO_FRAME_COMP_HEIGHT(frame.get(), last);
+  out.held_size =
+      static_cast<size_t>(
+          static_cast<const uint8_t*>(GST_VIDEO_FRAME_PLANE_DATA(frame.get(), last)) - data) +
+      static_cast<size_t>(GST_VIDEO_FRAME_PLANE_STRIDE(frame.get(), last)) *
+          GST_VIDEO_FRAME_COMP_HEIGHT(frame.get(), last);
   GstVideoFrame* mapped = frame.release();
   out.held = std::shared_ptr<const uint8_t>(data, [mapped](const uint8_t*) {
     gst_video_frame_unmap(mapped);  // also drops the buffer's reference

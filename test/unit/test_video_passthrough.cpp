@@ -182,7 +182,8 @@ TEST(VideoPassthrough, H265AccessUnitsPassThroughAndDecode) {
     EXPECT_EQ(unit.codec, Codec::kH265);
     EXPECT_EQ(unit.width, 640);
     const std::vector<int> types = h265_nal_types(unit.bytes);
-    const bool irap = std::any_of(types.begin(), types.end(), [](int t) { return t >= 16 && t <= 23; });
+    const bool irap =
+        std::any_of(types.begin(), types.end(), [](int t) { return t >= 16 && t <= 23; });
     EXPECT_EQ(irap, unit.key_frame) << "unit " << i;
     if (!unit.key_frame) continue;
     keys.push_back(i);

@@ -33,8 +33,8 @@ struct PipelineSample {
   size_t held_size = 0;
   const uint8_t* data() const { return held ? held.get() : bytes.data(); }
   size_t size() const { return held ? held_size : bytes.size(); }
-  std::string media;           // the caps' structure name: "video/x-raw", "video/x-h264"...
-  int width = 0;               // from the caps (0 if they give none)
+  std::string media;  // the caps' structure name: "video/x-raw", "video/x-h264"...
+  int width = 0;      // from the caps (0 if they give none)
   int height = 0;
   std::optional<uint64_t> pts_ns;
   bool key_frame = false;  // not a delta unit

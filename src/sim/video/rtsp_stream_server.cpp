@@ -64,7 +64,8 @@ std::string launch_line(const RtspServerOptions& options) {
 
 Status check_elements(const RtspServerOptions& options) {
   const bool h265 = options.codec == k40t::video::Codec::kH265;
-  for (const char* name : {"appsrc", h265 ? "x265enc" : "x264enc", h265 ? "rtph265pay" : "rtph264pay"}) {
+  for (const char* name :
+       {"appsrc", h265 ? "x265enc" : "x264enc", h265 ? "rtph265pay" : "rtph264pay"}) {
     GstElementFactory* factory = gst_element_factory_find(name);
     if (!factory) {
       return Status::fail(std::string("GStreamer element '") + name +

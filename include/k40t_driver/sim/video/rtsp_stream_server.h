@@ -1,9 +1,9 @@
 // The simulated pod's RTSP server (gst-rtsp-server): rtsp://ADDRESS:PORT/live/single serves
-// H.264 (x264, zero-latency tuning: no B-frames, no look-ahead; or H.265 with x265) of frames rendered on demand from
-// whatever the snapshot source says the pod shows. One shared media: every client sees the same
-// frames (same frame counters), rendering and encoding run only while someone is connected.
-// Frames are paced by a steady clock at `fps`; the frame size follows the image mode, and the
-// encoder renegotiates in-stream (new SPS/PPS) when it changes.
+// H.264 (x264, zero-latency tuning: no B-frames, no look-ahead; or H.265 with x265) of frames
+// rendered on demand from whatever the snapshot source says the pod shows. One shared media: every
+// client sees the same frames (same frame counters), rendering and encoding run only while someone
+// is connected. Frames are paced by a steady clock at `fps`; the frame size follows the image mode,
+// and the encoder renegotiates in-stream (new SPS/PPS) when it changes.
 #pragma once
 
 #include <atomic>
