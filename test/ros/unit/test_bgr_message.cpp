@@ -1,8 +1,9 @@
 // BgrMessageMaker (bgr_message.h): the picture lands in the message as bgr8, exactly what
-// OpenCV's conversion gives; the previous message's buffer is reused once nobody holds it, and
-// a message someone still holds is never written to.
+// OpenCV's conversion gives; a dead message's buffer is reused by the next one, and a message
+// someone still holds is never written to.
 #include <gtest/gtest.h>
 
+#include <boost/weak_ptr.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "k40t_driver/ros/video/bgr_message.h"
@@ -56,32 +57,28 @@ TEST(BgrMessage, I420AndBgrPicturesBecomeBgr8Messages) {
   EXPECT_TRUE(same(pixels_of(*maker.make(bgr, false, size)), bgr));
 }
 
-TEST(BgrMessage, AFreeMessageIsReusedAHeldOneIsNot) {
+TEST(BgrMessage, ADeadMessagesBufferIsReusedALiveOnesIsNot) {
   BgrMessageMaker maker;
   const cv::Size size(64, 48);
   sensor_msgs::ImagePtr first = maker.make(to_i420(test_bgr(size, 0)), true, size);
-  first->header.frame_id = "first";
-  first->header.seq = 5;
-  const sensor_msgs::Image* first_address = first.get();
   const uint8_t* first_pixels = first->data.data();
+  boost::weak_ptr<sensor_msgs::Image> watcher = first;
   first.reset();  // published and let go by everyone
+  EXPECT_TRUE(watcher.expired());
 
   const cv::Mat second_i420 = to_i420(test_bgr(size, 40));
   sensor_msgs::ImagePtr second = maker.make(second_i420, true, size);
-  EXPECT_EQ(second.get(), first_address);
   EXPECT_EQ(second->data.data(), first_pixels);
-  EXPECT_EQ(second->header.frame_id, "");  // nothing of the previous picture left
-  EXPECT_EQ(second->header.seq, 0u);
+  EXPECT_EQ(second->header.frame_id, "");  // a message of its own, nothing of the previous one
   EXPECT_TRUE(same(pixels_of(*second), expected_bgr(second_i420)));
 
   // `second` is still held (a subscriber's queue): the next picture goes elsewhere.
   const cv::Mat kept = pixels_of(*second).clone();
   sensor_msgs::ImagePtr third = maker.make(to_i420(test_bgr(size, 90)), true, size);
-  EXPECT_NE(third.get(), second.get());
+  EXPECT_NE(third->data.data(), second->data.data());
   EXPECT_TRUE(same(pixels_of(*second), kept));
 
-  // A reused message of another size is resized.
-  third.reset();
+  // A reused buffer of another size is resized; a message may outlive its maker.
   second.reset();
   const cv::Size larger(96, 64);
   const cv::Mat larger_i420 = to_i420(test_bgr(larger, 3));
@@ -89,6 +86,11 @@ TEST(BgrMessage, AFreeMessageIsReusedAHeldOneIsNot) {
   EXPECT_EQ(fourth->width, 96u);
   EXPECT_EQ(fourth->data.size(), 96u * 64 * 3);
   EXPECT_TRUE(same(pixels_of(*fourth), expected_bgr(larger_i420)));
+  {
+    BgrMessageMaker short_lived;
+    third = short_lived.make(to_i420(test_bgr(size, 5)), true, size);
+  }
+  third.reset();  // its deleter still finds the (shared) spare buffer
 }
 
 }  // namespace
