@@ -7,7 +7,8 @@
 #   k40t_video   image_raw through the k40t_video plugin (the node as for passthrough; the
 #                probe decodes): its render -> arrival latency against raw's is the plugin's cost.
 # For each: messages/s, payload bytes/s, latency from render (frame stamp) to the subscriber, and
-# the video node's CPU (% of one core, /proc). Then a bag of image_raw/k40t_video recorded for
+# the video node's CPU (% of one core, /proc) and, on a `threads:` line, each of its threads' (run
+# time from /proc/PID/task/*/schedstat). Then a bag of image_raw/k40t_video recorded for
 # BAG_SECONDS (default 60) with rosbag record, and its size scaled to 10 minutes.
 # Streams: 1920x1080 (mode 5) and 640x512 (mode 0) at 30 fps, x264 4 Mbit/s, key frame every 30.
 # Runs on its own ROS master port (BENCH_ROS_PORT, default 11913). Expects scripts/build.sh all.
@@ -25,6 +26,18 @@ bin="$K40T_DEVEL/lib/k40t_driver"
 
 cpu_ticks() { awk '{print $14 + $15}' "/proc/$1/stat" 2>/dev/null || echo 0; }
 hz="$(getconf CLK_TCK)"
+# Run time of each thread of process $1 in ns (schedstat), "tid name ns" lines, into file $2.
+thread_times() {
+  for t in /proc/"$1"/task/*; do
+    echo "${t##*/} $(tr ' ' '_' < "$t/comm") $(awk '{print $1}' "$t/schedstat" 2>/dev/null || echo 0)"
+  done > "$2"
+}
+# The threads that ran at least 0.02 % of a core between two thread_times files over $3 s.
+thread_report() {
+  awk -v s="$3" 'NR == FNR { start[$1] = $3; next }
+    { p = ($3 - ($1 in start ? start[$1] : $3)) / 1e7 / s; if (p >= 0.02) printf " %s=%.2f%%", $2, p }
+    END { print "" }' "$1" "$2"
+}
 
 roscore -p "$port" > "$out/roscore.log" 2>&1 &
 core_pid=$!
@@ -61,20 +74,26 @@ measure() {  # measure TITLE MODE
     local probe=$!
     sleep 2  # the probe's warm-up
     start=$(cpu_ticks "$video_pid")
+    thread_times "$video_pid" "$out/threads-start"
     sleep "$seconds"
     end=$(cpu_ticks "$video_pid")
+    thread_times "$video_pid" "$out/threads-end"
     wait "$probe"
     printf '%s | video node cpu %.1f%%\n' "$(tail -1 "$out/probe-$kind-$mode.log")" \
       "$(awk -v t=$((end - start)) -v hz="$hz" -v s="$seconds" 'BEGIN { print 100 * t / hz / s }')" \
       | tee -a "$results"
+    echo "  threads:$(thread_report "$out/threads-start" "$out/threads-end" "$seconds")" | tee -a "$results"
   done
   local start end
   start=$(cpu_ticks "$video_pid")
+  thread_times "$video_pid" "$out/threads-start"
   sleep "$seconds"
   end=$(cpu_ticks "$video_pid")
+  thread_times "$video_pid" "$out/threads-end"
   printf 'no subscriber | video node cpu %.1f%%\n' \
     "$(awk -v t=$((end - start)) -v hz="$hz" -v s="$seconds" 'BEGIN { print 100 * t / hz / s }')" \
     | tee -a "$results"
+  echo "  threads:$(thread_report "$out/threads-start" "$out/threads-end" "$seconds")" | tee -a "$results"
   rosbag record -O "$out/passthrough-$mode.bag" --duration="$bag_seconds" /bench/image_raw/k40t_video \
     > "$out/record-$mode.log" 2>&1
   local size

@@ -166,7 +166,8 @@ struct AccessUnitSource::State : SourceState {
   // On the decoder's thread.
   void on_decoded(DecodedFrame picture) {
     GrabbedFrame frame;
-    frame.pixels = std::move(picture.i420);
+    frame.pixels = std::move(picture.i420);  // the decoder's buffer, held: no copy
+    frame.memory = std::move(picture.memory);
     frame.i420 = true;
     frame.size = picture.size;
     frame.sequence = picture.tag;

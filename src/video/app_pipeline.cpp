@@ -8,6 +8,7 @@
 #include "k40t_driver/video/gst_launch.h"
 
 #include <cstring>
+#include <memory>
 #include <mutex>
 
 namespace k40t::video {
@@ -39,22 +40,62 @@ bool has_gstreamer_element(const std::string& name) {
 
 namespace {
 
-// Raw video planes copied row by row without the decoder's padding; other media as they are.
-void copy_buffer(GstBuffer* buffer, GstCaps* caps, PipelineSample& out) {
+// A mapped raw video frame whose planes follow each other with no padding, as a packed copy
+// would lay them out; its pixels are then used where they are.
+bool planes_packed(const GstVideoFrame& frame) {
+  const auto* next = static_cast<const uint8_t*>(GST_VIDEO_FRAME_PLANE_DATA(&frame, 0));
+  for (guint p = 0; p < GST_VIDEO_FRAME_N_PLANES(&frame); ++p) {
+    const int row_bytes =
+        GST_VIDEO_FRAME_COMP_WIDTH(&frame, p) * GST_VIDEO_FRAME_COMP_PSTRIDE(&frame, p);
+    if (GST_VIDEO_FRAME_PLANE_DATA(&frame, p) != next ||
+        GST_VIDEO_FRAME_PLANE_STRIDE(&frame, p) != row_bytes)
+      return false;
+    next += static_cast<size_t>(row_bytes) * GST_VIDEO_FRAME_COMP_HEIGHT(&frame, p);
+  }
+  return true;
+}
+
+// Keeps `frame` mapped (and its buffer referenced) until the last holder lets go.
+void hold_frame(std::unique_ptr<GstVideoFrame> frame, PipelineSample& out) {
+  const auto* data = static_cast<const uint8_t*>(GST_VIDEO_FRAME_PLANE_DATA(frame.get(), 0));
+  const guint last = GST_VIDEO_FRAME_N_PLANES(frame.get()) - 1;
+  out.held_size =
+      static_cast<size_t>(
+          static_cast<const uint8_t*>(GST_VIDEO_FRAME_PLANE_DATA(frame.get(), last)) - data) +
+      static_cast<size_t>(GST_VIDEO_FRAME_PLANE_STRIDE(frame.get(), last)) *
+          GST_VIDEO_FRAME_COMP_HEIGHT(frame.get(), last);
+  GstVideoFrame* mapped = frame.release();
+  out.held = std::shared_ptr<const uint8_t>(data, [mapped](const uint8_t*) {
+    gst_video_frame_unmap(mapped);  // also drops the buffer's reference
+    delete mapped;
+  });
+}
+
+// Raw video planes without the decoder's padding: held where they are if already so, else
+// copied row by row; other media copied as they are.
+void take_buffer(GstBuffer* buffer, GstCaps* caps, PipelineSample& out) {
   GstVideoInfo info;
   if (out.media == "video/x-raw" && gst_video_info_from_caps(&info, caps)) {
-    GstVideoFrame frame;
-    if (gst_video_frame_map(&frame, &info, buffer, GST_MAP_READ)) {
-      for (guint p = 0; p < GST_VIDEO_FRAME_N_PLANES(&frame); ++p) {
-        const int rows = GST_VIDEO_FRAME_COMP_HEIGHT(&frame, p);
-        const int row_bytes =
-            GST_VIDEO_FRAME_COMP_WIDTH(&frame, p) * GST_VIDEO_FRAME_COMP_PSTRIDE(&frame, p);
-        const int stride = GST_VIDEO_FRAME_PLANE_STRIDE(&frame, p);
-        const auto* data = static_cast<const uint8_t*>(GST_VIDEO_FRAME_PLANE_DATA(&frame, p));
-        for (int r = 0; r < rows; ++r)
-          out.bytes.insert(out.bytes.end(), data + r * stride, data + r * stride + row_bytes);
+    auto frame = std::make_unique<GstVideoFrame>();
+    if (gst_video_frame_map(frame.get(), &info, buffer, GST_MAP_READ)) {
+      if (planes_packed(*frame)) return hold_frame(std::move(frame), out);
+      size_t total = 0;
+      for (guint p = 0; p < GST_VIDEO_FRAME_N_PLANES(frame.get()); ++p)
+        total += static_cast<size_t>(GST_VIDEO_FRAME_COMP_WIDTH(frame.get(), p)) *
+                 GST_VIDEO_FRAME_COMP_PSTRIDE(frame.get(), p) *
+                 GST_VIDEO_FRAME_COMP_HEIGHT(frame.get(), p);
+      out.bytes.resize(total);
+      uint8_t* to = out.bytes.data();
+      for (guint p = 0; p < GST_VIDEO_FRAME_N_PLANES(frame.get()); ++p) {
+        const int rows = GST_VIDEO_FRAME_COMP_HEIGHT(frame.get(), p);
+        const int row_bytes = GST_VIDEO_FRAME_COMP_WIDTH(frame.get(), p) *
+                              GST_VIDEO_FRAME_COMP_PSTRIDE(frame.get(), p);
+        const int stride = GST_VIDEO_FRAME_PLANE_STRIDE(frame.get(), p);
+        const auto* from = static_cast<const uint8_t*>(GST_VIDEO_FRAME_PLANE_DATA(frame.get(), p));
+        for (int r = 0; r < rows; ++r, to += row_bytes)
+          std::memcpy(to, from + static_cast<size_t>(r) * stride, row_bytes);
       }
-      gst_video_frame_unmap(&frame);
+      gst_video_frame_unmap(frame.get());
       return;
     }
   }
@@ -79,7 +120,7 @@ std::optional<PipelineSample> to_sample(GstSample* sample) {
   if (buffer) {
     if (GST_BUFFER_PTS_IS_VALID(buffer)) out.pts_ns = GST_BUFFER_PTS(buffer);
     out.key_frame = !GST_BUFFER_FLAG_IS_SET(buffer, GST_BUFFER_FLAG_DELTA_UNIT);
-    copy_buffer(buffer, caps, out);
+    take_buffer(buffer, caps, out);
   }
   gst_sample_unref(sample);
   return out;

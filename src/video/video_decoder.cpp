@@ -19,22 +19,41 @@ std::string access_unit_caps(Codec codec) {
          ",stream-format=byte-stream,alignment=au";
 }
 
+// OpenCV would split the conversion over its thread pool (TBB here), whose workers then spin
+// between frames: on a 2-core machine that cost more CPU than the conversion itself saves
+// (docs/video.md, "Passthrough, measured"). A parallel_for_ of one stripe runs its body on the
+// calling thread, and OpenCV runs the parallel loops nested in it (the conversion's) serially;
+// while it runs, other threads' OpenCV loops in the process run serially too (~1 ms a frame).
+void i420_to_bgr(const cv::Mat& i420, cv::Mat& bgr) {
+  cv::parallel_for_(cv::Range(0, 1),
+                    [&](const cv::Range&) { cv::cvtColor(i420, bgr, cv::COLOR_YUV2BGR_I420); });
+}
+
 cv::Mat i420_to_bgr(const DecodedFrame& frame) {
-  cv::Mat bgr;
-  cv::cvtColor(frame.i420, bgr, cv::COLOR_YUV2BGR_I420);
+  cv::Mat bgr(frame.size, CV_8UC3);
+  i420_to_bgr(frame.i420, bgr);
   return bgr;
 }
 
 namespace {
 
+// The sample's pixels as they are (no copy): the Mat points into them and `memory` holds them.
 std::optional<DecodedFrame> to_frame(PipelineSample sample) {
   const size_t expected = static_cast<size_t>(sample.width) * sample.height * 3 / 2;
-  if (sample.width <= 0 || sample.height <= 0 || sample.bytes.size() != expected)
+  if (sample.width <= 0 || sample.height <= 0 || sample.height % 2 != 0 ||
+      sample.size() != expected)
     return std::nullopt;  // not I420 of the size it claims: never handed on as a picture
   DecodedFrame frame;
   frame.size = cv::Size(sample.width, sample.height);
-  frame.i420 = cv::Mat(sample.height * 3 / 2, sample.width, CV_8UC1);
-  std::copy(sample.bytes.begin(), sample.bytes.end(), frame.i420.data);
+  if (sample.held) {
+    frame.memory = std::move(sample.held);
+  } else {
+    auto bytes = std::make_shared<std::vector<uint8_t>>(std::move(sample.bytes));
+    frame.memory = std::shared_ptr<const uint8_t>(bytes, bytes->data());
+  }
+  // OpenCV wants a writable pointer; nothing here writes through it.
+  frame.i420 = cv::Mat(sample.height * 3 / 2, sample.width, CV_8UC1,
+                       const_cast<uint8_t*>(frame.memory.get()));
   frame.tag = sample.pts_ns.value_or(0);
   return frame;
 }

@@ -3,7 +3,8 @@
 roslaunch-check and rostest's roslaunch_add_file_check): XML, args, substitutions, that every
 node's package and executable exist, and package.xml dependencies. Each file is checked with its
 default args and with the arg combinations listed in VARIANTS (roslaunch reads `name:=value`
-from sys.argv). Writes one JUnit test case per (file, args) to --junit; exits 1 on any failure.
+from sys.argv); the args in NODE_ARGS must reach their node's command line. Writes one JUnit
+test case per check to --junit; exits 1 on any failure.
 
 Run after a ROS build with scripts/ros_env.sh sourced (scripts/run_tests.sh does)."""
 import argparse
@@ -13,6 +14,7 @@ import sys
 import time
 import xml.etree.ElementTree as ET
 
+import roslaunch.config
 import roslaunch.rlutil
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -32,6 +34,13 @@ VARIANTS = {
     "latency.launch": [["in_manager:=true"]],
 }
 
+# Args that must reach a node's command line: (file, args, node name, words its args must hold).
+NODE_ARGS = [
+    ("sim.launch", ["video:=true", "sim_rtsp_key_interval:=15"], "pod_sim",
+     "--rtsp-key-interval 15"),
+    ("sim.launch", ["video:=true"], "pod_sim", "--rtsp-key-interval 30"),
+]
+
 
 def launch_files():
     files = sorted(glob.glob(os.path.join(ROOT, "launch", "*.launch")))
@@ -50,6 +59,23 @@ def check(path, args):
         return "checker raised %s: %s" % (type(e).__name__, e)
     finally:
         sys.argv = saved
+
+
+def check_node_args(file, args, node, words):
+    """None if `node` of launch/`file` with `args` is started with `words` in its arguments."""
+    saved = sys.argv
+    sys.argv = [saved[0]] + args
+    try:
+        config = roslaunch.config.load_config_default([os.path.join(ROOT, "launch", file)], None,
+                                                      verbose=False)
+    except Exception as e:  # a crash of the loader is a failure of this check
+        return "loader raised %s: %s" % (type(e).__name__, e)
+    finally:
+        sys.argv = saved
+    found = [n.args for n in config.nodes if n.name == node]
+    if not found:
+        return "no node %s" % node
+    return None if words in found[0] else "%s's args are '%s', without '%s'" % (node, found[0], words)
 
 
 def main():
@@ -75,6 +101,17 @@ def main():
                 print("FAIL %s\n  %s" % (label, error.replace("\n", "\n  ")))
             else:
                 print("ok   %s" % label)
+    for file, args, node, words in NODE_ARGS:
+        label = "launch/%s %s: %s gets %s" % (file, " ".join(args), node, words)
+        error = check_node_args(file, args, node, words)
+        case = ET.SubElement(suite, "testcase", classname="launch_files", name=label, time="0")
+        cases += 1
+        if error:
+            failures += 1
+            ET.SubElement(case, "failure", message="node arguments").text = error
+            print("FAIL %s\n  %s" % (label, error))
+        else:
+            print("ok   %s" % label)
     suite.set("tests", str(cases))
     suite.set("failures", str(failures))
     suite.set("errors", "0")

@@ -83,6 +83,28 @@ TEST(VideoCodec, EncodeThenDecodeKeepsThePicture) {
   }
 }
 
+// The decoder's pictures are its own buffers, not copies of them (a 1080p frame copied twice cost
+// ~2 % of a core at 30 fps), and they stay valid after the decoder is gone.
+TEST(VideoCodec, DecodedPicturesAreTheDecodersBuffersAndOutliveIt) {
+  std::vector<cv::Mat> pictures;
+  const std::vector<EncodedUnit> units = encode_frames(4, 5, &pictures);
+  auto decoder = VideoDecoder::create(Codec::kH264);
+  ASSERT_TRUE(decoder) << decoder.error();
+  std::vector<DecodedFrame> frames;
+  for (size_t i = 0; i < units.size(); ++i) {
+    ASSERT_TRUE(
+        decoder.value()->push(units[i].bytes.data(), units[i].bytes.size(), units[i].key_frame, i));
+    auto frame = decoder.value()->pull(milliseconds(2000));
+    ASSERT_TRUE(frame) << "frame " << i << ": " << decoder.value()->error();
+    EXPECT_EQ(frame->i420.u, nullptr) << "an OpenCV allocation: the picture was copied";
+    EXPECT_EQ(frame->i420.data, frame->memory.get());
+    frames.push_back(std::move(*frame));
+  }
+  decoder.value().reset();  // the pipeline torn down; the frames still hold their buffers
+  for (size_t i = 0; i < frames.size(); ++i)
+    EXPECT_GE(psnr(i420_to_bgr(frames[i]), pictures[i]), 35.0) << "frame " << i;
+}
+
 TEST(VideoCodec, DecoderJoiningMidStreamStartsAtTheNextKeyFrame) {
   const std::vector<EncodedUnit> units = encode_frames(8, 5, nullptr);
   auto decoder = VideoDecoder::create(Codec::kH264);

@@ -4,6 +4,7 @@
 // decoded frame is the access unit's (same sequence, same reception time, its frame stamp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <mutex>
 #include <vector>
 
@@ -20,6 +21,7 @@ using sim::video::ImageMode;
 using std::chrono::seconds;
 using testing::contains;
 using testing::h264_nal_types;
+using testing::h265_nal_types;
 using testing::Stream;
 using testing::wait_until;
 
@@ -156,6 +158,40 @@ TEST(VideoPassthrough, EachAccessUnitDecodesToOnePictureAtOnce) {
     ++pictures;
   }
   EXPECT_GE(pictures, 2 * kKeyInterval);
+}
+
+// The pod may send H.265 (0x00030B): the simulator's x265 stream passes through the same way
+// (VPS/SPS/PPS before every key frame, which is an IRAP picture) and decodes from a key frame.
+TEST(VideoPassthrough, H265AccessUnitsPassThroughAndDecode) {
+  Stream stream(ImageMode::kThermal, 0, kKeyInterval, Codec::kH265);
+  Received received;
+  AccessUnitSource source(options_for(stream.url()), keep_in(received));
+  source.start();
+  ASSERT_TRUE(wait_until([&] { return received.size() >= 2 * kKeyInterval + 1; }, seconds(15)))
+      << source.stats().last_error;
+  source.set_decoding(true);
+  auto frame = source.wait_newer(0, seconds(5));
+  ASSERT_TRUE(frame) << source.stats().last_error;
+  EXPECT_TRUE(sim::video::read_frame_stamp(to_bgr(*frame)));
+  EXPECT_EQ(frame->size, cv::Size(640, 512));
+  source.stop();
+  const std::vector<AccessUnit> units = received.copy();
+  std::vector<size_t> keys;
+  for (size_t i = 0; i < units.size(); ++i) {
+    const AccessUnit& unit = units[i];
+    EXPECT_EQ(unit.codec, Codec::kH265);
+    EXPECT_EQ(unit.width, 640);
+    const std::vector<int> types = h265_nal_types(unit.bytes);
+    const bool irap =
+        std::any_of(types.begin(), types.end(), [](int t) { return t >= 16 && t <= 23; });
+    EXPECT_EQ(irap, unit.key_frame) << "unit " << i;
+    if (!unit.key_frame) continue;
+    keys.push_back(i);
+    EXPECT_TRUE(contains(types, 32) && contains(types, 33) && contains(types, 34))
+        << "VPS/SPS/PPS before key unit " << i;
+  }
+  ASSERT_GE(keys.size(), 2u);
+  for (size_t k = 1; k < keys.size(); ++k) EXPECT_EQ(keys[k] - keys[k - 1], size_t(kKeyInterval));
 }
 
 TEST(VideoPassthrough, TheFrameSizeFollowsTheImageMode) {

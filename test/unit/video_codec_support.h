@@ -23,6 +23,20 @@ inline std::vector<int> h264_nal_types(const std::vector<uint8_t>& bytes) {
   return types;
 }
 
+// H.265 (ITU-T H.265 section 7.3.1.2): the same start codes, then a two-byte NAL header whose
+// first byte holds forbidden_zero_bit (1 bit) and nal_unit_type (6 bits): 32 VPS, 33 SPS,
+// 34 PPS, 16..23 IRAP pictures (19/20 IDR, 21 CRA: where a decoder can start), 0..9 others.
+inline std::vector<int> h265_nal_types(const std::vector<uint8_t>& bytes) {
+  std::vector<int> types;
+  for (size_t i = 0; i + 4 < bytes.size(); ++i) {
+    if (bytes[i] == 0 && bytes[i + 1] == 0 && bytes[i + 2] == 1) {
+      types.push_back((bytes[i + 3] >> 1) & 0x3F);
+      i += 2;
+    }
+  }
+  return types;
+}
+
 inline bool contains(const std::vector<int>& types, int type) {
   for (int t : types)
     if (t == type) return true;

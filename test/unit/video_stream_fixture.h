@@ -14,10 +14,12 @@ namespace k40t::video::testing {
 
 class Stream {
  public:
-  explicit Stream(sim::video::ImageMode mode, int port = 0, int key_frame_interval = 10) {
+  explicit Stream(sim::video::ImageMode mode, int port = 0, int key_frame_interval = 10,
+                  Codec codec = Codec::kH264) {
     snapshot_.image_mode = mode;
     sim::video::RtspServerOptions options;
     options.port = port;
+    options.codec = codec;
     options.key_frame_interval = key_frame_interval;  // 10: a new client's picture within 1/3 s
     auto server = sim::video::RtspStreamServer::start(options, [this] {
       std::lock_guard<std::mutex> lock(mutex_);

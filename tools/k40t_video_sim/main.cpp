@@ -31,8 +31,9 @@ const char kUsage[] =
     "  --port P           RTSP port, 0 = any free one (default 8554)\n"
     "  --path /P          mount path (default /live/single)\n"
     "  --fps N            frame rate (default 30)\n"
-    "  --bitrate K        H.264 bitrate in kbit/s (default 4000)\n"
+    "  --bitrate K        encoder bitrate in kbit/s (default 4000)\n"
     "  --key-interval N   frames between key frames (default 30)\n"
+    "  --codec C          h264 (x264, default) or h265 (x265)\n"
     "  --mode M           image mode 0 thermal, 5/6 visible, 7 split (default 5)\n"
     "  --palette N        thermal palette 1..20\n"
     "  --zoom X           telephoto hybrid zoom 1..160\n"
@@ -89,6 +90,13 @@ Options parse(int argc, char** argv) {
       options.server.bitrate_kbps = parse_int(option, value);
     } else if (option == "--key-interval") {
       options.server.key_frame_interval = parse_int(option, value);
+    } else if (option == "--codec") {
+      k40t::Result<k40t::video::Codec> codec = k40t::video::parse_codec(value);
+      if (!codec) {
+        std::cerr << "k40t_video_sim: --codec: " << codec.error() << "\n";
+        std::exit(2);
+      }
+      options.server.codec = codec.value();
     } else if (option == "--sweep") {
       try {
         options.sweep_deg_s = std::stod(value);

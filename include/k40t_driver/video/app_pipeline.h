@@ -24,9 +24,17 @@ void ensure_gstreamer();
 bool has_gstreamer_element(const std::string& name);
 
 struct PipelineSample {
-  std::vector<uint8_t> bytes;  // the buffer; raw video with its planes' rows tightly packed
-  std::string media;           // the caps' structure name: "video/x-raw", "video/x-h264"...
-  int width = 0;               // from the caps (0 if they give none)
+  // The buffer; raw video with its planes' rows tightly packed. Raw video that the pipeline
+  // already laid out so (a decoder's I420 without padding) is not copied: `held` is then the
+  // pipeline's own buffer, mapped and kept alive for as long as `held` or a copy of it lives,
+  // and `bytes` is empty. data()/size() read whichever holds it.
+  std::vector<uint8_t> bytes;
+  std::shared_ptr<const uint8_t> held;
+  size_t held_size = 0;
+  const uint8_t* data() const { return held ? held.get() : bytes.data(); }
+  size_t size() const { return held ? held_size : bytes.size(); }
+  std::string media;  // the caps' structure name: "video/x-raw", "video/x-h264"...
+  int width = 0;      // from the caps (0 if they give none)
   int height = 0;
   std::optional<uint64_t> pts_ns;
   bool key_frame = false;  // not a delta unit

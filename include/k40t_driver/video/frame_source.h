@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -14,6 +15,9 @@ namespace k40t::video {
 
 struct GrabbedFrame {
   cv::Mat pixels;  // as read: BGR (CV_8UC3), or I420 (CV_8UC1, height * 3 / 2 rows) if `i420`
+  // What keeps `pixels` alive when they are a decoder's buffer (not a copy); keep the frame, not
+  // only the Mat, while using them.
+  std::shared_ptr<const uint8_t> memory;
   bool i420 = false;
   cv::Size size;                 // the picture's size
   int64_t received_us = 0;       // system clock when it came off the stream

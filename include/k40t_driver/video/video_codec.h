@@ -42,13 +42,19 @@ struct AccessUnit {
 };
 
 struct DecodedFrame {
-  cv::Mat i420;  // CV_8UC1, height * 3 / 2 rows: Y, then U, then V
+  // CV_8UC1, height * 3 / 2 rows: Y, then U, then V. Usually the decoder's own buffer, not a
+  // copy: `memory` keeps it alive; keep the frame (not only the Mat) while using the pixels.
+  cv::Mat i420;
+  std::shared_ptr<const uint8_t> memory;
   cv::Size size;
   uint64_t tag = 0;  // what push() was given with its access unit
 };
 
 // I420 -> BGR (bgr8 images).
 cv::Mat i420_to_bgr(const DecodedFrame& frame);
+// I420 (CV_8UC1, height * 3 / 2 rows) -> BGR into `bgr` (CV_8UC3 of the picture's size, e.g.
+// over a message's buffer), all on the calling thread (video_decoder.cpp says why).
+void i420_to_bgr(const cv::Mat& i420, cv::Mat& bgr);
 
 class VideoDecoder {
  public:

@@ -150,7 +150,7 @@ void VideoStreamer::publish(const video::GrabbedFrame& frame) {
   if (view.split) publish_split_panels(header.stamp, frame.size, zoom);
   if (publisher_.getNumSubscribers() == 0) return;  // no conversion for nobody
 
-  sensor_msgs::ImagePtr image = bgr_message(frame.pixels, frame.i420, frame.size);
+  sensor_msgs::ImagePtr image = bgr_messages_.make(frame.pixels, frame.i420, frame.size);
   auto info =
       boost::make_shared<sensor_msgs::CameraInfo>(lenses_.camera_info(view, frame.size, zoom));
   image->header = header;

@@ -50,7 +50,7 @@ void VideoTransportSubscriber::internalCallback(
     return report("no picture decoded from a " + message->format + " access unit");
   }
   last_error_.clear();
-  sensor_msgs::ImagePtr image = bgr_message(frame->i420, true, frame->size);
+  sensor_msgs::ImagePtr image = bgr_messages_.make(frame->i420, true, frame->size);
   image->header = message->header;
   user_cb(image);
 }

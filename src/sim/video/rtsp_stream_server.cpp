@@ -42,24 +42,34 @@ Status validate(const RtspServerOptions& options) {
 namespace {
 
 // Appsrc keeps at most two frames: if the encoder ever falls behind, the oldest frame is
-// dropped rather than delaying every later one.
-std::string launch_line(const RtspServerOptions& options) {
-  return "( appsrc name=src is-live=true do-timestamp=true format=time max-bytes=0 "
-         "max-buffers=2 leaky-type=downstream "
-         "! x264enc tune=zerolatency speed-preset=ultrafast sliced-threads=false threads=1 "
-         "bitrate=" +
-         std::to_string(options.bitrate_kbps) +
-         " key-int-max=" + std::to_string(options.key_frame_interval) +
+// dropped rather than delaying every later one. Both encoders: zero-latency tuning (no B-frames,
+// no look-ahead: one access unit out per frame in), the fastest preset, parameter sets before
+// every key frame, one NAL unit per RTP packet.
+std::string encoder_chain(const RtspServerOptions& options) {
+  const std::string rate = " bitrate=" + std::to_string(options.bitrate_kbps) +
+                           " key-int-max=" + std::to_string(options.key_frame_interval);
+  if (options.codec == k40t::video::Codec::kH265)
+    return "x265enc tune=zerolatency speed-preset=ultrafast" + rate +
+           " ! rtph265pay name=pay0 pt=96 config-interval=-1 aggregate-mode=none";
+  return "x264enc tune=zerolatency speed-preset=ultrafast sliced-threads=false threads=1" + rate +
          " ! video/x-h264,profile=constrained-baseline "
-         "! rtph264pay name=pay0 pt=96 config-interval=-1 aggregate-mode=none )";
+         "! rtph264pay name=pay0 pt=96 config-interval=-1 aggregate-mode=none";
 }
 
-Status check_elements() {
-  for (const char* name : {"appsrc", "x264enc", "rtph264pay"}) {
+std::string launch_line(const RtspServerOptions& options) {
+  return "( appsrc name=src is-live=true do-timestamp=true format=time max-bytes=0 "
+         "max-buffers=2 leaky-type=downstream ! " +
+         encoder_chain(options) + " )";
+}
+
+Status check_elements(const RtspServerOptions& options) {
+  const bool h265 = options.codec == k40t::video::Codec::kH265;
+  for (const char* name :
+       {"appsrc", h265 ? "x265enc" : "x264enc", h265 ? "rtph265pay" : "rtph264pay"}) {
     GstElementFactory* factory = gst_element_factory_find(name);
     if (!factory) {
       return Status::fail(std::string("GStreamer element '") + name +
-                          "' is missing (install gstreamer1.0-plugins-base/-good/-ugly)");
+                          "' is missing (install gstreamer1.0-plugins-base/-good/-bad/-ugly)");
     }
     gst_object_unref(factory);
   }
@@ -135,7 +145,7 @@ class RtspStreamServer::Impl {
   Status start() {
     static std::once_flag gst_once;
     std::call_once(gst_once, [] { gst_init(nullptr, nullptr); });
-    if (Status s = check_elements(); !s) return s;
+    if (Status s = check_elements(options_); !s) return s;
 
     context_ = g_main_context_new();
     loop_ = g_main_loop_new(context_, FALSE);

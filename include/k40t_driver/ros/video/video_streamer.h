@@ -31,6 +31,7 @@
 #include "k40t_driver/CameraStatus.h"
 #include "k40t_driver/VisibleStatus.h"
 #include "k40t_driver/protocol/result.h"
+#include "k40t_driver/ros/video/bgr_message.h"
 #include "k40t_driver/ros/video/lens_models.h"
 #include "k40t_driver/ros/video/video_config.h"
 #include "k40t_driver/ros/video/video_diagnostics.h"
@@ -72,6 +73,7 @@ class VideoStreamer {
   std::deque<std::pair<uint64_t, int64_t>> recent_stamps_;  // sequence -> stamp (us)
   image_transport::ImageTransport transport_;
   image_transport::CameraPublisher publisher_;
+  BgrMessageMaker bgr_messages_;  // the publisher thread's
   ros::Publisher passthrough_;
   std::unique_ptr<video::FrameSource> grabber_;
   video::AccessUnitSource* units_ = nullptr;        // grabber_, when it is the access-unit source

@@ -20,6 +20,7 @@
 #include <string>
 
 #include "k40t_driver/CompressedVideo.h"
+#include "k40t_driver/ros/video/bgr_message.h"
 #include "k40t_driver/video/video_codec.h"
 
 namespace k40t::driver {
@@ -51,6 +52,7 @@ class VideoTransportSubscriber
 
  private:
   std::unique_ptr<video::VideoDecoder> decoder_;
+  BgrMessageMaker bgr_messages_;
   uint32_t last_seq_ = 0;
   bool have_seq_ = false;
   std::string last_error_;

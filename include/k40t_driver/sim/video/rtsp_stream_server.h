@@ -1,9 +1,9 @@
 // The simulated pod's RTSP server (gst-rtsp-server): rtsp://ADDRESS:PORT/live/single serves
-// H.264 (x264, zero-latency tuning: no B-frames, no look-ahead) of frames rendered on demand from
-// whatever the snapshot source says the pod shows. One shared media: every client sees the same
-// frames (same frame counters), rendering and encoding run only while someone is connected.
-// Frames are paced by a steady clock at `fps`; the frame size follows the image mode, and the
-// encoder renegotiates in-stream (new SPS/PPS) when it changes.
+// H.264 (x264, zero-latency tuning: no B-frames, no look-ahead; or H.265 with x265) of frames
+// rendered on demand from whatever the snapshot source says the pod shows. One shared media: every
+// client sees the same frames (same frame counters), rendering and encoding run only while someone
+// is connected. Frames are paced by a steady clock at `fps`; the frame size follows the image mode,
+// and the encoder renegotiates in-stream (new SPS/PPS) when it changes.
 #pragma once
 
 #include <atomic>
@@ -14,6 +14,7 @@
 
 #include "k40t_driver/protocol/result.h"
 #include "k40t_driver/sim/video/video_snapshot.h"
+#include "k40t_driver/video/video_codec.h"
 
 namespace k40t::sim::video {
 
@@ -24,6 +25,8 @@ struct RtspServerOptions {
   int fps = 30;
   int bitrate_kbps = 4000;
   int key_frame_interval = 30;  // frames between IDR frames (a new client waits up to this long)
+  // The pod sends either (0x00030B). H.265: x265 (gstreamer1.0-plugins-bad), same tuning.
+  k40t::video::Codec codec = k40t::video::Codec::kH264;
 };
 
 // Checks ranges and the path's shape; the message names the offending option.
@@ -40,7 +43,7 @@ struct StreamCounters {
 class RtspStreamServer {
  public:
   // Binds the port and starts serving; an error when the options are invalid, the port is taken,
-  // or a GStreamer element (x264enc, rtph264pay) is missing.
+  // or a GStreamer element (x264enc|x265enc, rtph264pay|rtph265pay) is missing.
   static Result<std::unique_ptr<RtspStreamServer>> start(const RtspServerOptions& options,
                                                          SnapshotSource source);
   ~RtspStreamServer();  // disconnects every client and stops
