@@ -56,7 +56,10 @@ Geoid::Geoid(const char* grid) : impl_(std::make_unique<Impl>()) {
     impl_->error = "PROJ: cannot create a context";
     return;
   }
-  proj_log_level(impl_->context, PJ_LOG_NONE);  // failures are reported through Result
+  // Failures are reported through Result. PROJ 9.1 writes "Cannot find proj.db" even at
+  // PJ_LOG_NONE (grid_without_database() hides it on purpose): no logger at all.
+  proj_log_level(impl_->context, PJ_LOG_NONE);
+  proj_log_func(impl_->context, nullptr, [](void*, int, const char*) {});
   const std::string pipeline =
       std::string("+proj=pipeline +step +proj=unitconvert +xy_in=deg +xy_out=rad ") +
       "+step +proj=vgridshift +multiplier=1 +grids=" + grid_without_database(impl_->context, grid);
