@@ -7,8 +7,8 @@
 
 #include "k40t_driver/protocol/catalogue.h"
 #include "k40t_driver/protocol/messages/ack.h"
-#include "k40t_driver/transport/thread_name.h"
 #include "k40t_driver/protocol/repeat_safety.h"
+#include "k40t_driver/transport/thread_name.h"
 
 namespace k40t::session {
 
@@ -71,15 +71,23 @@ void RequestTracker::submit(protocol::MessageId id, const protocol::Payload& pay
     done(AckResult::not_sent(protocol::display_name(id) + " not sent: the session is not running"));
     return;
   }
+  enqueue(slots_[protocol::request_id_of(id)], id, payload, destination, std::move(done));
+  lock.unlock();
+  wake_.notify_all();
+}
+
+RequestTracker::Pending& RequestTracker::enqueue(Slot& slot, protocol::MessageId id,
+                                                 const protocol::Payload& payload,
+                                                 protocol::Address destination, Done done) {
   Pending pending;
   pending.id = id;
   pending.payload = payload;
   pending.destination = destination;
   pending.done = std::move(done);
   pending.once = !protocol::repeat_safe(id, payload.data(), payload.size);
-  slots_[protocol::request_id_of(id)].queue.push_back(std::move(pending));
-  lock.unlock();
-  wake_.notify_all();
+  pending.serial = ++next_serial_;
+  slot.queue.push_back(std::move(pending));
+  return slot.queue.back();
 }
 
 AckResult RequestTracker::call(protocol::MessageId id, const protocol::Payload& payload,
@@ -96,12 +104,33 @@ AckResult RequestTracker::call(protocol::MessageId id, const protocol::Payload& 
     AckResult result;
   };
   auto waiter = std::make_shared<Waiter>();
-  submit(id, payload, destination, [waiter](const AckResult& result) {
+  Done done = [waiter](const AckResult& result) {
     std::lock_guard<std::mutex> lock(waiter->mutex);
     waiter->result = result;
     waiter->done = true;
     waiter->done_cv.notify_all();
-  });
+  };
+  std::unique_lock<std::mutex> tracker_lock(mutex_);
+  Slot& slot = slots_[protocol::request_id_of(id)];  // stays put: unordered_map nodes do not move
+  if (!running_ || stopping_ || slot.state != SlotState::kIdle || !slot.queue.empty()) {
+    tracker_lock.unlock();
+    submit(id, payload, destination, std::move(done));
+  } else {
+    // Nothing ahead of it: written from here rather than by the tracker's thread, which would
+    // have to be woken first; the thread leaves the slot alone until after_attempt() is done.
+    enqueue(slot, id, payload, destination, std::move(done));
+    Attempt attempt = begin_attempt(slot);
+    slot.caller_sending = true;
+    tracker_lock.unlock();
+    attempt.status = send_(attempt.id, attempt.payload, attempt.destination);
+    tracker_lock.lock();
+    slot.caller_sending = false;
+    std::vector<Finished> finished;  // a failed write; finished_ is the thread's alone
+    after_attempt(attempt, Clock::now(), finished);
+    tracker_lock.unlock();
+    wake_.notify_all();  // its deadline, or an ACK that came during the write
+    for (Finished& f : finished) f.done(f.result);
+  }
   std::unique_lock<std::mutex> lock(waiter->mutex);
   waiter->done_cv.wait(lock, [&] { return waiter->done; });
   return std::move(waiter->result);
@@ -157,7 +186,7 @@ void RequestTracker::run() {
     lock.lock();
     finished_.clear();
     const Clock::time_point sent_at = Clock::now();
-    for (const Attempt& a : attempts_) after_attempt(a, sent_at);
+    for (const Attempt& a : attempts_) after_attempt(a, sent_at, finished_);
     attempts_.clear();
   }
   fail_everything();
@@ -167,6 +196,7 @@ void RequestTracker::run() {
 }
 
 void RequestTracker::step(Slot& slot, Clock::time_point now) {
+  if (slot.caller_sending) return;  // call() writes it and then takes it back
   if (slot.state == SlotState::kAcked) {
     complete_with_ack(slot);
   } else if (slot.state == SlotState::kWaiting && slot.deadline <= now) {
@@ -184,13 +214,13 @@ void RequestTracker::step(Slot& slot, Clock::time_point now) {
                              std::to_string(pending.result.attempts) +
                              (pending.result.attempts == 1 ? " attempt" : " attempts") +
                              " (timeout " + std::to_string(ack_timeout_.count()) + " ms each)";
-      finish_front(slot);
+      finish_front(slot, finished_);
     }
   }
   if (slot.state == SlotState::kIdle && !slot.queue.empty()) start_attempt(slot);
 }
 
-void RequestTracker::start_attempt(Slot& slot) {
+RequestTracker::Attempt RequestTracker::begin_attempt(Slot& slot) {
   Pending& pending = slot.queue.front();
   ++pending.result.attempts;
   slot.state = SlotState::kSending;
@@ -198,11 +228,19 @@ void RequestTracker::start_attempt(Slot& slot) {
   attempt.id = pending.id;
   attempt.payload = pending.payload;
   attempt.destination = pending.destination;
-  attempts_.push_back(attempt);
+  attempt.serial = pending.serial;
+  return attempt;
 }
 
-void RequestTracker::after_attempt(const Attempt& attempt, Clock::time_point now) {
+void RequestTracker::start_attempt(Slot& slot) {
+  attempts_.push_back(begin_attempt(slot));
+}
+
+void RequestTracker::after_attempt(const Attempt& attempt, Clock::time_point now,
+                                   std::vector<Finished>& finished) {
   Slot& slot = slots_[protocol::request_id_of(attempt.id)];
+  // Already finished meanwhile (stop() failed everything during a caller's write).
+  if (slot.queue.empty() || slot.queue.front().serial != attempt.serial) return;
   Pending& pending = slot.queue.front();
   if (!attempt.status) {
     if (slot.state == SlotState::kAcked) return;  // answered anyway; the ACK wins
@@ -213,7 +251,7 @@ void RequestTracker::after_attempt(const Attempt& attempt, Clock::time_point now
     pending.result.message = "could not send " + protocol::display_name(pending.id) + " (attempt " +
                              std::to_string(pending.result.attempts) +
                              "): " + attempt.status.message();
-    finish_front(slot);
+    finish_front(slot, finished);
     return;
   }
   if (pending.result.attempts == 1) ++counters_.requests;
@@ -246,12 +284,12 @@ void RequestTracker::complete_with_ack(Slot& slot) {
   } else {
     result.message = protocol::response_text(result.code);
   }
-  finish_front(slot);
+  finish_front(slot, finished_);
 }
 
-void RequestTracker::finish_front(Slot& slot) {
+void RequestTracker::finish_front(Slot& slot, std::vector<Finished>& finished) {
   Pending& pending = slot.queue.front();
-  finished_.push_back(Finished{std::move(pending.done), std::move(pending.result)});
+  finished.push_back(Finished{std::move(pending.done), std::move(pending.result)});
   slot.queue.pop_front();
   slot.state = SlotState::kIdle;
 }
@@ -271,7 +309,7 @@ void RequestTracker::fail_everything() {
       pending.result.message =
           protocol::display_name(pending.id) + ": " + stop_reason_ +
           (pending.result.attempts > 0 ? " before its ACK came" : " before it was sent");
-      finish_front(slot);
+      finish_front(slot, finished_);
     }
   }
 }

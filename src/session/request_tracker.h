@@ -2,8 +2,9 @@
 // message id, the others for that id queued behind it; ACKs matched by id; timeouts and retries;
 // AckResult messages. A request whose repeat would repeat an action (protocol/repeat_safety.h) is
 // written once and waited for as long as all the attempts would take. It owns the thread that
-// writes attempts, watches deadlines and runs completion callbacks, so neither the transport's I/O
-// thread nor a caller's thread ever waits on the link.
+// writes attempts, watches deadlines and runs completion callbacks, so that the transport's I/O
+// thread never waits on the link, nor an asynchronous caller; a blocking call() with nothing
+// ahead of it writes its own first attempt (it waits for the answer anyway).
 #pragma once
 
 #include <atomic>
@@ -56,6 +57,8 @@ class RequestTracker {
   void submit(protocol::MessageId id, const protocol::Payload& payload,
               protocol::Address destination, Done done);
   // Blocking form. Fails at once when called on the tracker's own thread (it would wait on itself).
+  // When nothing for its id is outstanding or queued, the caller writes the request itself (the
+  // tracker's thread then only watches its deadline): one thread hand-over less before the wire.
   AckResult call(protocol::MessageId id, const protocol::Payload& payload,
                  protocol::Address destination);
 
@@ -72,7 +75,8 @@ class RequestTracker {
     protocol::Address destination;
     Done done;
     AckResult result;
-    bool once = false;  // not repeat-safe (protocol/repeat_safety.h): one attempt, a long wait
+    bool once = false;    // not repeat-safe (protocol/repeat_safety.h): one attempt, a long wait
+    uint64_t serial = 0;  // which request an attempt is of
   };
   enum class SlotState { kIdle, kSending, kWaiting, kAcked };
   // One per request id: queue.front() is the outstanding request whenever state != kIdle.
@@ -81,12 +85,14 @@ class RequestTracker {
     SlotState state = SlotState::kIdle;
     Clock::time_point deadline;
     protocol::Payload ack;
+    bool caller_sending = false;  // call() is writing the front request: the thread leaves it
   };
   struct Attempt {
     protocol::MessageId id = 0;
     protocol::Payload payload;
     protocol::Address destination;
     Status status = Status::ok();
+    uint64_t serial = 0;
   };
   struct Finished {
     Done done;
@@ -95,9 +101,13 @@ class RequestTracker {
 
   void run();
   void step(Slot& slot, Clock::time_point now);
+  Pending& enqueue(Slot& slot, protocol::MessageId id, const protocol::Payload& payload,
+                   protocol::Address destination, Done done);
+  Attempt begin_attempt(Slot& slot);
   void start_attempt(Slot& slot);
-  void after_attempt(const Attempt& attempt, Clock::time_point now);
-  void finish_front(Slot& slot);
+  void after_attempt(const Attempt& attempt, Clock::time_point now,
+                     std::vector<Finished>& finished);
+  void finish_front(Slot& slot, std::vector<Finished>& finished);
   void complete_with_ack(Slot& slot);
   void fail_everything();
   std::string not_repeated_message(protocol::MessageId id) const;
@@ -116,7 +126,8 @@ class RequestTracker {
   std::thread thread_;
   std::atomic<std::thread::id> thread_id_{};
   std::vector<Attempt> attempts_;   // filled under the lock, written without it
-  std::vector<Finished> finished_;  // callbacks to run without the lock
+  std::vector<Finished> finished_;  // callbacks to run without the lock (the thread's alone)
+  uint64_t next_serial_ = 0;
   Counters counters_;
 };
 
