@@ -65,13 +65,19 @@ void RequestTracker::stop(const std::string& why) {
 
 void RequestTracker::submit(protocol::MessageId id, const protocol::Payload& payload,
                             protocol::Address destination, Done done) {
+  queue_for_thread(id, payload, destination, std::move(done), false);
+}
+
+void RequestTracker::queue_for_thread(protocol::MessageId id, const protocol::Payload& payload,
+                                      protocol::Address destination, Done done, bool caller_waits) {
   std::unique_lock<std::mutex> lock(mutex_);
   if (!running_ || stopping_) {
     lock.unlock();
     done(AckResult::not_sent(protocol::display_name(id) + " not sent: the session is not running"));
     return;
   }
-  enqueue(slots_[protocol::request_id_of(id)], id, payload, destination, std::move(done));
+  enqueue(slots_[protocol::request_id_of(id)], id, payload, destination, std::move(done))
+      .caller_waits = caller_waits;
   lock.unlock();
   wake_.notify_all();
 }
@@ -114,11 +120,11 @@ AckResult RequestTracker::call(protocol::MessageId id, const protocol::Payload& 
   Slot& slot = slots_[protocol::request_id_of(id)];  // stays put: unordered_map nodes do not move
   if (!running_ || stopping_ || slot.state != SlotState::kIdle || !slot.queue.empty()) {
     tracker_lock.unlock();
-    submit(id, payload, destination, std::move(done));
+    queue_for_thread(id, payload, destination, std::move(done), true);
   } else {
     // Nothing ahead of it: written from here rather than by the tracker's thread, which would
     // have to be woken first; the thread leaves the slot alone until after_attempt() is done.
-    enqueue(slot, id, payload, destination, std::move(done));
+    enqueue(slot, id, payload, destination, std::move(done)).caller_waits = true;
     Attempt attempt = begin_attempt(slot);
     slot.caller_sending = true;
     tracker_lock.unlock();
@@ -146,12 +152,24 @@ bool RequestTracker::on_ack(protocol::MessageId ack_id, const uint8_t* payload, 
     return false;
   }
   Slot& slot = found->second;
+  const bool written = slot.state == SlotState::kWaiting;  // and after_attempt() done with it
   const size_t n = std::min(size, slot.ack.bytes.size());
   std::copy(payload, payload + n, slot.ack.bytes.begin());
   slot.ack.size = n;
   slot.state = SlotState::kAcked;
+  if (!written || !slot.queue.front().caller_waits) {
+    lock.unlock();
+    wake_.notify_all();
+    return true;
+  }
+  // A blocking call() is waiting: completed here rather than by the tracker's thread, which would
+  // have to be woken first (one thread hand-over less). Its callback only wakes the caller.
+  std::vector<Finished> finished;  // finished_ is the thread's alone
+  complete_with_ack(slot, finished);
+  const bool more = !slot.queue.empty();
   lock.unlock();
-  wake_.notify_all();
+  if (more) wake_.notify_all();  // the next request for this id
+  for (Finished& f : finished) f.done(f.result);
   return true;
 }
 
@@ -198,7 +216,7 @@ void RequestTracker::run() {
 void RequestTracker::step(Slot& slot, Clock::time_point now) {
   if (slot.caller_sending) return;  // call() writes it and then takes it back
   if (slot.state == SlotState::kAcked) {
-    complete_with_ack(slot);
+    complete_with_ack(slot, finished_);
   } else if (slot.state == SlotState::kWaiting && slot.deadline <= now) {
     Pending& pending = slot.queue.front();
     if (!pending.once && pending.result.attempts < max_attempts_) {
@@ -263,7 +281,7 @@ void RequestTracker::after_attempt(const Attempt& attempt, Clock::time_point now
   }
 }
 
-void RequestTracker::complete_with_ack(Slot& slot) {
+void RequestTracker::complete_with_ack(Slot& slot, std::vector<Finished>& finished) {
   Pending& pending = slot.queue.front();
   AckResult& result = pending.result;
   result.sent = true;
@@ -284,7 +302,7 @@ void RequestTracker::complete_with_ack(Slot& slot) {
   } else {
     result.message = protocol::response_text(result.code);
   }
-  finish_front(slot, finished_);
+  finish_front(slot, finished);
 }
 
 void RequestTracker::finish_front(Slot& slot, std::vector<Finished>& finished) {
@@ -300,7 +318,7 @@ void RequestTracker::fail_everything() {
     while (!slot.queue.empty()) {
       Pending& pending = slot.queue.front();
       if (slot.state == SlotState::kAcked) {
-        complete_with_ack(slot);  // the answer is here: deliver it
+        complete_with_ack(slot, finished_);  // the answer is here: deliver it
         continue;
       }
       pending.result.sent = pending.result.attempts > 0;

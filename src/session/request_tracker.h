@@ -62,8 +62,9 @@ class RequestTracker {
   AckResult call(protocol::MessageId id, const protocol::Payload& payload,
                  protocol::Address destination);
 
-  // An ACK from the link (I/O thread; no allocation): true if it completed an outstanding
-  // request, false if no request for its id was outstanding (counted as late).
+  // An ACK from the link (I/O thread): true if it completed an outstanding request, false if no
+  // request for its id was outstanding (counted as late). The ACK of a blocking call() completes
+  // it here (its AckResult is built here); any other is handed to the tracker's thread.
   bool on_ack(protocol::MessageId ack_id, const uint8_t* payload, size_t size);
 
   Counters counters() const;
@@ -77,6 +78,7 @@ class RequestTracker {
     AckResult result;
     bool once = false;    // not repeat-safe (protocol/repeat_safety.h): one attempt, a long wait
     uint64_t serial = 0;  // which request an attempt is of
+    bool caller_waits = false;  // call()'s: its ACK completes it on the I/O thread, at once
   };
   enum class SlotState { kIdle, kSending, kWaiting, kAcked };
   // One per request id: queue.front() is the outstanding request whenever state != kIdle.
@@ -101,6 +103,8 @@ class RequestTracker {
 
   void run();
   void step(Slot& slot, Clock::time_point now);
+  void queue_for_thread(protocol::MessageId id, const protocol::Payload& payload,
+                        protocol::Address destination, Done done, bool caller_waits);
   Pending& enqueue(Slot& slot, protocol::MessageId id, const protocol::Payload& payload,
                    protocol::Address destination, Done done);
   Attempt begin_attempt(Slot& slot);
@@ -108,7 +112,7 @@ class RequestTracker {
   void after_attempt(const Attempt& attempt, Clock::time_point now,
                      std::vector<Finished>& finished);
   void finish_front(Slot& slot, std::vector<Finished>& finished);
-  void complete_with_ack(Slot& slot);
+  void complete_with_ack(Slot& slot, std::vector<Finished>& finished);
   void fail_everything();
   std::string not_repeated_message(protocol::MessageId id) const;
 

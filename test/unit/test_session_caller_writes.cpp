@@ -1,7 +1,7 @@
 // Who writes a blocking request (session/request_tracker.h): the caller itself when nothing for
 // its id is outstanding or queued (one thread hand-over less before the wire: the settings
-// services' round trip), the tracker's thread otherwise; and a stop during the caller's write
-// still ends the call.
+// services' round trip), the tracker's thread otherwise; a stop during the caller's write still
+// ends the call; and its ACK completes it on the I/O thread, without the tracker's thread.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -87,6 +87,31 @@ TEST(SessionCallerWrites, AStopDuringTheCallersWriteEndsTheCall) {
   const session::AckResult r = call.get();
   EXPECT_FALSE(r.received);
   EXPECT_NE(r.message.find("session stopped"), std::string::npos) << r.message;
+}
+
+TEST(SessionCallerWrites, ItsAckCompletesABlockingRequestWhileTheSessionsThreadIsBusy) {
+  constexpr protocol::MessageId kGimbalVersion = 0x000018;
+  SessionLink link;
+  link.pod->set_request_handler(
+      kLaserRange, [](const FrameView&) { return std::optional<Payload>(ack_payload(0)); });
+  link.pod->set_request_handler(
+      kGimbalVersion, [](const FrameView&) { return std::optional<Payload>(ack_payload(0)); });
+  link.start();
+  // An asynchronous request's callback holds the session's thread until the blocking one is done.
+  std::promise<void> in_callback, release;
+  std::shared_future<void> released = release.get_future().share();
+  link.host->request_async(kGimbalVersion, ack_payload(0), [&](const session::AckResult&) {
+    in_callback.set_value();
+    released.wait();
+  });
+  in_callback.get_future().wait();
+  std::future<session::AckResult> call = std::async(std::launch::async, [&] {
+    return link.host->request_raw(kLaserRange, kPayload, sizeof kPayload);
+  });
+  const bool completed = call.wait_for(5s) == std::future_status::ready;
+  release.set_value();
+  ASSERT_TRUE(completed) << "the blocking request waited for the session's thread";
+  EXPECT_TRUE(call.get().ok());
 }
 
 }  // namespace
