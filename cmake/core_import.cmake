@@ -23,3 +23,13 @@ foreach(program k40t k40t_sim skyport_sim k40t_video_sim)
        SYMBOLIC)
   install(PROGRAMS ${location} DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 endforeach()
+
+# The lens-distortion module k40t_camera opens on first use (cmake/camera.cmake): beside the
+# driver's library in the devel space's lib/, and installed there.
+get_target_property(configs k40t_opencv_lens IMPORTED_CONFIGURATIONS)
+list(GET configs 0 config)
+get_target_property(location k40t_opencv_lens IMPORTED_LOCATION_${config})
+file(MAKE_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_LIB_DESTINATION})
+file(CREATE_LINK ${location} ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_LIB_DESTINATION}/libk40t_opencv_lens.so
+     SYMBOLIC)
+install(FILES ${location} DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})

@@ -1,8 +1,9 @@
 # The ROS layer: one shared library per nodelet, so that each loads only what it uses, over a small
 # common one:
-#   k40t_ros_common       src/ros/param_reader.cpp, stop_signals.cpp, start_failure.cpp: the glue
-#                         all three share (checked parameters, SIGTERM as SIGINT, a start that
-#                         failed on its configuration as a diagnostic); roscpp and
+#   k40t_ros_common       src/ros/param_reader.cpp, stop_signals.cpp, start_failure.cpp,
+#                         callback_threads.cpp: the glue all three share (checked parameters,
+#                         SIGTERM as SIGINT, a start that failed on its configuration as a
+#                         diagnostic, the standalone nodes' callback threads); roscpp and
 #                         diagnostic_updater only;
 #   k40t_pod              the rest of src/ros/*.cpp: RosPod (parameters, topics, services,
 #                         actions, reconfigure, diagnostics over driver/'s PodDriver), which
@@ -19,7 +20,8 @@
 #   k40t_rviz_panel       src/rviz/: the rviz panel PodPanel (Qt; cmake/rviz_panel.cmake).
 # test/launch/check_nodelet_libraries.py checks what each one loads. The standalone nodes and the
 # rostest programs under test/ros/ link them.
-set(K40T_ROS_COMMON_SOURCES ${PROJECT_SOURCE_DIR}/src/ros/param_reader.cpp
+set(K40T_ROS_COMMON_SOURCES ${PROJECT_SOURCE_DIR}/src/ros/callback_threads.cpp
+                            ${PROJECT_SOURCE_DIR}/src/ros/param_reader.cpp
                             ${PROJECT_SOURCE_DIR}/src/ros/stop_signals.cpp
                             ${PROJECT_SOURCE_DIR}/src/ros/start_failure.cpp)
 file(GLOB K40T_POD_NODELET_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ros/*.cpp)

@@ -73,14 +73,17 @@ void ConventionTracker::observe_attitude(const p::GimbalAttitude& as_decoded, do
   const p::YawRange seen = p::yaw_range_evidence(as_decoded);
   p::YawRange& range = codec_.conventions.yaw_range;
   const bool was_auto = range == p::YawRange::kAuto;  // once locked, later reports check it
-  const std::string evidence = "0x000002 yaw " + degrees(as_decoded.yaw_deg) + ", joint yaw " +
-                               degrees(as_decoded.joint_yaw_deg) + " read as int16";
+  // Written only when it is kept: this runs for every attitude report (10 Hz).
+  const auto evidence = [&as_decoded] {
+    return "0x000002 yaw " + degrees(as_decoded.yaw_deg) + ", joint yaw " +
+           degrees(as_decoded.joint_yaw_deg) + " read as int16";
+  };
   if (seen != p::YawRange::kAuto) {
     if (was_auto) {
       range = seen;
-      detect("yaw_range", evidence);
+      detect("yaw_range", evidence());
     } else if (seen != range) {
-      contradict("yaw_range", evidence + " fits only yaw_range: " +
+      contradict("yaw_range", evidence() + " fits only yaw_range: " +
                                   (seen == p::YawRange::kHeading ? "heading" : "signed"));
     }
   }

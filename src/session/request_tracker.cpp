@@ -70,21 +70,35 @@ void RequestTracker::stop(const std::string& why) {
 
 void RequestTracker::submit(protocol::MessageId id, const protocol::Payload& payload,
                             protocol::Address destination, Done done) {
+  queue_for_thread(id, payload, destination, std::move(done), false);
+}
+
+void RequestTracker::queue_for_thread(protocol::MessageId id, const protocol::Payload& payload,
+                                      protocol::Address destination, Done done, bool caller_waits) {
   std::unique_lock<std::mutex> lock(mutex_);
   if (!running_ || stopping_) {
     lock.unlock();
     done(AckResult::not_sent(protocol::display_name(id) + " not sent: the session is not running"));
     return;
   }
+  enqueue(slots_[protocol::request_id_of(id)], id, payload, destination, std::move(done))
+      .caller_waits = caller_waits;
+  lock.unlock();
+  wake_.notify_all();
+}
+
+RequestTracker::Pending& RequestTracker::enqueue(Slot& slot, protocol::MessageId id,
+                                                 const protocol::Payload& payload,
+                                                 protocol::Address destination, Done done) {
   Pending pending;
   pending.id = id;
   pending.payload = payload;
   pending.destination = destination;
   pending.done = std::move(done);
   pending.once = !protocol::repeat_safe(id, payload.data(), payload.size);
-  slots_[protocol::request_id_of(id)].queue.push_back(std::move(pending));
-  lock.unlock();
-  wake_.notify_all();
+  pending.serial = ++next_serial_;
+  slot.queue.push_back(std::move(pending));
+  return slot.queue.back();
 }
 
 AckResult RequestTracker::call(protocol::MessageId id, const protocol::Payload& payload,
@@ -101,12 +115,33 @@ AckResult RequestTracker::call(protocol::MessageId id, const protocol::Payload& 
     AckResult result;
   };
   auto waiter = std::make_shared<Waiter>();
-  submit(id, payload, destination, [waiter](const AckResult& result) {
+  Done done = [waiter](const AckResult& result) {
     std::lock_guard<std::mutex> lock(waiter->mutex);
     waiter->result = result;
     waiter->done = true;
     waiter->done_cv.notify_all();
-  });
+  };
+  std::unique_lock<std::mutex> tracker_lock(mutex_);
+  Slot& slot = slots_[protocol::request_id_of(id)];  // stays put: unordered_map nodes do not move
+  if (!running_ || stopping_ || slot.state != SlotState::kIdle || !slot.queue.empty()) {
+    tracker_lock.unlock();
+    queue_for_thread(id, payload, destination, std::move(done), true);
+  } else {
+    // Nothing ahead of it: written from here rather than by the tracker's thread, which would
+    // have to be woken first; the thread leaves the slot alone until after_attempt() is done.
+    enqueue(slot, id, payload, destination, std::move(done)).caller_waits = true;
+    Attempt attempt = begin_attempt(slot);
+    slot.caller_sending = true;
+    tracker_lock.unlock();
+    attempt.status = send_(attempt.id, attempt.payload, attempt.destination);
+    tracker_lock.lock();
+    slot.caller_sending = false;
+    std::vector<Finished> finished;  // a failed write; finished_ is the thread's alone
+    after_attempt(attempt, Clock::now(), finished);
+    tracker_lock.unlock();
+    wake_.notify_all();  // its deadline, or an ACK that came during the write
+    for (Finished& f : finished) f.done(f.result);
+  }
   std::unique_lock<std::mutex> lock(waiter->mutex);
   waiter->done_cv.wait(lock, [&] { return waiter->done; });
   return std::move(waiter->result);
@@ -122,12 +157,24 @@ bool RequestTracker::on_ack(protocol::MessageId ack_id, const uint8_t* payload, 
     return false;
   }
   Slot& slot = found->second;
+  const bool written = slot.state == SlotState::kWaiting;  // and after_attempt() done with it
   const size_t n = std::min(size, slot.ack.bytes.size());
   std::copy(payload, payload + n, slot.ack.bytes.begin());
   slot.ack.size = n;
   slot.state = SlotState::kAcked;
+  if (!written || !slot.queue.front().caller_waits) {
+    lock.unlock();
+    wake_.notify_all();
+    return true;
+  }
+  // A blocking call() is waiting: completed here rather than by the tracker's thread, which would
+  // have to be woken first (one thread hand-over less). Its callback only wakes the caller.
+  std::vector<Finished> finished;  // finished_ is the thread's alone
+  complete_with_ack(slot, finished);
+  const bool more = !slot.queue.empty();
   lock.unlock();
-  wake_.notify_all();
+  if (more) wake_.notify_all();  // the next request for this id
+  for (Finished& f : finished) f.done(f.result);
   return true;
 }
 
@@ -162,7 +209,7 @@ void RequestTracker::run() {
     lock.lock();
     finished_.clear();
     const Clock::time_point sent_at = Clock::now();
-    for (const Attempt& a : attempts_) after_attempt(a, sent_at);
+    for (const Attempt& a : attempts_) after_attempt(a, sent_at, finished_);
     attempts_.clear();
   }
   fail_everything();
@@ -172,8 +219,9 @@ void RequestTracker::run() {
 }
 
 void RequestTracker::step(Slot& slot, Clock::time_point now) {
+  if (slot.caller_sending) return;  // call() writes it and then takes it back
   if (slot.state == SlotState::kAcked) {
-    complete_with_ack(slot);
+    complete_with_ack(slot, finished_);
   } else if (slot.state == SlotState::kWaiting && slot.deadline <= now) {
     Pending& pending = slot.queue.front();
     if (!pending.once && pending.result.attempts < max_attempts_) {
@@ -189,13 +237,13 @@ void RequestTracker::step(Slot& slot, Clock::time_point now) {
                              std::to_string(pending.result.attempts) +
                              (pending.result.attempts == 1 ? " attempt" : " attempts") +
                              " (timeout " + std::to_string(ack_timeout_.count()) + " ms each)";
-      finish_front(slot);
+      finish_front(slot, finished_);
     }
   }
   if (slot.state == SlotState::kIdle && !slot.queue.empty()) start_attempt(slot);
 }
 
-void RequestTracker::start_attempt(Slot& slot) {
+RequestTracker::Attempt RequestTracker::begin_attempt(Slot& slot) {
   Pending& pending = slot.queue.front();
   ++pending.result.attempts;
   slot.state = SlotState::kSending;
@@ -203,11 +251,19 @@ void RequestTracker::start_attempt(Slot& slot) {
   attempt.id = pending.id;
   attempt.payload = pending.payload;
   attempt.destination = pending.destination;
-  attempts_.push_back(attempt);
+  attempt.serial = pending.serial;
+  return attempt;
 }
 
-void RequestTracker::after_attempt(const Attempt& attempt, Clock::time_point now) {
+void RequestTracker::start_attempt(Slot& slot) {
+  attempts_.push_back(begin_attempt(slot));
+}
+
+void RequestTracker::after_attempt(const Attempt& attempt, Clock::time_point now,
+                                   std::vector<Finished>& finished) {
   Slot& slot = slots_[protocol::request_id_of(attempt.id)];
+  // Already finished meanwhile (stop() failed everything during a caller's write).
+  if (slot.queue.empty() || slot.queue.front().serial != attempt.serial) return;
   Pending& pending = slot.queue.front();
   if (!attempt.status) {
     if (slot.state == SlotState::kAcked) return;  // answered anyway; the ACK wins
@@ -218,7 +274,7 @@ void RequestTracker::after_attempt(const Attempt& attempt, Clock::time_point now
     pending.result.message = "could not send " + protocol::display_name(pending.id) + " (attempt " +
                              std::to_string(pending.result.attempts) +
                              "): " + attempt.status.message();
-    finish_front(slot);
+    finish_front(slot, finished);
     return;
   }
   if (pending.result.attempts == 1) ++counters_.requests;
@@ -231,7 +287,7 @@ void RequestTracker::after_attempt(const Attempt& attempt, Clock::time_point now
   }
 }
 
-void RequestTracker::complete_with_ack(Slot& slot) {
+void RequestTracker::complete_with_ack(Slot& slot, std::vector<Finished>& finished) {
   Pending& pending = slot.queue.front();
   AckResult& result = pending.result;
   result.sent = true;
@@ -252,12 +308,12 @@ void RequestTracker::complete_with_ack(Slot& slot) {
   } else {
     result.message = protocol::response_text(result.code);
   }
-  finish_front(slot);
+  finish_front(slot, finished);
 }
 
-void RequestTracker::finish_front(Slot& slot) {
+void RequestTracker::finish_front(Slot& slot, std::vector<Finished>& finished) {
   Pending& pending = slot.queue.front();
-  finished_.push_back(Finished{std::move(pending.done), std::move(pending.result)});
+  finished.push_back(Finished{std::move(pending.done), std::move(pending.result)});
   slot.queue.pop_front();
   slot.state = SlotState::kIdle;
 }
@@ -268,7 +324,7 @@ void RequestTracker::fail_everything() {
     while (!slot.queue.empty()) {
       Pending& pending = slot.queue.front();
       if (slot.state == SlotState::kAcked) {
-        complete_with_ack(slot);  // the answer is here: deliver it
+        complete_with_ack(slot, finished_);  // the answer is here: deliver it
         continue;
       }
       pending.result.sent = pending.result.attempts > 0;
@@ -277,7 +333,7 @@ void RequestTracker::fail_everything() {
       pending.result.message =
           protocol::display_name(pending.id) + ": " + stop_reason_ +
           (pending.result.attempts > 0 ? " before its ACK came" : " before it was sent");
-      finish_front(slot);
+      finish_front(slot, finished_);
     }
   }
 }

@@ -3,8 +3,9 @@
 // AckResult messages. A request whose repeat would repeat an action (protocol/repeat_safety.h) is
 // written once and waited for as long as all the attempts would take (longer for a pod that
 // answers only once the action is done: protocol::done_ack_wait()). It owns the thread that
-// writes attempts, watches deadlines and runs completion callbacks, so neither the transport's I/O
-// thread nor a caller's thread ever waits on the link.
+// writes attempts, watches deadlines and runs completion callbacks, so that the transport's I/O
+// thread never waits on the link, nor an asynchronous caller; a blocking call() with nothing
+// ahead of it writes its own first attempt (it waits for the answer anyway).
 #pragma once
 
 #include <atomic>
@@ -57,11 +58,14 @@ class RequestTracker {
   void submit(protocol::MessageId id, const protocol::Payload& payload,
               protocol::Address destination, Done done);
   // Blocking form. Fails at once when called on the tracker's own thread (it would wait on itself).
+  // When nothing for its id is outstanding or queued, the caller writes the request itself (the
+  // tracker's thread then only watches its deadline): one thread hand-over less before the wire.
   AckResult call(protocol::MessageId id, const protocol::Payload& payload,
                  protocol::Address destination);
 
-  // An ACK from the link (I/O thread; no allocation): true if it completed an outstanding
-  // request, false if no request for its id was outstanding (counted as late).
+  // An ACK from the link (I/O thread): true if it completed an outstanding request, false if no
+  // request for its id was outstanding (counted as late). The ACK of a blocking call() completes
+  // it here (its AckResult is built here); any other is handed to the tracker's thread.
   bool on_ack(protocol::MessageId ack_id, const uint8_t* payload, size_t size);
 
   Counters counters() const;
@@ -73,7 +77,9 @@ class RequestTracker {
     protocol::Address destination;
     Done done;
     AckResult result;
-    bool once = false;  // not repeat-safe (protocol/repeat_safety.h): one attempt, a long wait
+    bool once = false;    // not repeat-safe (protocol/repeat_safety.h): one attempt, a long wait
+    uint64_t serial = 0;  // which request an attempt is of
+    bool caller_waits = false;  // call()'s: its ACK completes it on the I/O thread, at once
   };
   enum class SlotState { kIdle, kSending, kWaiting, kAcked };
   // One per request id: queue.front() is the outstanding request whenever state != kIdle.
@@ -82,12 +88,14 @@ class RequestTracker {
     SlotState state = SlotState::kIdle;
     Clock::time_point deadline;
     protocol::Payload ack;
+    bool caller_sending = false;  // call() is writing the front request: the thread leaves it
   };
   struct Attempt {
     protocol::MessageId id = 0;
     protocol::Payload payload;
     protocol::Address destination;
     Status status = Status::ok();
+    uint64_t serial = 0;
   };
   struct Finished {
     Done done;
@@ -96,10 +104,16 @@ class RequestTracker {
 
   void run();
   void step(Slot& slot, Clock::time_point now);
+  void queue_for_thread(protocol::MessageId id, const protocol::Payload& payload,
+                        protocol::Address destination, Done done, bool caller_waits);
+  Pending& enqueue(Slot& slot, protocol::MessageId id, const protocol::Payload& payload,
+                   protocol::Address destination, Done done);
+  Attempt begin_attempt(Slot& slot);
   void start_attempt(Slot& slot);
-  void after_attempt(const Attempt& attempt, Clock::time_point now);
-  void finish_front(Slot& slot);
-  void complete_with_ack(Slot& slot);
+  void after_attempt(const Attempt& attempt, Clock::time_point now,
+                     std::vector<Finished>& finished);
+  void finish_front(Slot& slot, std::vector<Finished>& finished);
+  void complete_with_ack(Slot& slot, std::vector<Finished>& finished);
   void fail_everything();
   std::string not_repeated_message(protocol::MessageId id) const;
   // How long a request sent once waits for its ACK.
@@ -119,7 +133,8 @@ class RequestTracker {
   std::thread thread_;
   std::atomic<std::thread::id> thread_id_{};
   std::vector<Attempt> attempts_;   // filled under the lock, written without it
-  std::vector<Finished> finished_;  // callbacks to run without the lock
+  std::vector<Finished> finished_;  // callbacks to run without the lock (the thread's alone)
+  uint64_t next_serial_ = 0;
   Counters counters_;
 };
 

@@ -11,7 +11,8 @@ space's setup.bash sourced):
                   launch files, config/, urdf/, rviz/, nodelet_plugins.xml and rviz_plugins.xml
                   with the libraries they name, every executable a launch file starts from
                   k40t_driver, every `$(find k40t_driver)/...` path a launch file uses, the
-                  generated Python messages and dynamic_reconfigure cfg module;
+                  generated Python messages and dynamic_reconfigure cfg module, the lens module
+                  libk40t_opencv_lens.so the driver opens beside its library;
   rospack_find    `rospack find k40t_driver` is the install space's share/k40t_driver;
   sim_launch      `roslaunch k40t_driver sim.launch` (its own master on a free port, its pty in the
                   temporary directory) publishes joint_states within 30 s, and stops on SIGINT.
@@ -129,6 +130,8 @@ def check_files(prefix):
             # pluginlib looks the library up under the prefixes' lib/ as lib<name>.so
             need(os.path.join(prefix, os.path.dirname(library),
                               os.path.basename(library) + ".so"), plugins)
+    # Opened with dlopen beside libk40t_pod.so on the first pixel located (camera/opencv_lens.h).
+    need(os.path.join(lib, "libk40t_opencv_lens.so"), "locate_pixel's lens distortion")
     executables, paths = launch_needs()
     for executable in sorted(executables):
         need(os.path.join(lib, PACKAGE, executable), "started by a launch file")

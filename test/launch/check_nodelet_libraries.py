@@ -5,10 +5,12 @@
   - package.xml exports the bench plugin file only if the ROS build made every library it names;
   - each product library loads only what it uses. What it loads is its ELF DT_NEEDED entries
     (readelf -d), followed through the project's own libraries in the devel space, so a library
-    that needs libk40t_pod_nodelet.so also loads what that one needs: the pod driver no GStreamer
-    or OpenSSL, the video nodelet no OpenSSL, the SKYPORT bridge no OpenCV or GStreamer; none Qt;
+    that needs libk40t_pod_nodelet.so also loads what that one needs: the pod driver no OpenCV
+    (its lens distortion is opened on first use), GStreamer or OpenSSL, the video nodelet no
+    OpenSSL, the SKYPORT bridge no OpenCV or GStreamer; none Qt;
   - the standalone k40t_node loads no nodelet library (nodelet's roslib brings rospack and
-    libpython: ~3 MB resident for nothing; issue 24, item 6).
+    libpython: ~3 MB resident for nothing; issue 24, item 6) and no OpenCV at its start (lens
+    distortion is in libk40t_opencv_lens.so, opened on the first pixel located: ~4.8 MB).
     System libraries' own dependencies are not followed: they are not the project's to choose
     (PROJ's libcurl brings libcrypto through libssh2, OpenCV's FFmpeg brings libssl).
 Exits 1 naming each failure; --junit writes one test case. Needs no ROS master; run after a ROS
@@ -27,13 +29,13 @@ BENCH_PLUGINS = os.path.join(ROOT, "bench", "bench_nodelet_plugins.xml")
 OPENCV, GSTREAMER, OPENSSL, QT = ("libopencv_",), ("libgst",), ("libssl.", "libcrypto."), ("libQt",)
 # Product library (as nodelet_plugins.xml names it) -> prefixes of libraries it must not load.
 FORBIDDEN = {
-    "lib/libk40t_pod_nodelet": GSTREAMER + OPENSSL + QT,
+    "lib/libk40t_pod_nodelet": OPENCV + GSTREAMER + OPENSSL + QT,
     "lib/libk40t_video_nodelet": OPENSSL + QT,
     "lib/libk40t_skyport_nodelet": OPENCV + GSTREAMER + QT,
 }
 # Standalone node (path in the devel space) -> prefixes of libraries it must not load.
 NODELET = ("libnodeletlib.", "libclass_loader.", "libroslib.", "librospack.", "libpython")
-NODE_FORBIDDEN = {"lib/k40t_driver/k40t_node": NODELET}
+NODE_FORBIDDEN = {"lib/k40t_driver/k40t_node": NODELET + OPENCV}
 
 
 def libraries(plugin_file):

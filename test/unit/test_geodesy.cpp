@@ -1,6 +1,11 @@
 // geo/geodesy.h: GeographicLib's WGS 84 conversions and PROJ's EGM96 geoid, checked against
 // reference values that do not come from those libraries.
+#include <dirent.h>
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdlib>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -122,6 +127,38 @@ TEST(Geoid, SeaLevelAndEllipsoidHeightsDifferByTheUndulation) {
   EXPECT_NEAR(h.value(), 1000 - 43.575, 0.1);
   EXPECT_NEAR(msl.value() - 1000, -n.value(), 1e-9);
   EXPECT_NEAR(1000 - h.value(), -n.value(), 1e-9);
+}
+
+// How many of this process's open files are PROJ's database proj.db.
+int open_proj_databases() {
+  int count = 0;
+  DIR* fds = opendir("/proc/self/fd");
+  if (!fds) return -1;
+  while (const dirent* entry = readdir(fds)) {
+    char target[4096];
+    const std::string link = std::string("/proc/self/fd/") + entry->d_name;
+    const ssize_t n = readlink(link.c_str(), target, sizeof target - 1);
+    if (n <= 0) continue;
+    target[n] = '\0';
+    const std::string path(target);
+    if (path.size() >= 8 && path.compare(path.size() - 8, 8, "/proj.db") == 0) ++count;
+  }
+  closedir(fds);
+  return count;
+}
+
+// PROJ 9.1 opens proj.db (~3 MB of SQLite cache in the driver) on every proj_create unless it
+// cannot find it; the geoid's grid needs nothing from it (src/geo/geoid.cpp). Not finding it,
+// PROJ says so on stderr even at PJ_LOG_NONE: a normal start of the driver prints nothing. In a
+// process of its own (a death test's), so that this is the geoid's first load.
+TEST(GeoidDeathTest, LoadsTheGridQuietlyWithoutOpeningProjsDatabase) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(
+      {
+        const Result<double> n = Geoid::egm96().undulation_m(47.4, 8.5);
+        std::exit(n && open_proj_databases() == 0 ? 0 : 1);
+      },
+      testing::ExitedWithCode(0), "^$");
 }
 
 }  // namespace

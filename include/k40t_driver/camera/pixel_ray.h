@@ -1,7 +1,8 @@
 // A pixel of an image described by a ROS camera_info (K, distortion model and D) to the direction
 // of its ray in the camera's optical frame (z forward, x right, y down), and back. Lens
 // distortion is OpenCV's own (cv::undistortPoints / cv::projectPoints, and cv::fisheye for
-// "equidistant"), never a model written here. ROS-free: the caller copies the message's fields.
+// "equidistant"), never a model written here, in a library opened on the first call
+// (opencv_lens.h). ROS-free: the caller copies the message's fields.
 #pragma once
 
 #include <array>
@@ -19,7 +20,8 @@ struct CameraModel {
 };
 
 // The undistorted normalised image point (x, y) of pixel (u, v): the ray is (x, y, 1). Fails on
-// a K without focal lengths, or a non-zero D of a model OpenCV does not know.
+// a K without focal lengths, a non-zero D of a model OpenCV does not know, or when the lens
+// library cannot be opened.
 Result<std::array<double, 2>> pixel_to_normalised(const CameraModel& camera, double u, double v);
 
 // Where the ray (x, y, z) of the optical frame appears in the (distorted) image; fails when the

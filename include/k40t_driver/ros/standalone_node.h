@@ -7,6 +7,7 @@
 
 #include <ros/ros.h>
 
+#include "k40t_driver/ros/callback_threads.h"
 #include "k40t_driver/ros/start_failure.h"
 #include "k40t_driver/ros/stop_signals.h"
 #include "k40t_driver/transport/thread_name.h"
@@ -15,7 +16,8 @@ namespace k40t::driver {
 
 enum class Callbacks {
   kOneAtATime,  // nodelet: the default handles; node: ros::spin()
-  kConcurrent,  // nodelet: the multi-threaded handles; node: a spinner of four threads
+  kConcurrent,  // nodelet: the multi-threaded handles; node: four callback threads
+                // (callback_threads.h)
 };
 
 // The whole main() of a standalone node named `node_name`.
@@ -48,10 +50,12 @@ int run_standalone_node(int argc, char** argv, const char* node_name, const char
     ros::spin();
     return exit_code;
   }
-  ros::AsyncSpinner spinner(4);
   transport::name_this_thread("k40t_spin");
-  spinner.start();
+  CallbackThreads threads(*ros::getGlobalCallbackQueue(), 4);
   program_name.restore();
+  // The threads end when ros::shutdown() disables the queue; roscpp then finishes stopping
+  // (ros::waitForShutdown() polls only for that moment) before the component is destroyed.
+  threads.wait();
   ros::waitForShutdown();
   return exit_code;
 }

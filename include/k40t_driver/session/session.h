@@ -90,6 +90,8 @@ class Session {
   Dispatcher& dispatcher();
   void set_request_handler(protocol::MessageId request_id, RequestHandler handler);
   // Every frame written (raw/tx), in wire order; runs under the send lock, so it must not send.
+  // It runs on the writing thread: the session's, the I/O thread (answers to the pod's requests)
+  // or the thread of a blocking request() with nothing ahead of it, which writes its own.
   void on_frame_sent(FrameHandler handler);
   void on_link_state(LinkStateHandler handler);
 
