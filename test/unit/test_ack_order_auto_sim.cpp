@@ -56,6 +56,19 @@ TEST(AckOrderAuto, ALittleEndianPodIsDetectedAndReadRight) {
   EXPECT_EQ(rig.reading("ack_byte_order").contradiction, "");
 }
 
+// After the lock a refusal's response code reads right: "no SD card" (section 3.3, 0x0204), sent
+// 04 02 by this pod, would read 0x0402 big-endian, no code of the list.
+TEST(AckOrderAuto, ARefusalAfterTheLockReadsItsCode) {
+  ConventionsRig rig({}, {"ack_byte_order=auto"}, pod_with_order(p::ByteOrder::kLittle));
+  ASSERT_TRUE(rig.driver().request_typed(p::ThermalReadSettingsRequest{}));
+  rig.pod().with_model([](sim::PodModel& m) { m.camera().sd().remove(); });
+  p::TakePhotoRequest photo;
+  photo.lens = p::PhotoLensMode::kVisible;
+  const session::AckResult refused = rig.driver().request(photo);
+  EXPECT_TRUE(refused.received);
+  EXPECT_EQ(refused.code, p::ResponseCode::kNoSdCard) << refused.message;
+}
+
 // Without auto the same pod's read-back is refused or misread (the test above can fail).
 TEST(AckOrderAuto, TheDefaultMisreadsALittleEndianPod) {
   ConventionsRig rig({}, {}, pod_with_order(p::ByteOrder::kLittle));
