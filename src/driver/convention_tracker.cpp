@@ -59,7 +59,7 @@ p::YawRange ConventionTracker::yaw_range() const {
 void ConventionTracker::detect(const std::string& name, std::string evidence) {
   for (const auto& d : detected_)
     if (d.first == name) return;
-  detected_.emplace_back(name, std::move(evidence));
+  detected_.emplace_back(name, "detected from " + evidence);
 }
 
 void ConventionTracker::contradict(const std::string& name, std::string why) {
@@ -233,12 +233,23 @@ void ConventionTracker::calibration_evidence(p::CalibrationEnd seen, const std::
   }
 }
 
-void ConventionTracker::observe_ack(p::MessageId ack_id, const uint8_t* payload, size_t size) {
+void ConventionTracker::observe_ack(p::MessageId ack_id, const uint8_t* payload, size_t size,
+                                    const p::AckOrderSetting& in_force) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (codec_.ack_byte_order_auto) {
+    // The link's setting has seen this ACK already (the Dispatcher shows it every ACK first).
+    if (!in_force.locked()) return;
+    codec_.ack_byte_order = in_force.order();
+    codec_.ack_byte_order_auto = false;
+    detected_.emplace_back("ack_byte_order", std::string("auto: detected ") +
+                                                 p::to_string(in_force.order()) + " from " +
+                                                 in_force.evidence());
+    return;  // the ACK that locked it confirms nothing more
+  }
   p::AckOrderFit fit;
   p::fit_ack_byte_order(ack_id, payload, size, fit);
   if (!fit.tells()) return;
   const p::ByteOrder seen = fit.big ? p::ByteOrder::kBig : p::ByteOrder::kLittle;
-  std::lock_guard<std::mutex> lock(mutex_);
   if (seen != codec_.ack_byte_order) {
     contradict("ack_byte_order", fit.evidence + " reads sensibly " + p::to_string(seen) +
                                      "-endian only: set ack_byte_order: " + p::to_string(seen));
@@ -289,7 +300,7 @@ std::vector<ConventionStatus> ConventionTracker::report() const {
     s.value = info.get(info, {crc_coverage_, codec_});
     s.source = from_parameters_.count(s.name) ? "parameter" : "default";
     for (const auto& d : detected_)
-      if (d.first == s.name) s.source = "detected from " + d.second;
+      if (d.first == s.name) s.source = d.second;
     for (const auto& c : confirmed_)
       if (c.first == s.name) s.source += ", confirmed by " + c.second;
     for (const auto& c : contradictions_)

@@ -49,6 +49,7 @@ Result<std::unique_ptr<PodDriver>> PodDriver::create(DriverOptions options, Cloc
     link.value()->set_reconnect_policy(policy);
     driver->session_ = std::make_unique<session::Session>(std::move(link.value()), o.session);
   }
+  driver->ack_order_ = &driver->dispatcher().ack_order();
   // The first frame handler: it stamps the frame for everything that follows (typed handlers
   // run after all frame handlers).
   PodDriver* self = driver.get();

@@ -22,7 +22,7 @@ void PodDriver::observe_sent(const FrameView& frame) {
 void PodDriver::observe_received(const FrameView& frame) {
   const protocol::MessageId id = frame.header.message_id;
   if (protocol::kind_of(id) == protocol::MessageKind::kAck)
-    conventions_.observe_ack(id, frame.payload, frame.payload_size);
+    conventions_.observe_ack(id, frame.payload, frame.payload_size, *ack_order_);
   const bool calibration_ack =
       id == protocol::ack_id_of(protocol::GimbalDriftCalibrationRequest::kId) ||
       id == protocol::ack_id_of(protocol::GimbalLinearCalibrationRequest::kId) ||

@@ -46,6 +46,14 @@ std::string get_order(const ConventionInfo&, ConstConventionRefs refs) {
   return to_string(refs.codec.*Member);
 }
 
+Status set_ack_order(const ConventionInfo& info, ConventionRefs refs, const std::string& text) {
+  return parse_ack_byte_order(text, refs.codec) ? Status::ok() : bad_value(info, text);
+}
+
+std::string get_ack_order(const ConventionInfo&, ConstConventionRefs refs) {
+  return refs.codec.ack_byte_order_auto ? "auto" : to_string(refs.codec.ack_byte_order);
+}
+
 Status set_crc(const ConventionInfo& info, ConventionRefs refs, const std::string& text) {
   Result<CrcCoverage> coverage = parse_crc_coverage(text);
   if (!coverage) return bad_value(info, text);
@@ -107,12 +115,12 @@ const std::vector<ConventionInfo> kTable = {
      true},
     {"ack_byte_order",
      "2.1 note",
-     {"big", "little"},
+     {"big", "little", "auto"},
      nullptr,
      "big",
      "byte order of ACK fields, response codes included (decisions.md#a2)",
-     &set_order<&CodecOptions::ack_byte_order>,
-     &get_order<&CodecOptions::ack_byte_order>,
+     &set_ack_order,
+     &get_ack_order,
      true},
     {"laser_status_byte_order",
      "3.2.5.2 (0x020406)",

@@ -61,11 +61,8 @@ Result<RosPodConfig> read_params(ParamReader& p) {
     p.fail("crc_coverage", "must be auto, header_excluded or whole_frame, got '" + coverage + "'");
   }
   const std::string order = p.get<std::string>("ack_byte_order", "big");
-  if (Result<protocol::ByteOrder> parsed = protocol::parse_byte_order(order)) {
-    s.codec.ack_byte_order = parsed.value();
-  } else {
-    p.fail("ack_byte_order", "must be big or little, got '" + order + "'");
-  }
+  if (!protocol::parse_ack_byte_order(order, s.codec))
+    p.fail("ack_byte_order", "must be big, little or auto, got '" + order + "'");
   const std::string laser_order = p.get<std::string>("laser_status_byte_order", "little");
   if (Result<protocol::ByteOrder> parsed = protocol::parse_byte_order(laser_order)) {
     s.codec.laser_status_byte_order = parsed.value();

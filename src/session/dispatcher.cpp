@@ -4,8 +4,13 @@
 
 namespace k40t::session {
 
-Dispatcher::Dispatcher(protocol::CrcCoverage coverage, const protocol::CodecOptions& codec)
-    : codec_(codec), parser_(coverage), locked_coverage_(coverage) {
+Dispatcher::Dispatcher(protocol::CrcCoverage coverage, const protocol::CodecOptions& codec,
+                       std::shared_ptr<protocol::AckOrderSetting> ack_order)
+    : codec_(codec),
+      ack_order_(ack_order ? std::move(ack_order)
+                           : std::make_shared<protocol::AckOrderSetting>(codec)),
+      parser_(coverage),
+      locked_coverage_(coverage) {
   published_.locked_coverage = coverage;
 }
 
@@ -40,6 +45,8 @@ void Dispatcher::feed(const uint8_t* data, size_t size) {
 }
 
 void Dispatcher::route(const protocol::FrameView& frame) {
+  if (protocol::kind_of(frame.header.message_id) == protocol::MessageKind::kAck)
+    ack_order_->observe(frame.header.message_id, frame.payload, frame.payload_size);
   for (const FrameHandler& handler : frame_handlers_) handler(frame);
   route_typed(frame);
   for (const FrameHandler& handler : routed_handlers_) handler(frame);

@@ -35,11 +35,13 @@ std::string RequestTracker::not_repeated_message(protocol::MessageId id) const {
 }
 
 RequestTracker::RequestTracker(SendAttempt send, std::chrono::milliseconds ack_timeout, int retries,
-                               const protocol::CodecOptions& codec)
+                               const protocol::CodecOptions& codec,
+                               std::shared_ptr<const protocol::AckOrderSetting> ack_order)
     : send_(std::move(send)),
       ack_timeout_(ack_timeout),
       max_attempts_(1 + std::max(retries, 0)),
-      codec_(codec) {}
+      codec_(codec),
+      ack_order_(std::move(ack_order)) {}
 
 RequestTracker::~RequestTracker() {
   stop("session stopped");
@@ -293,7 +295,8 @@ void RequestTracker::complete_with_ack(Slot& slot, std::vector<Finished>& finish
   result.sent = true;
   result.received = true;
   result.payload.assign(slot.ack.bytes.begin(), slot.ack.bytes.begin() + slot.ack.size);
-  result.code = protocol::ack_response_code(slot.ack.data(), slot.ack.size, codec_);
+  result.code =
+      protocol::ack_response_code(slot.ack.data(), slot.ack.size, ack_order_->codec_with(codec_));
   ++counters_.acks;
   if (slot.ack.size < 2) {
     ++counters_.nacks;

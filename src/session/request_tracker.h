@@ -14,12 +14,14 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
 #include <unordered_map>
 #include <vector>
 
+#include "k40t_driver/protocol/ack_order_setting.h"
 #include "k40t_driver/protocol/codec_options.h"
 #include "k40t_driver/protocol/message.h"
 #include "k40t_driver/session/session.h"
@@ -43,8 +45,10 @@ class RequestTracker {
     uint64_t late_acks = 0;
   };
 
+  // `ack_order`: the link's ACK byte order, read as each ACK's response code is decoded.
   RequestTracker(SendAttempt send, std::chrono::milliseconds ack_timeout, int retries,
-                 const protocol::CodecOptions& codec);
+                 const protocol::CodecOptions& codec,
+                 std::shared_ptr<const protocol::AckOrderSetting> ack_order);
   ~RequestTracker();  // stop()s
   RequestTracker(const RequestTracker&) = delete;
   RequestTracker& operator=(const RequestTracker&) = delete;
@@ -123,6 +127,7 @@ class RequestTracker {
   const std::chrono::milliseconds ack_timeout_;
   const int max_attempts_;
   const protocol::CodecOptions codec_;
+  const std::shared_ptr<const protocol::AckOrderSetting> ack_order_;
 
   mutable std::mutex mutex_;
   std::condition_variable wake_;

@@ -32,14 +32,15 @@ constexpr bool is_gimbal_id(protocol::MessageId id) {
 struct Session::Impl {
   Impl(std::unique_ptr<transport::Transport> link, SessionOptions opts)
       : options(std::move(opts)),
+        ack_order(std::make_shared<protocol::AckOrderSetting>(options.codec)),
         transport(std::move(link)),
-        dispatcher(options.crc_coverage, options.codec),
+        dispatcher(options.crc_coverage, options.codec, ack_order),
         sender(transport.get(), options.crc_coverage, dispatcher),
         tracker(
             [this](protocol::MessageId id, const protocol::Payload& payload, protocol::Address to) {
               return sender.send(id, payload.data(), payload.size, request_source(id), to);
             },
-            options.ack_timeout, options.retries, options.codec) {
+            options.ack_timeout, options.retries, options.codec, ack_order) {
     // After every observer of the frame: the caller of a request wakes to a driver that has
     // seen its ACK.
     dispatcher.on_frame_routed([this](const protocol::FrameView& frame) { handle_frame(frame); });
@@ -52,6 +53,8 @@ struct Session::Impl {
   void handle_link_state(transport::LinkState state, const std::string& reason);
 
   const SessionOptions options;
+  // Shared by the dispatcher (which updates it) and the tracker (ack_byte_order: auto).
+  const std::shared_ptr<protocol::AckOrderSetting> ack_order;
   std::unique_ptr<transport::Transport> transport;
   Dispatcher dispatcher;
   FrameSender sender;
@@ -270,6 +273,14 @@ transport::LinkState Session::link_state() const {
 
 const SessionOptions& Session::options() const {
   return impl_->options;
+}
+
+protocol::CodecOptions Session::codec() const {
+  return impl_->ack_order->codec_with(impl_->options.codec);
+}
+
+const protocol::AckOrderSetting& Session::ack_order() const {
+  return *impl_->ack_order;
 }
 
 }  // namespace k40t::session

@@ -48,7 +48,7 @@ TEST(K40tTool, BadArgumentsExitWithCodeTwoAndSayWhy) {
       {"decode --hex", "option --hex needs a value"},
       {"decode --crc-coverage sometimes --hex FD",
        "crc_coverage must be auto, header_excluded or whole_frame"},
-      {"decode --ack-byte-order middle --hex FD", "ack_byte_order must be big or little"},
+      {"decode --ack-byte-order middle --hex FD", "ack_byte_order must be big, little or auto"},
       {"decode --bogus", "unknown option '--bogus'"},
       {"decode a.bin b.bin", "give one input"},
       {"decode --hex FD file.bin", "not both"},
@@ -99,6 +99,20 @@ TEST(K40tTool, DecodeHexOptionPrintsOneJsonObjectPerFrame) {
       "7B\",\"fields\":{\"code\":{\"code\":0,"
       "\"name\":\"OK, success\"},\"distance_m\":12.3}}\n");
   EXPECT_NE(run.err.find("good frames 2, checksum errors 0"), std::string::npos) << run.err;
+}
+
+// --ack-byte-order auto: the first ACK whose bytes read sensibly one way only sets the order
+// (docs/protocol/decisions.md#conventions). ACK 0x010012 (section 3.1.2.2) from the gimbal
+// 0x03/0x01 to the host, SEQ 0, response code 0x0001 "failure" (section 3.3) low byte first: 01 00;
+// the checksum is CRC-16/MCRF4XX of LEN..payload (A1), 0x775A, low byte first.
+TEST(K40tTool, DecodeWithAutoAckByteOrderReadsALittleEndianCode) {
+  const std::string frame = "FD 02 01 01 00 03 01 12 00 01 01 00 5A 77";
+  const ToolRun automatic = run_k40t("decode --ack-byte-order auto --hex '" + frame + "'");
+  ASSERT_EQ(automatic.exit_code, 0) << automatic.err;
+  EXPECT_NE(automatic.out.find("\"fields\":{\"code\":{\"code\":1,"), std::string::npos)
+      << automatic.out;
+  const ToolRun big = run_k40t("decode --hex '" + frame + "'");
+  EXPECT_NE(big.out.find("\"code\":256"), std::string::npos) << big.out;  // 0x0100
 }
 
 TEST(K40tTool, DecodeReadsHexFromStdinAndReportsUndecodablePayloads) {

@@ -107,6 +107,11 @@ TEST(SimOptions, BadArgumentsAreNamed) {
             std::string::npos);
   EXPECT_NE(parse_sim_options({"--ack-byte-order", "middle"}).error().find("middle"),
             std::string::npos);
+  // The driver's ack_byte_order: auto has no place in a pod, which sends one order.
+  EXPECT_NE(parse_sim_options({"--ack-byte-order", "auto"}).error().find("got 'auto'"),
+            std::string::npos);
+  EXPECT_NE(parse_sim_options({"--convention", "ack_byte_order=auto"}).error().find("not auto"),
+            std::string::npos);
   EXPECT_NE(parse_sim_options({"--silence", "5"}).error().find("AT:AMOUNT"), std::string::npos);
   EXPECT_NE(parse_sim_options({"--sd", "wet"}).error().find("wet"), std::string::npos);
 }

@@ -78,8 +78,9 @@ const OptionSpec kCrcCoverageOption = {
     "--crc-coverage", "auto|header_excluded|whole_frame",
     "bytes the checksum covers (docs/protocol/decisions.md#a1; default auto)"};
 const OptionSpec kAckByteOrderOption = {
-    "--ack-byte-order", "big|little",
-    "byte order of ACK fields (docs/protocol/decisions.md#a2; default big)"};
+    "--ack-byte-order", "big|little|auto",
+    "byte order of ACK fields (docs/protocol/decisions.md#a2; default big; auto: big until an ACK "
+    "shows the pod's)"};
 
 Result<WireOptions> wire_options(const ParsedArgs& args) {
   WireOptions wire;
@@ -91,9 +92,9 @@ Result<WireOptions> wire_options(const ParsedArgs& args) {
   }
   const auto order = args.options.find(kAckByteOrderOption.name);
   if (order != args.options.end()) {
-    Result<protocol::ByteOrder> parsed = protocol::parse_byte_order(order->second);
-    if (!parsed) return Result<WireOptions>::fail("--ack-byte-order: " + parsed.error());
-    wire.codec.ack_byte_order = parsed.value();
+    // auto: the link's ACKs lock it (protocol/ack_order_setting.h), as in the driver.
+    const Status parsed = protocol::parse_ack_byte_order(order->second, wire.codec);
+    if (!parsed) return Result<WireOptions>::fail("--ack-byte-order: " + parsed.message());
   }
   return wire;
 }

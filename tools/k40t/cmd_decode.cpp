@@ -47,7 +47,8 @@ int run_decode(const Command& self, const ParsedArgs& args) {
   uint64_t undecodable = 0;
   dispatcher.on_frame([&](const protocol::FrameView& frame) {
     bool decoded = false;
-    const std::string json = frame_json(frame, cursor.frame_offset(frame), wire->codec, &decoded);
+    const std::string json =
+        frame_json(frame, cursor.frame_offset(frame), dispatcher.codec(), &decoded);
     if (!decoded && protocol::is_known_id(frame.header.message_id)) ++undecodable;
     std::puts(json.c_str());
   });

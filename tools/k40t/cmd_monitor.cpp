@@ -23,7 +23,7 @@ int monitor_file(const std::string& path, const WireOptions& wire) {
     return kExitFailed;
   }
   session::Dispatcher dispatcher(wire.crc_coverage, wire.codec);
-  FramePrinter printer(wire.codec);
+  FramePrinter printer(wire.codec, &dispatcher.ack_order());
   CaptureCursor cursor;
   dispatcher.on_frame([&](const protocol::FrameView& frame) {
     char offset[24];
@@ -82,7 +82,7 @@ int monitor_link(const Command& self, const std::string& url, const WireOptions&
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
   session::Dispatcher dispatcher(wire.crc_coverage, wire.codec);
-  FramePrinter printer(wire.codec);
+  FramePrinter printer(wire.codec, &dispatcher.ack_order());
   dispatcher.on_frame(
       [&](const protocol::FrameView& frame) { printer.print(wall_clock(), frame); });
   transport::Transport& t = *link.value();

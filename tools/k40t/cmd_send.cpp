@@ -138,7 +138,8 @@ int run_send(const Command& self, const ParsedArgs& args) {
     const protocol::MessageInfo* ack_info = protocol::find_message(ack_id);
     std::printf(
         "%s %s\n", ack_info ? ack_info->name : id_text(ack_id).c_str(),
-        payload_summary(ack_id, result.payload.data(), result.payload.size(), wire->codec).c_str());
+        payload_summary(ack_id, result.payload.data(), result.payload.size(), session.codec())
+            .c_str());
   }
   if (!result.ok()) {
     std::fprintf(stderr, "k40t send: %s\n", result.message.c_str());

@@ -24,7 +24,8 @@ std::string wall_clock() {
 
 void FramePrinter::print(const std::string& when, const protocol::FrameView& frame) {
   bool decoded = false;
-  const std::string line = frame_summary(frame, codec_, &decoded);
+  const std::string line =
+      frame_summary(frame, ack_order_ ? ack_order_->codec_with(codec_) : codec_, &decoded);
   std::lock_guard<std::mutex> lock(mutex_);
   if (!decoded && protocol::is_known_id(frame.header.message_id)) ++undecodable_;
   std::printf("%s %s\n", when.c_str(), line.c_str());

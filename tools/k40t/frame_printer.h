@@ -7,6 +7,7 @@
 #include <mutex>
 #include <string>
 
+#include "k40t_driver/protocol/ack_order_setting.h"
 #include "k40t_driver/protocol/codec_options.h"
 #include "k40t_driver/protocol/frame.h"
 
@@ -20,13 +21,18 @@ std::string wall_clock();
 // Prints one line per frame and counts the frames whose payload did not decode.
 class FramePrinter {
  public:
-  explicit FramePrinter(const protocol::CodecOptions& codec) : codec_(codec) {}
+  // `ack_order`: the link's ACK byte order (the Dispatcher's; with --ack-byte-order auto it locks
+  // on the pod's ACKs), or null to print with `codec` as given.
+  explicit FramePrinter(const protocol::CodecOptions& codec,
+                        const protocol::AckOrderSetting* ack_order = nullptr)
+      : codec_(codec), ack_order_(ack_order) {}
   // "<when> <frame summary>"
   void print(const std::string& when, const protocol::FrameView& frame);
   uint64_t undecodable() const;
 
  private:
   const protocol::CodecOptions codec_;
+  const protocol::AckOrderSetting* const ack_order_;
   mutable std::mutex mutex_;
   uint64_t undecodable_ = 0;
 };

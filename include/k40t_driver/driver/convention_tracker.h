@@ -10,8 +10,10 @@
 //   - calibration_end: whether 0x000008 reports a calibration the pod acknowledged.
 //   - ack_byte_order: ACKs whose bytes read sensibly one way only (protocol/
 //     ack_byte_order_evidence.h: response codes, the thermal and SBUS read-backs) confirm the value
-//     in force (shown with its source) or contradict it. The driver cannot change its ACK byte
-//     order while it runs, so this reading has no `auto`: a contradiction names the value to set.
+//     in force (shown with its source) or contradict it (the message names the value to set).
+//     With `auto` the link's protocol::AckOrderSetting locks the order on the first such ACK; the
+//     tracker shows it as "auto: detected little from ACK 0x010100 bytes ..." and checks the
+//     ACKs after it like a value set by hand.
 // ROS-free and thread-safe: observations come from the I/O thread, reports from any thread.
 #pragma once
 
@@ -23,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "k40t_driver/protocol/ack_order_setting.h"
 #include "k40t_driver/protocol/convention_readings.h"
 #include "k40t_driver/protocol/conventions.h"
 
@@ -56,8 +59,10 @@ class ConventionTracker {
   // ACK 0x010100 as the layout decoded it (before the readings are applied).
   void observe_thermal_settings(const protocol::ThermalSettingsAck& as_decoded);
   void observe_crc_coverage(protocol::CrcCoverage locked);
-  // Any ACK (0x01xxxx) as received, before decoding.
-  void observe_ack(protocol::MessageId ack_id, const uint8_t* payload, size_t size);
+  // Any ACK (0x01xxxx) as received, before decoding; `in_force`: the link's ACK byte order, which
+  // has seen this ACK already (with ack_byte_order: auto, the detection is the setting's).
+  void observe_ack(protocol::MessageId ack_id, const uint8_t* payload, size_t size,
+                   const protocol::AckOrderSetting& in_force);
   // How a gimbal calibration ends: its OK ACK (0x010013, 0x01002E, 0x010031), then whether
   // 0x000008 says "repairing" within kCalibrationQuietS (status) or not (ack). Decided on the next
   // observation after that time.
@@ -103,7 +108,7 @@ class ConventionTracker {
   std::set<std::string> from_parameters_;
   std::optional<protocol::CrcCoverage> locked_crc_;
   protocol::YawRange yaw_range_ = protocol::YawRange::kSigned;
-  std::vector<std::pair<std::string, std::string>> detected_;        // name, evidence
+  std::vector<std::pair<std::string, std::string>> detected_;        // name, source text
   std::vector<std::pair<std::string, std::string>> contradictions_;  // name, why
   std::vector<std::pair<std::string, std::string>> confirmed_;       // name, by which frame
   std::optional<protocol::GimbalAttitude> last_attitude_;            // true values

@@ -29,8 +29,8 @@
 #include <thread>
 #include <vector>
 
-#include "k40t_driver/driver/convention_tracker.h"
 #include "k40t_driver/driver/box_tracking_guard.h"
+#include "k40t_driver/driver/convention_tracker.h"
 #include "k40t_driver/driver/driver_options.h"
 #include "k40t_driver/driver/link_monitor.h"
 #include "k40t_driver/driver/rate_commander.h"
@@ -140,7 +140,10 @@ class PodDriver {
   transport::LinkState link_state() const;
   bool replay() const { return options_.replay; }
   const DriverOptions& options() const { return options_; }
-  const protocol::CodecOptions& codec() const { return options_.session.codec; }
+  // The codec options in force now: ack_byte_order as the link's setting has it (auto locks it on
+  // the pod's first telling ACK, protocol/ack_order_setting.h), the rest as configured.
+  protocol::CodecOptions codec() const { return ack_order_->codec_with(options_.session.codec); }
+  const protocol::AckOrderSetting& ack_order() const { return *ack_order_; }
   // The open readings in force, where they came from, and what the traffic said against them.
   const ConventionTracker& conventions() const { return conventions_; }
   std::vector<ConventionStatus> conventions_report();
@@ -173,8 +176,9 @@ class PodDriver {
   DriverOptions options_;
   Clock clock_;
   ConventionTracker conventions_;
-  std::unique_ptr<session::Session> session_;      // live mode
-  std::unique_ptr<session::Dispatcher> replayer_;  // replay mode
+  std::unique_ptr<session::Session> session_;             // live mode
+  std::unique_ptr<session::Dispatcher> replayer_;         // replay mode
+  const protocol::AckOrderSetting* ack_order_ = nullptr;  // the session's or the replayer's
   double seconds_per_byte_ = 0;
 
   std::vector<FrameHandler> rx_handlers_;

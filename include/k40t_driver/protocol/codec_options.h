@@ -34,6 +34,9 @@ struct CodecOptions {
   // docs/protocol/decisions.md#a2: multi-byte fields of ACK payloads (response code included).
   // Sections that say "low byte first" for their ACK (0x010320) ignore this.
   ByteOrder ack_byte_order = ByteOrder::kBig;
+  // `ack_byte_order: auto`: start with ack_byte_order (big) and lock onto the order the pod's
+  // first telling ACK shows (protocol/ack_order_setting.h). Never set in the simulator.
+  bool ack_byte_order_auto = false;
   // Status frame 0x020406 (periodic laser range). Section 2.1 makes every non-ACK payload low
   // byte first, and 0x020406 is a status frame; its payload merely looks like ACK 0x010400's.
   // Decision (docs/protocol/gimbal_laser_sbus.md): little, a parameter in case a pod builds the
@@ -48,5 +51,8 @@ struct CodecOptions {
   // The document's other open readings (docs/protocol/decisions.md#conventions).
   Conventions conventions;
 };
+
+// ack_byte_order's value: "big" | "little" | "auto" (ack_byte_order_auto; order big until locked).
+Status parse_ack_byte_order(const std::string& text, CodecOptions& codec);
 
 }  // namespace k40t::protocol

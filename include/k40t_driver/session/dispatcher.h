@@ -11,11 +11,13 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
+#include "k40t_driver/protocol/ack_order_setting.h"
 #include "k40t_driver/protocol/codec_options.h"
 #include "k40t_driver/protocol/frame.h"
 #include "k40t_driver/protocol/message.h"
@@ -35,7 +37,10 @@ class Dispatcher {
   using FrameHandler = std::function<void(const protocol::FrameView&)>;
   using DecodeErrorHandler = std::function<void(const protocol::FrameView&, const std::string&)>;
 
-  Dispatcher(protocol::CrcCoverage coverage, const protocol::CodecOptions& codec);
+  // `ack_order`: the link's shared ACK byte order (the Session's); a new one from `codec` if null.
+  // Every ACK updates it (ack_byte_order: auto) before any handler sees the ACK.
+  Dispatcher(protocol::CrcCoverage coverage, const protocol::CodecOptions& codec,
+             std::shared_ptr<protocol::AckOrderSetting> ack_order = nullptr);
 
   // Register before feeding. Msg::kId selects the frames; a frame whose payload does not decode
   // goes to the decode-error handler instead (and is counted). Several handlers may share an id.
@@ -62,7 +67,9 @@ class Dispatcher {
   uint64_t decode_errors() const;
   protocol::CrcCoverage locked_coverage() const;
   DispatcherStats stats() const;
-  const protocol::CodecOptions& codec() const { return codec_; }
+  // The options the typed decoders use now: ack_byte_order as the link's setting has it.
+  protocol::CodecOptions codec() const { return ack_order_->codec_with(codec_); }
+  const protocol::AckOrderSetting& ack_order() const { return *ack_order_; }
   void reset();  // after a reconnect: drop partial frames and sequence history
 
  private:
@@ -75,6 +82,7 @@ class Dispatcher {
   void publish_stats();
 
   const protocol::CodecOptions codec_;
+  const std::shared_ptr<protocol::AckOrderSetting> ack_order_;
   std::mutex feed_mutex_;  // one feeder at a time; the parser is not re-entrant
   protocol::FrameParser parser_;
   std::vector<FrameHandler> frame_handlers_;
@@ -91,7 +99,7 @@ class Dispatcher {
 template <class Msg>
 void Dispatcher::on(std::function<void(const Msg&, const protocol::FrameView&)> handler) {
   add_route(Msg::kId, [this, handler = std::move(handler)](const protocol::FrameView& frame) {
-    Result<Msg> message = protocol::decode_payload<Msg>(frame, codec_);
+    Result<Msg> message = protocol::decode_payload<Msg>(frame, codec());
     if (!message) return message.status();
     handler(message.value(), frame);
     return Status::ok();

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "k40t_driver/protocol/ack_order_setting.h"
 #include "k40t_driver/protocol/codec_options.h"
 #include "k40t_driver/protocol/frame.h"
 #include "k40t_driver/protocol/message.h"
@@ -131,7 +132,12 @@ class Session {
 
   SessionStats stats() const;
   transport::LinkState link_state() const;
+  // As configured; options().codec.ack_byte_order is the start of an `auto` order.
   const SessionOptions& options() const;
+  // The codec options in force now: ack_byte_order as the pod's ACKs showed it (auto), else as
+  // configured. Every typed encode and decode of the session uses these.
+  protocol::CodecOptions codec() const;
+  const protocol::AckOrderSetting& ack_order() const;
 
  private:
   struct Impl;
@@ -140,7 +146,7 @@ class Session {
 
 template <class Req>
 AckResult Session::request(const Req& request) {
-  Result<protocol::Payload> payload = protocol::encode_payload(request, options().codec);
+  Result<protocol::Payload> payload = protocol::encode_payload(request, codec());
   if (!payload) return AckResult::not_sent(payload.error());
   return request_raw(Req::kId, payload->data(), payload->size);
 }
@@ -154,14 +160,14 @@ Result<typename Req::Ack> Session::request_typed(const Req& request, AckResult* 
     return Result<Ack>::fail(result.message);
   }
   Result<Ack> ack =
-      protocol::decode_payload<Ack>(result.payload.data(), result.payload.size(), options().codec);
+      protocol::decode_payload<Ack>(result.payload.data(), result.payload.size(), codec());
   if (raw != nullptr) *raw = std::move(result);
   return ack;
 }
 
 template <class Msg>
 Status Session::send_message(const Msg& message, protocol::Address destination) {
-  Result<protocol::Payload> payload = protocol::encode_payload(message, options().codec);
+  Result<protocol::Payload> payload = protocol::encode_payload(message, codec());
   if (!payload) return payload.status();
   return send_frame(Msg::kId, payload->data(), payload->size, destination);
 }

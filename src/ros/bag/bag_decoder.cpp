@@ -98,7 +98,8 @@ class PodDecoder {
   void export_frame(const std::string& topic, uint64_t index, const protocol::FrameView& frame,
                     StampNs stamp) {
     const ExportedFrame exported{bag_, topic, stamp, index, frame};
-    for (FrameExport* e : options_.exports) e->write(exported, config_.driver.session.codec);
+    // The driver's codec now: with ack_byte_order: auto, the order the pod's ACKs showed.
+    for (FrameExport* e : options_.exports) e->write(exported, driver_->codec());
   }
 
   BagTopicSink sink_;

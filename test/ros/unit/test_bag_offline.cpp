@@ -135,6 +135,20 @@ TEST(YamlParams, ConventionsAreReadByTheirNames) {
   EXPECT_FALSE(config_from("shutter_field: 100\n"));  // a number, not one of the words
 }
 
+// ack_byte_order: auto (big until the pod's ACKs show the order); a bad value names all three.
+TEST(YamlParams, AckByteOrderTakesAuto) {
+  Result<RosPodConfig> c = config_from("ack_byte_order: auto\n");
+  ASSERT_TRUE(c) << c.error();
+  EXPECT_TRUE(c->driver.session.codec.ack_byte_order_auto);
+  EXPECT_EQ(c->driver.session.codec.ack_byte_order, protocol::ByteOrder::kBig);
+  Result<RosPodConfig> fixed = config_from("ack_byte_order: little\n");
+  ASSERT_TRUE(fixed) << fixed.error();
+  EXPECT_FALSE(fixed->driver.session.codec.ack_byte_order_auto);
+  Result<RosPodConfig> bad = config_from("ack_byte_order: middle\n");
+  ASSERT_FALSE(bad);
+  EXPECT_EQ(bad.error(), "parameter ~/ack_byte_order must be big, little or auto, got 'middle'");
+}
+
 TEST(YamlParams, UnreadableFilesFailWithTheirPath) {
   Result<XmlRpc::XmlRpcValue> missing = load_yaml_params("/nonexistent/k40t.yaml");
   ASSERT_FALSE(missing);
