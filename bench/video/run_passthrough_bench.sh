@@ -34,9 +34,8 @@ thread_times() {
 }
 # The threads that ran at least 0.02 % of a core between two thread_times files over $3 s.
 thread_report() {
-  awk -v s="$3" 'NR == FNR { start[$1] = $3; next }
-    { p = ($3 - ($1 in start ? start[$1] : $3)) / 1e7 / s; if (p >= 0.02) printf " %s=%.2f%%", $2, p }
-    END { print "" }' "$1" "$2"
+  local program='NR == FNR { start[$1] = $3; next } { p = ($3 - ($1 in start ? start[$1] : $3)) / 1e7 / s; if (p >= 0.02) printf " %s=%.2f%%", $2, p } END { print "" }'
+  awk -v s="$3" "$program" "$1" "$2"
 }
 
 roscore -p "$port" > "$out/roscore.log" 2>&1 &
