@@ -216,7 +216,11 @@ class LookAtTest(unittest.TestCase):
             (dict(wgs84, tolerance=-1.0), "tolerance must be"),
         ]
         for fields, reason in cases:
-            state, result = Run(self.client, LookAtGoal(**fields)).wait(5.0)
+            run = Run(self.client, LookAtGoal(**fields))
+            try:
+                state, result = run.wait(15.0)
+            except AssertionError as error:
+                raise AssertionError("%s: %s (state %d)" % (fields, error, self.client.get_state()))
             self.assertEqual(state, actionlib.GoalStatus.ABORTED, fields)
             self.assertIn(reason, result.message, fields)
             self.assertFalse(result.success)
