@@ -114,15 +114,17 @@ class GeoSplitTest(Aiming, unittest.TestCase):
 
     def test_a_pixel_between_the_panels_is_refused(self):
         self.current_panel(1, time.time())
-        # The panels reach the driver on connections of its own: until its first ones arrive it
-        # still sees the whole image (the switch itself takes up to a status period to show).
+        # The camera_infos reach the driver on connections of its own: until its first ones
+        # arrive it has none ("no camera_info received") or still sees the whole image (the
+        # switch itself takes up to a status period to show).
         answers = []
 
-        def refused():
+        def refused_between_panels():
             answers.append(self.locate(LocatePixelRequest(u=100.0, v=100.0)))  # the black bar
-            return not answers[-1].success                                      # above the visible
-        self.assertTrue(wait_until(refused, 10.0, step=0.1), "located: %s" % answers[-1])
-        self.assertIn("neither panel", answers[-1].message)
+            return "neither panel" in answers[-1].message                       # above the visible
+        self.assertTrue(wait_until(refused_between_panels, 10.0, step=0.1),
+                        "last answer: %s" % answers[-1])
+        self.assertFalse(answers[-1].success)
 
 
 if __name__ == "__main__":
