@@ -34,7 +34,11 @@ class RvizPanel:
         self.log = open(os.path.join(self.dir, "rviz.log"), "w")
         self.rviz = subprocess.Popen(["rviz", "-d", config, "__name:=panel_test_rviz"], env=env,
                                      stdout=self.log, stderr=subprocess.STDOUT)
-        self._wait_until_shown(startup_timeout)
+        try:
+            self._wait_until_shown(startup_timeout)
+        except BaseException:
+            self.close()  # a panel that never came up must not leave rviz and Xvfb running
+            raise
 
     def _wait_until_shown(self, timeout):
         """The hook answers as soon as the panel exists, which on a loaded machine can be before
